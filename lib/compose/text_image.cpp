@@ -1,0 +1,57 @@
+#include "curvetext/text_image.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "curvetext/error.hpp"
+#include "curvetext/tolerances.hpp"
+
+namespace curvetext {
+
+TextImageLayout layout_text_image(const Font& font, std::string_view text, const TextImageOptions& options) {
+  if (!std::isfinite(options.size_px) || options.size_px <= 0.0)
+    throw Error(ErrorCode::InvalidArgument, "size must be a positive number of pixels, got " +
+                                                std::to_string(options.size_px));
+  if (options.size_px > tolerance::kMaxPixelsPerEm)
+    throw Error(ErrorCode::InvalidArgument, "size " + std::to_string(options.size_px) + " px is above the limit of " +
+                                                std::to_string(tolerance::kMaxPixelsPerEm) + " px");
+  if (!std::isfinite(options.margin_px) || options.margin_px < 0.0 || options.margin_px > tolerance::kMaxImageSidePx)
+    throw Error(ErrorCode::InvalidArgument, "margin must be between 0 and the largest image side");
+  if (text.empty()) throw Error(ErrorCode::InvalidText, "the text is empty");
+  validate_utf8(text);
+
+  TextImageLayout layout;
+  layout.line = shape_line(font, text, options.shaping);
+  const FontMetrics m = font.metrics();
+  const double scale = options.size_px / m.units_per_em;
+  layout.ascender_px = m.ascender * scale;
+  layout.descender_px = m.descender * scale;
+  const double advance_px = layout.line.advance * scale;
+  const double w = std::ceil(2.0 * options.margin_px + std::abs(advance_px));
+  const double h = std::ceil(2.0 * options.margin_px + layout.ascender_px - layout.descender_px);
+  if (!(w >= 1.0 && h >= 1.0) || w > tolerance::kMaxImageSidePx || h > tolerance::kMaxImageSidePx)
+    throw Error(ErrorCode::InvalidArgument, "the image would be " + std::to_string(static_cast<long long>(w)) + "x" +
+                                                std::to_string(static_cast<long long>(h)) +
+                                                " px; the largest side allowed is " +
+                                                std::to_string(static_cast<int>(tolerance::kMaxImageSidePx)));
+  layout.width = static_cast<int>(w);
+  layout.height = static_cast<int>(h);
+  layout.placement.scale = scale;
+  layout.placement.origin_x = options.margin_px;
+  layout.placement.origin_y = options.margin_px + layout.ascender_px;
+  return layout;
+}
+
+Image render_text_image(Renderer& renderer, GlyphCache& cache, const Font& font, const TextImageLayout& layout,
+                        const TextImageOptions& options) {
+  DrawBatch batch = DrawBatch::from_text(cache, font, layout.line, options.size_px);
+  renderer.begin(layout.width, layout.height, options.background);
+  DrawOptions draw;
+  draw.color = options.foreground;
+  draw.antialiasing = options.antialiasing;
+  draw.curve_mode = options.curve_mode;
+  renderer.draw(batch, layout.placement, draw);
+  return renderer.read_pixels();
+}
+
+}  // namespace curvetext

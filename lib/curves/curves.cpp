@@ -1,0 +1,129 @@
+#include "curvetext/curves.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "curvetext/tolerances.hpp"
+
+namespace curvetext {
+
+Vec2 evaluate(const Segment& s, double t) {
+  const double u = 1.0 - t;
+  switch (s.kind) {
+    case Segment::Kind::Line:
+      return lerp(s.p[0], s.p[1], t);
+    case Segment::Kind::Conic: {
+      const double b0 = u * u, b1 = 2.0 * u * t * s.weight, b2 = t * t;
+      return (s.p[0] * b0 + s.p[1] * b1 + s.p[2] * b2) / (b0 + b1 + b2);
+    }
+    case Segment::Kind::Cubic:
+      return s.p[0] * (u * u * u) + s.p[1] * (3 * u * u * t) + s.p[2] * (3 * u * t * t) +
+             s.p[3] * (t * t * t);
+  }
+  return s.p[0];
+}
+
+std::pair<Segment, Segment> split(const Segment& s, double t) {
+  switch (s.kind) {
+    case Segment::Kind::Line: {
+      const Vec2 m = lerp(s.p[0], s.p[1], t);
+      return {Segment::line(s.p[0], m), Segment::line(m, s.p[1])};
+    }
+    case Segment::Kind::Conic: {
+      // De Casteljau on the homogeneous points (w_i p_i, w_i) keeps the curve
+      // exact; each half is then re-normalised to end weights 1 with middle
+      // weight w_mid / sqrt(w_start * w_end).
+      const double w = s.weight;
+      const Vec2 h1 = s.p[1] * w;
+      const Vec2 q0 = lerp(s.p[0], h1, t);
+      const double q0w = (1.0 - t) + t * w;
+      const Vec2 q1 = lerp(h1, s.p[2], t);
+      const double q1w = (1.0 - t) * w + t;
+      const Vec2 r = lerp(q0, q1, t);
+      const double rw = (1.0 - t) * q0w + t * q1w;
+      const Vec2 mid = r / rw;
+      const double root = std::sqrt(rw);
+      return {Segment::conic(s.p[0], q0 / q0w, mid, q0w / root),
+              Segment::conic(mid, q1 / q1w, s.p[2], q1w / root)};
+    }
+    case Segment::Kind::Cubic: {
+      const Vec2 ab = lerp(s.p[0], s.p[1], t), bc = lerp(s.p[1], s.p[2], t), cd = lerp(s.p[2], s.p[3], t);
+      const Vec2 abc = lerp(ab, bc, t), bcd = lerp(bc, cd, t);
+      const Vec2 m = lerp(abc, bcd, t);
+      return {Segment::cubic(s.p[0], ab, abc, m), Segment::cubic(m, bcd, cd, s.p[3])};
+    }
+  }
+  return {s, s};
+}
+
+double conic_area_ratio(double w) {
+  if (!(w > 0.0)) return 0.0;
+  // Close to w = 1 the closed forms cancel; r(1) = 2/3 and r'(1) = 4/15.
+  const double e = w - 1.0;
+  if (std::abs(e) < 1e-6) return 2.0 / 3.0 + (4.0 / 15.0) * e;
+  if (w < 1.0) {
+    const double k = 1.0 - w * w;  // ellipse arc
+    return (w / k) * (std::acos(w) / std::sqrt(k) - w);
+  }
+  const double k = w * w - 1.0;  // hyperbola arc
+  return (w / k) * (w - std::acosh(w) / std::sqrt(k));
+}
+
+double conic_chord_area(const Segment& conic) {
+  const double triangle = 0.5 * cross(conic.p[1] - conic.p[0], conic.p[2] - conic.p[0]);
+  // Control point right of p0->p2 makes `triangle` negative; the documented
+  // sign is positive for that case.
+  return -conic_area_ratio(conic.weight) * triangle;
+}
+
+int cubic_to_quadratics(const Segment& cubic, double tolerance, std::vector<Segment>& out) {
+  const Vec2 a = cubic.p[0], b = cubic.p[1], c = cubic.p[2], d = cubic.p[3];
+  // The quadratic with control (3(b + c) - (a + d)) / 4 differs from the cubic
+  // by (d - 3c + 3b - a) * t(1-t)(1-2t) / 2 at every parameter t, whose
+  // largest size is sqrt(3)/36 * |d - 3c + 3b - a|. A piece of 1/n of the
+  // parameter range has its third difference scaled by 1/n^3.
+  const double third = length(d - c * 3.0 + b * 3.0 - a);
+  const double single_error = std::sqrt(3.0) / 36.0 * third;
+  int pieces = 1;
+  if (tolerance > 0.0 && single_error > tolerance)
+    pieces = static_cast<int>(std::ceil(std::cbrt(single_error / tolerance) - 1e-12));
+  if (!(tolerance > 0.0) && single_error > 0.0) pieces = tolerance::kMaxQuadraticsPerCubic;
+  pieces = std::clamp(pieces, 1, tolerance::kMaxQuadraticsPerCubic);
+
+  Segment rest = cubic;
+  for (int i = 0; i < pieces; ++i) {
+    Segment piece = rest;
+    const int remaining = pieces - i;
+    if (remaining > 1) {
+      auto halves = split(rest, 1.0 / remaining);
+      piece = halves.first;
+      rest = halves.second;
+    }
+    const Vec2 control = ((piece.p[1] + piece.p[2]) * 3.0 - (piece.p[0] + piece.p[3])) * 0.25;
+    out.push_back(Segment::conic(piece.p[0], control, piece.p[3], 1.0));
+  }
+  // Make the chain end exactly where the cubic ends (splitting rounds).
+  out.back().p[2] = cubic.p[3];
+  return pieces;
+}
+
+Outline to_quadratic_outline(const Outline& outline, double tolerance) {
+  Outline result = outline;
+  for (Contour& contour : result.contours()) {
+    if (std::none_of(contour.segments.begin(), contour.segments.end(),
+                     [](const Segment& s) { return s.kind == Segment::Kind::Cubic; }))
+      continue;
+    std::vector<Segment> replaced;
+    replaced.reserve(contour.segments.size() * 2);
+    for (const Segment& s : contour.segments) {
+      if (s.kind == Segment::Kind::Cubic)
+        cubic_to_quadratics(s, tolerance, replaced);
+      else
+        replaced.push_back(s);
+    }
+    contour.segments = std::move(replaced);
+  }
+  return result;
+}
+
+}  // namespace curvetext

@@ -1,0 +1,8 @@
+// Shader texts embedded at build time from shaders/*.glsl (see
+// cmake/EmbedShaders.cmake). The identifier is the file name with '.' -> '_'.
+#pragma once
+
+namespace curvetext::shader_source {
+extern const char* const curve_vert_glsl;
+extern const char* const curve_frag_glsl;
+}  // namespace curvetext::shader_source

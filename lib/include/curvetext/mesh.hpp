@@ -1,0 +1,73 @@
+// Meshes (paper 3.1-3.2): an outline of lines and conics becomes interior
+// triangles plus one curved triangle per conic piece. Size independent: the
+// mesh is in the outline's units. No GL here; gpu/ packs meshes for drawing.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "curvetext/outline.hpp"
+
+namespace curvetext {
+
+// A curved triangle is the control triangle (p0, control, p2) of one conic
+// piece. `convex`: the filled side of the curve is its chord side (the curve
+// bulges out of the shape; the interior mesh uses the chord). Otherwise the
+// filled side is the outer side (the curve bulges into the shape; the interior
+// mesh passes through the control point).
+struct CurvedTriangle {
+  std::uint32_t p0 = 0;
+  std::uint32_t control = 0;
+  std::uint32_t p2 = 0;
+  double weight = 1.0;
+  bool convex = true;
+};
+
+struct Mesh {
+  // Vertices, shared by index; equal positions use one index so that shared
+  // edges are bit-identical.
+  std::vector<Vec2> points;
+  // Interior triangles, counter-clockwise in a y-up frame.
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::vector<CurvedTriangle> curves;
+  // Straight pieces of the outline, directed so the filled side is on the left
+  // (y-up). Each is an edge of exactly one interior triangle.
+  std::vector<std::array<std::uint32_t, 2>> boundary_lines;
+
+  bool empty() const { return triangles.empty() && curves.empty(); }
+};
+
+struct MeshOptions {
+  // Tolerance for replacing cubics by quadratics, in the outline's units. The
+  // caller derives it from the scale the mesh is drawn at (see lod.hpp).
+  double cubic_tolerance = 0.25;
+};
+
+// Builds the mesh of the nonzero-winding fill of `outline`. Throws
+// Error(Geometry) on non-finite input. Never hangs: work is bounded by the
+// input size and tolerance::kMaxHullSubdivisionDepth.
+Mesh build_mesh(const Outline& outline, const MeshOptions& options = {});
+
+// Area enclosed by the mesh: interior triangles plus, for each curved triangle,
+// the area of its filled side (chord side for convex, outer side otherwise).
+double mesh_area(const Mesh& mesh);
+
+// The invariants of DESIGN.md section 4, checked on a built mesh.
+struct MeshCheck {
+  double area_mesh = 0.0;
+  double area_outline = 0.0;       // nonzero area of the quadratic outline
+  double area_rel_error = 0.0;     // |mesh - outline| / max(|outline|, tiny)
+  bool watertight = true;          // every interior edge shared by exactly two faces
+  std::size_t hull_overlaps = 0;   // curved triangles overlapping another face
+  std::size_t degenerate = 0;      // faces with non-positive area
+  std::vector<std::string> problems;  // human-readable, one per violation (capped)
+  bool ok() const { return problems.empty(); }
+};
+
+// `quadratic_outline` must be the outline the mesh was built from after cubic
+// replacement (to_quadratic_outline with the same tolerance).
+MeshCheck check_mesh(const Mesh& mesh, const Outline& quadratic_outline);
+
+}  // namespace curvetext

@@ -1,0 +1,121 @@
+// Drawing meshes and text with the GLES2 curve shader (paper section 4, with
+// the exact conic test of DESIGN.md section 3) into the caller's current GL
+// context. The library does not own windows; see headless.hpp for a context
+// without one.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "curvetext/color.hpp"
+#include "curvetext/font.hpp"
+#include "curvetext/image.hpp"
+#include "curvetext/mesh.hpp"
+#include "curvetext/shaping.hpp"
+
+namespace curvetext {
+
+enum class AntiAliasing {
+  None,    // in/out test only
+  Curves,  // the paper's single pass: curved edges antialiased, straight edges aliased
+  Full,    // single pass, straight and curved edges antialiased (default)
+};
+enum class CurveMode {
+  Exact,  // F = tau1^2 - 4 w^2 tau0 tau2 (DESIGN.md section 3), exact for every weight
+  Paper,  // the paper's equation 2: exact only for weight 1
+};
+
+AntiAliasing parse_antialiasing(std::string_view text);  // "none" | "curves" | "full"
+CurveMode parse_curve_mode(std::string_view text);       // "exact" | "paper"
+
+// Maps outline units (y up) to framebuffer pixels (y down, pixel (i,j) covers
+// [i,i+1]x[j,j+1]):  x_px = scale * x + origin_x,  y_px = origin_y - scale * y.
+struct Placement {
+  double scale = 1.0;
+  double origin_x = 0.0;
+  double origin_y = 0.0;
+};
+
+struct DrawOptions {
+  Color color{0, 0, 0, 1};
+  AntiAliasing antialiasing = AntiAliasing::Full;
+  CurveMode curve_mode = CurveMode::Exact;
+};
+
+// Meshes packed for the GPU, per glyph, keyed by (font cache key, glyph, level
+// of detail), with a memory budget (least recently used glyphs are dropped).
+class GlyphCache {
+ public:
+  explicit GlyphCache(std::size_t budget_bytes = 64u << 20);
+  ~GlyphCache();
+  GlyphCache(const GlyphCache&) = delete;
+  GlyphCache& operator=(const GlyphCache&) = delete;
+
+  struct Stats {
+    std::size_t glyphs = 0;
+    std::size_t bytes = 0;
+    std::size_t hits = 0;
+    std::size_t misses = 0;
+  };
+  Stats stats() const;
+
+  struct Impl;
+  Impl& impl() { return *impl_; }
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+// One vertex buffer drawn with one draw call. Built from shaped text (one
+// font) or from arbitrary meshes; moving or scaling it changes only uniforms.
+class DrawBatch {
+ public:
+  // Glyph meshes from `cache` (built on a miss at the level of detail for
+  // `pixels_per_em`), placed at the shaped pen positions from pen (0,0).
+  static DrawBatch from_text(GlyphCache& cache, const Font& font, const ShapedLine& line,
+                             double pixels_per_em);
+  // One mesh at offset (0,0).
+  static DrawBatch from_mesh(const Mesh& mesh);
+
+  DrawBatch(DrawBatch&&) noexcept;
+  DrawBatch& operator=(DrawBatch&&) noexcept;
+  ~DrawBatch();
+
+  std::size_t vertex_count() const;
+  std::size_t gpu_bytes() const;
+
+  struct Impl;
+  Impl& impl() const { return *impl_; }
+
+ private:
+  explicit DrawBatch(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+// Compiled shaders and an offscreen RGBA8 framebuffer. Needs a current GLES2
+// (or desktop GL) context; throws Error(Gl) when shaders fail to compile.
+class Renderer {
+ public:
+  Renderer();
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // Binds an offscreen framebuffer of this size (throws Error(InvalidArgument)
+  // above the GL maximum) and clears it to `background`.
+  void begin(int width, int height, Color background);
+  // Premultiplied source-over blending of `color` * coverage.
+  void draw(const DrawBatch& batch, const Placement& placement, const DrawOptions& options);
+  // The framebuffer as straight-alpha RGBA, row 0 at the top.
+  Image read_pixels();
+
+  struct Impl;
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace curvetext

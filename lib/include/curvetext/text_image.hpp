@@ -1,0 +1,47 @@
+// One line of text to an image, following the geometry contract of DESIGN.md
+// section 6, so results can be compared with any other renderer:
+//  - HarfBuzz shapes at `size_px` pixels per em; positions are not rounded;
+//  - the pen starts at x = margin, the baseline is at y = margin + A, with A
+//    and D the ascender and descender (hb_font_get_h_extents) in pixels;
+//  - the image is ceil(2 margin + advance) x ceil(2 margin + A - D) pixels;
+//  - pixel (i, j) covers [i, i+1] x [j, j+1], y grows downward.
+#pragma once
+
+#include <string_view>
+
+#include "curvetext/font.hpp"
+#include "curvetext/renderer.hpp"
+#include "curvetext/shaping.hpp"
+
+namespace curvetext {
+
+struct TextImageOptions {
+  double size_px = 32.0;
+  double margin_px = 16.0;
+  Color foreground{0, 0, 0, 1};
+  Color background{1, 1, 1, 1};
+  AntiAliasing antialiasing = AntiAliasing::Full;
+  CurveMode curve_mode = CurveMode::Exact;
+  ShapeOptions shaping;
+};
+
+struct TextImageLayout {
+  ShapedLine line;
+  int width = 0;
+  int height = 0;
+  Placement placement;  // font units -> image pixels, pen origin at (margin, margin + A)
+  double ascender_px = 0.0;
+  double descender_px = 0.0;
+};
+
+// Validates the text (non-empty, UTF-8) and sizes; throws Error(InvalidText) or
+// Error(InvalidArgument) (size <= 0, NaN, above tolerance::kMaxPixelsPerEm, or
+// an image side above tolerance::kMaxImageSidePx).
+TextImageLayout layout_text_image(const Font& font, std::string_view text, const TextImageOptions& options);
+
+// Draws the laid-out line with `renderer` (its GL context current) and returns
+// the image.
+Image render_text_image(Renderer& renderer, GlyphCache& cache, const Font& font, const TextImageLayout& layout,
+                        const TextImageOptions& options);
+
+}  // namespace curvetext

@@ -1,0 +1,39 @@
+// Every tolerance curvetext uses, in one place, with its unit. Code elsewhere
+// refers to these names instead of writing numbers.
+#pragma once
+
+namespace curvetext::tolerance {
+
+// --- Curves -----------------------------------------------------------------
+// Largest distance, in device pixels, allowed between a cubic and the
+// quadratics that replace it (DESIGN.md section 3: 1/16 px at every scale).
+inline constexpr double kCubicApproximationPx = 1.0 / 16.0;
+// Largest number of quadratics one cubic may become (guards against absurd
+// scales; at this count the bound is still honoured for any glyph-sized cubic
+// drawn below 10,000 px/em).
+inline constexpr int kMaxQuadraticsPerCubic = 64;
+
+// --- Tessellation -------------------------------------------------------------
+// Relative area error allowed by the area identity check (mesh vs outline).
+inline constexpr double kAreaIdentityRelative = 1e-6;
+// Deepest de Casteljau subdivision used to separate overlapping curve hulls.
+inline constexpr int kMaxHullSubdivisionDepth = 10;
+// Points closer than this (font units) are merged when building loops.
+inline constexpr double kMergeDistanceFontUnits = 1e-9;
+
+// --- Rendering ----------------------------------------------------------------
+// Outward dilation of boundary geometry for the `full` antialiasing mode, in
+// pixels. A pixel's box filter reaches at most sqrt(2)/2 px from its centre.
+inline constexpr float kFringeWidthPx = 0.7072f;
+
+// --- Level of detail ---------------------------------------------------------
+// Meshes of glyphs with cubics are built per power-of-two pixels-per-em band;
+// the band's upper end is used to choose the cubic tolerance.
+inline constexpr int kMinLodLog2 = 3;   // 8 px/em and below share one mesh
+inline constexpr int kMaxLodLog2 = 14;  // 16,384 px/em
+
+// --- Input limits (bad input gets an error, not a hang) -----------------------
+inline constexpr double kMaxPixelsPerEm = 20000.0;
+inline constexpr double kMaxImageSidePx = 16384.0;
+
+}  // namespace curvetext::tolerance

@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages curvetext needs to build, test and run
+# (only those missing). Runs as root, or through sudo when available.
+set -euo pipefail
+
+packages=(
+  # toolchain
+  build-essential cmake pkg-config
+  # fonts and text
+  libfreetype-dev libharfbuzz-dev
+  # headless GL: EGL + GLES2, Mesa's llvmpipe on machines without a GPU
+  libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
+  # images
+  libpng-dev
+  # tests and benchmarks
+  googletest libgtest-dev libbenchmark-dev
+  # fonts: the default font (DejaVu Sans) and the test corpus
+  fonts-dejavu-core fonts-noto-core fonts-urw-base35 fonts-inter-variable
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null; then SUDO="sudo"; else
+    echo "setup: need root (or sudo) to install: ${missing[*]}" >&2; exit 1
+  fi
+fi
+echo "setup: installing ${missing[*]}"
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

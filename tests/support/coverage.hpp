@@ -1,0 +1,60 @@
+// Test support: coverage images, exact references and their comparison
+// (DESIGN.md section 6), with images written when a comparison fails.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "curvetext/image.hpp"
+#include "curvetext/outline.hpp"
+#include "curvetext/renderer.hpp"
+
+namespace curvetext::test {
+
+// Coverage in [0,1] per pixel, row 0 at the top.
+struct Coverage {
+  int width = 0;
+  int height = 0;
+  std::vector<float> value;
+  Coverage() = default;
+  Coverage(int w, int h) : width(w), height(h), value(static_cast<std::size_t>(w) * h, 0.0f) {}
+  float& at(int x, int y) { return value[static_cast<std::size_t>(y) * width + x]; }
+  float at(int x, int y) const { return value[static_cast<std::size_t>(y) * width + x]; }
+};
+
+// Coverage of black drawn on white: 1 - red/255.
+Coverage coverage_from_black_on_white(const Image& image);
+
+// Exact area coverage from FreeType's AA rasterizer (FT_Outline_Render, nonzero
+// fill) of `outline` placed by `placement`, rendered `supersample` times larger
+// and box-filtered down, so its per-pixel error (chords, 1/64 px rounding) is
+// divided by `supersample`. Conics must have weight 1 (FreeType has no
+// rational curves). Cubics are passed to FreeType as cubics.
+Coverage freetype_reference(const Outline& outline, const Placement& placement, int width, int height,
+                            int supersample);
+
+// Coverage by point sampling an inside test on an n x n grid per pixel (for
+// analytic shapes such as circles and rational conics).
+Coverage sampled_reference(const std::function<bool(double x, double y)>& inside, int width, int height,
+                           int n);
+
+struct CoverageStats {
+  double mean_abs = 0.0;       // over the whole image
+  double edge_mean_abs = 0.0;  // over the edge band
+  double max_abs = 0.0;
+  double ink_ratio = 1.0;      // sum(result) / sum(reference)
+  std::size_t edge_pixels = 0;
+};
+
+// Edge band: pixels where either image has 0.02 < c < 0.98, dilated by one pixel.
+CoverageStats compare(const Coverage& result, const Coverage& reference);
+
+// Writes <dir>/<name>-result.png, -reference.png and -diff.png (red: result
+// too dark, blue: too light) and returns the directory.
+std::string write_comparison(const std::string& name, const Coverage& result, const Coverage& reference);
+
+// Outline in pixel space -> the same with every point mapped by placement.
+Outline place_outline(const Outline& outline, const Placement& placement);
+
+}  // namespace curvetext::test
