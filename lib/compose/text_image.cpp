@@ -1,6 +1,7 @@
 #include "curvetext/text_image.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "curvetext/error.hpp"
@@ -8,13 +9,20 @@
 
 namespace curvetext {
 
+namespace {
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+}  // namespace
+
 TextImageLayout layout_text_image(const Font& font, std::string_view text, const TextImageOptions& options) {
   if (!std::isfinite(options.size_px) || options.size_px <= 0.0)
-    throw Error(ErrorCode::InvalidArgument, "size must be a positive number of pixels, got " +
-                                                std::to_string(options.size_px));
+    throw Error(ErrorCode::InvalidArgument, "size must be a positive number of pixels, got " + number(options.size_px));
   if (options.size_px > tolerance::kMaxPixelsPerEm)
-    throw Error(ErrorCode::InvalidArgument, "size " + std::to_string(options.size_px) + " px is above the limit of " +
-                                                std::to_string(tolerance::kMaxPixelsPerEm) + " px");
+    throw Error(ErrorCode::InvalidArgument, "size " + number(options.size_px) + " px is above the limit of " +
+                                                number(tolerance::kMaxPixelsPerEm) + " px");
   if (!std::isfinite(options.margin_px) || options.margin_px < 0.0 || options.margin_px > tolerance::kMaxImageSidePx)
     throw Error(ErrorCode::InvalidArgument, "margin must be between 0 and the largest image side");
   if (text.empty()) throw Error(ErrorCode::InvalidText, "the text is empty");

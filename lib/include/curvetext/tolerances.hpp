@@ -20,6 +20,11 @@ inline constexpr double kAreaIdentityRelative = 1e-6;
 inline constexpr int kMaxHullSubdivisionDepth = 10;
 // Points closer than this (font units) are merged when building loops.
 inline constexpr double kMergeDistanceFontUnits = 1e-9;
+// A conic whose control point lies closer to its chord's line than this
+// fraction of the chord length is treated as a straight line (dimensionless;
+// the area this ignores is below 1e-9 of the chord length squared). Also the
+// tolerance for recognising a two-line spike that folds back on itself.
+inline constexpr double kConicFlatnessRelative = 1e-9;
 
 // --- Rendering ----------------------------------------------------------------
 // Outward dilation of boundary geometry for the `full` antialiasing mode, in

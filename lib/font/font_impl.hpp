@@ -1,0 +1,123 @@
+// Private: the state behind curvetext::Font. Other parts of the library (and
+// the tests' FreeType reference rendering) include this to reach the FreeType
+// face and the HarfBuzz font that read the same bytes.
+//
+// Ownership: Impl owns one FT_Library (one per Font, so fonts never share
+// FreeType state and can be used on different threads), the FT_Face, and one
+// reference each to the hb_blob_t / hb_face_t / hb_font_t. The font file's
+// bytes are held by a shared_ptr that both FreeType (through Impl) and the
+// HarfBuzz blob (through its destroy callback) keep alive, so an hb_font_t
+// reference taken with hb_font_reference() stays valid even after the Font is
+// gone.
+//
+// Thread safety: FreeType's glyph slot is mutable state, so every FreeType
+// call on ft_face must hold ft_mutex (glyph_outline() does). hb_font is
+// immutable between set_variations() calls and may be shaped with from several
+// threads.
+#pragma once
+
+#include <ft2build.h>
+#include FT_FREETYPE_H
+#include <hb-ot.h>
+#include <hb.h>
+
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "curvetext/font.hpp"
+
+namespace curvetext {
+
+namespace detail {
+
+struct FtLibraryDeleter {
+  void operator()(FT_Library library) const noexcept { FT_Done_FreeType(library); }
+};
+struct FtFaceDeleter {
+  void operator()(FT_Face face) const noexcept { FT_Done_Face(face); }
+};
+struct HbBlobDeleter {
+  void operator()(hb_blob_t* blob) const noexcept { hb_blob_destroy(blob); }
+};
+struct HbFaceDeleter {
+  void operator()(hb_face_t* face) const noexcept { hb_face_destroy(face); }
+};
+struct HbFontDeleter {
+  void operator()(hb_font_t* font) const noexcept { hb_font_destroy(font); }
+};
+struct HbBufferDeleter {
+  void operator()(hb_buffer_t* buffer) const noexcept { hb_buffer_destroy(buffer); }
+};
+
+// FT_Library and FT_Face are pointer typedefs; unique_ptr over the pointee.
+using FtLibraryPtr = std::unique_ptr<std::remove_pointer_t<FT_Library>, FtLibraryDeleter>;
+using FtFacePtr = std::unique_ptr<std::remove_pointer_t<FT_Face>, FtFaceDeleter>;
+using HbBlobPtr = std::unique_ptr<hb_blob_t, HbBlobDeleter>;
+using HbFacePtr = std::unique_ptr<hb_face_t, HbFaceDeleter>;
+using HbFontPtr = std::unique_ptr<hb_font_t, HbFontDeleter>;
+using HbBufferPtr = std::unique_ptr<hb_buffer_t, HbBufferDeleter>;
+
+using FontBytes = std::shared_ptr<const std::vector<unsigned char>>;
+
+// One variation axis as FreeType reports it (FT_Var_Axis), values in design
+// units (FT_Fixed 16.16).
+struct AxisInfo {
+  std::string tag;  // four characters
+  std::uint32_t hb_tag = 0;
+  FT_Fixed minimum = 0;
+  FT_Fixed default_value = 0;
+  FT_Fixed maximum = 0;
+};
+
+}  // namespace detail
+
+struct Font::Impl {
+  // Declaration order is destruction order in reverse: the bytes go last,
+  // after FreeType and HarfBuzz have let go of them.
+  detail::FontBytes bytes;
+  detail::FtLibraryPtr library_owner;
+  detail::FtFacePtr face_owner;
+  detail::HbBlobPtr hb_blob_owner;
+  detail::HbFacePtr hb_face_owner;
+  detail::HbFontPtr hb_font_owner;
+
+  // Non-owning views of the objects above, for callers that want the raw
+  // handles (reference rendering, shaping).
+  FT_Face ft_face = nullptr;
+  hb_font_t* hb_font = nullptr;
+
+  std::string path;
+  int face_index = 0;
+  int units_per_em = 0;
+
+  // Empty for fonts without variations.
+  std::vector<detail::AxisInfo> axes;
+  // Current design coordinates, one per axis (clamped), as given to FreeType.
+  std::vector<FT_Fixed> coordinates;
+  // What set_variations() was last given, deduplicated and clamped.
+  std::vector<Variation> variations;
+  std::uint64_t cache_key = 0;
+
+  // The face's outlines are CFF or CFF2 charstrings (not glyf).
+  bool cff_outlines = false;
+
+  // Where glyph_outline() reads outlines (see the comment there): HarfBuzz's
+  // hb_font_get_glyph_shape for CFF/CFF2 faces and for variable fonts away
+  // from their default instance, where FreeType 2.12 rounds coordinates to
+  // whole font units; FreeType otherwise. A FreeType reference rendering of
+  // such glyphs can differ from our outline by up to one font unit.
+  bool outlines_from_harfbuzz() const {
+    if (cff_outlines) return true;
+    for (std::size_t i = 0; i < axes.size(); ++i)
+      if (coordinates[i] != axes[i].default_value) return true;
+    return false;
+  }
+
+  mutable std::mutex ft_mutex;
+};
+
+}  // namespace curvetext

@@ -1,0 +1,550 @@
+// build_mesh: outline -> cleaned rings -> separated hulls -> nesting and
+// orientation -> polygon loops + curved triangles -> bridged loops -> ear
+// clipping -> Lawson flips -> indexed mesh (DESIGN.md section 4, paper 3.1).
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "curvetext/curves.hpp"
+#include "curvetext/error.hpp"
+#include "curvetext/mesh.hpp"
+#include "curvetext/tolerances.hpp"
+#include "tessellate/predicates.hpp"
+#include "tessellate/rings.hpp"
+#include "tessellate/triangulate.hpp"
+
+namespace curvetext {
+namespace detail {
+
+// --- Cleaning -------------------------------------------------------------------
+
+namespace {
+
+// Signed zero would give equal positions different bit patterns (and so
+// different vertex indices); adding +0.0 turns -0.0 into +0.0.
+Vec2 canonical(Vec2 p) { return {p.x + 0.0, p.y + 0.0}; }
+
+bool nearly_flat(Vec2 a, Vec2 control, Vec2 b) {
+  const Vec2 chord = b - a;
+  const double len2 = dot(chord, chord);
+  return std::fabs(cross(control - a, chord)) <= tolerance::kConicFlatnessRelative * len2 ||
+         orient2d(a, control, b) == 0;
+}
+
+// One pass of local simplifications; returns true when something changed.
+bool simplify_pass(Ring& ring) {
+  bool changed = false;
+  const double merge2 = tolerance::kMergeDistanceFontUnits * tolerance::kMergeDistanceFontUnits;
+  // Zero-length pieces (repeated points, conics that return to their start).
+  {
+    Ring kept;
+    kept.reserve(ring.size());
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const Vec2 d = ring_end(ring, i) - ring[i].a;
+      if (dot(d, d) <= merge2) {
+        changed = true;
+        continue;
+      }
+      kept.push_back(ring[i]);
+    }
+    ring.swap(kept);
+  }
+  // Conics whose control point is on (or within the flatness tolerance of) the
+  // chord's line. Inside the chord span the curve is the chord. Outside it the
+  // curve runs past an end point and comes back along the same line: it traces
+  // a zero-width spike that encloses no area, so for the nonzero fill the conic
+  // is again equivalent to its chord (the spike is not part of any region).
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    Piece& p = ring[i];
+    if (p.conic && nearly_flat(p.a, p.control, ring_end(ring, i))) {
+      p.conic = false;
+      p.weight = 1.0;
+      changed = true;
+    }
+  }
+  // Consecutive lines: exactly collinear and going on -> one line; going back
+  // (a spike, within the flatness tolerance) -> the spike tip is removed.
+  if (ring.size() >= 2) {
+    std::vector<char> drop(ring.size(), 0);
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const std::size_t j = (i + 1) % ring.size();
+      // At the wrap-around the piece after j may already be gone, which would
+      // change where j ends; leave that pair to the next pass.
+      if (drop[i] || drop[j] || drop[(j + 1) % ring.size()] || ring[i].conic || ring[j].conic) continue;
+      const Vec2 a = ring[i].a, b = ring[j].a, c = ring_end(ring, j);
+      const Vec2 ab = b - a, bc = c - b;
+      const double along = dot(ab, bc);
+      const bool straight = orient2d(a, b, c) == 0;
+      const bool spike = along < 0.0 && std::fabs(cross(ab, bc)) <= tolerance::kConicFlatnessRelative *
+                                                                       std::max(dot(ab, ab), dot(bc, bc));
+      if (straight || spike) {
+        drop[j] = 1;  // the piece starting at b disappears; piece i now ends at c
+        changed = true;
+      }
+    }
+    Ring kept;
+    kept.reserve(ring.size());
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      if (!drop[i]) kept.push_back(ring[i]);
+    }
+    ring.swap(kept);
+  }
+  return changed;
+}
+
+}  // namespace
+
+double ring_area(const Ring& ring) {
+  double area = 0.0;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Vec2 a = ring[i].a, b = ring_end(ring, i);
+    area += 0.5 * cross(a, b);
+    if (ring[i].conic) {
+      // The arc adds the area between chord and arc when it bulges to the
+      // right of a->b (the exterior of a counter-clockwise ring).
+      area += conic_area_ratio(ring[i].weight) * 0.5 * cross(ring[i].control - a, b - a);
+    }
+  }
+  return area;
+}
+
+std::vector<Ring> clean_rings(const Outline& quadratic) {
+  std::vector<Ring> rings;
+  for (const Contour& contour : quadratic.contours()) {
+    Ring ring;
+    ring.reserve(contour.segments.size());
+    for (const Segment& s : contour.segments) {
+      Piece p;
+      p.a = canonical(s.p[0]);
+      if (s.kind == Segment::Kind::Conic) {
+        p.conic = true;
+        p.control = canonical(s.p[1]);
+        p.weight = s.weight;
+      }
+      ring.push_back(p);
+    }
+    // Each pass shrinks the ring or stops the loop; the cap only matters for
+    // adversarial input, where leftovers are handled by the ear clipper.
+    for (int pass = 0; pass < 16 && ring.size() >= 2 && simplify_pass(ring); ++pass) {
+    }
+    const bool has_conic = std::any_of(ring.begin(), ring.end(), [](const Piece& p) { return p.conic; });
+    if (ring.size() < 2 || (ring.size() == 2 && !has_conic)) continue;
+    if (ring_area(ring) == 0.0) continue;
+    rings.push_back(std::move(ring));
+  }
+  return rings;
+}
+
+// --- Hull separation --------------------------------------------------------------
+
+namespace {
+
+bool in_closed_hull(const Vec2* hull, int n, Vec2 p) {
+  if (n == 2) return point_on_segment(hull[0], hull[1], p);
+  return point_in_triangle(hull[0], hull[1], hull[2], p) != Where::Outside;
+}
+
+bool triangle_interiors_intersect(const Vec2* p, const Vec2* q) {
+  // Separating axis theorem on the edges of both (convex) triangles; touching
+  // (all on the closed outer side) counts as separated.
+  auto separated_by_edges_of = [](const Vec2* t, const Vec2* other) {
+    const int o = orient2d(t[0], t[1], t[2]);
+    if (o == 0) return true;  // a degenerate triangle has no interior
+    for (int k = 0; k < 3; ++k) {
+      const Vec2 a = t[k], b = t[(k + 1) % 3];
+      bool all_outside = true;
+      for (int m = 0; m < 3 && all_outside; ++m) all_outside = orient2d(a, b, other[m]) * o <= 0;
+      if (all_outside) return true;
+    }
+    return false;
+  };
+  return !separated_by_edges_of(p, q) && !separated_by_edges_of(q, p);
+}
+
+Piece conic_piece(const Segment& s, int depth) {
+  Piece q;
+  q.a = canonical(s.p[0]);
+  q.control = canonical(s.p[1]);
+  q.weight = s.weight;
+  q.conic = true;
+  q.depth = depth;
+  return q;
+}
+
+// Curves tangent to a neighbour at a shared vertex (a conic leaving a line
+// back along it, or two conics meeting in a cusp) keep their legs on one line
+// however often they are subdivided: the hulls touch along that line and one
+// hull's corner sits on the other's edge. Instead of subdividing, make the
+// overlapping edges coincide exactly: split the line at the control point, or
+// split the conic with the longer leg at the parameter where its new control
+// point lands on the other conic's control point (then snapped to it, a move
+// of a few ulps along the tangent line). Returns true when something changed.
+bool align_tangent_legs(Ring& ring) {
+  const std::size_t n = ring.size();
+  if (n < 2) return false;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t j = (i + 1) % n;  // piece i ends where piece j starts, at v
+    Piece& first = ring[i];
+    Piece& second = ring[j];
+    if (!first.conic && !second.conic) continue;
+    const Vec2 v = second.a;
+    const Vec2 start = first.a, end = ring_end(ring, j);
+    if (first.conic && !second.conic) {
+      // Line v->end running back over the conic's last leg.
+      if (point_on_segment(v, end, first.control) && first.control != v && first.control != end) {
+        Piece tail = second;
+        tail.a = first.control;
+        ring.insert(ring.begin() + static_cast<std::ptrdiff_t>(j) + 1, tail);
+        return true;
+      }
+      continue;
+    }
+    if (!first.conic && second.conic) {
+      if (point_on_segment(start, v, second.control) && second.control != v && second.control != start) {
+        Piece tail = first;
+        tail.a = second.control;
+        ring.insert(ring.begin() + static_cast<std::ptrdiff_t>(i) + 1, tail);
+        return true;
+      }
+      continue;
+    }
+    const Vec2 ca = first.control, cb = second.control;
+    if (ca == cb || orient2d(ca, v, cb) != 0 || dot(ca - v, cb - v) <= 0.0) continue;
+    const double la = length(ca - v), lb = length(cb - v);
+    if (la > lb) {
+      // Split `first` (start -> v) at t so its last piece's control is cb.
+      const double rho = lb / la, w = first.weight;
+      const double t = w * (1.0 - rho) / (w * (1.0 - rho) + rho);
+      if (!(t > 0.0 && t < 1.0)) continue;
+      const auto halves = split(Segment::conic(start, ca, v, w), t);
+      Piece head = conic_piece(halves.first, first.depth + 1);
+      Piece tail = conic_piece(halves.second, first.depth + 1);
+      tail.control = cb;
+      ring[i] = head;
+      ring.insert(ring.begin() + static_cast<std::ptrdiff_t>(i) + 1, tail);
+      return true;
+    }
+    // Split `second` (v -> end) at t so its first piece's control is ca.
+    const double rho = la / lb, w = second.weight;
+    const double t = rho / (w * (1.0 - rho) + rho);
+    if (!(t > 0.0 && t < 1.0)) continue;
+    const auto halves = split(Segment::conic(v, cb, end, w), t);
+    Piece head = conic_piece(halves.first, second.depth + 1);
+    Piece tail = conic_piece(halves.second, second.depth + 1);
+    head.control = ca;
+    ring[j] = head;
+    ring.insert(ring.begin() + static_cast<std::ptrdiff_t>(j) + 1, tail);
+    return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+bool hulls_overlap(const Vec2* p, int np, const Vec2* q, int nq) {
+  auto is_vertex_of = [](Vec2 v, const Vec2* hull, int n) {
+    for (int k = 0; k < n; ++k) {
+      if (hull[k] == v) return true;
+    }
+    return false;
+  };
+  for (int k = 0; k < nq; ++k) {
+    if (!is_vertex_of(q[k], p, np) && in_closed_hull(p, np, q[k])) return true;
+  }
+  for (int k = 0; k < np; ++k) {
+    if (!is_vertex_of(p[k], q, nq) && in_closed_hull(q, nq, p[k])) return true;
+  }
+  const int ep = np == 2 ? 1 : 3, eq = nq == 2 ? 1 : 3;
+  for (int i = 0; i < ep; ++i) {
+    for (int j = 0; j < eq; ++j) {
+      if (segments_cross_properly(p[i], p[(i + 1) % np], q[j], q[(j + 1) % nq])) return true;
+    }
+  }
+  return np == 3 && nq == 3 && triangle_interiors_intersect(p, q);
+}
+
+void separate_hulls(std::vector<Ring>& rings) {
+  struct HullRef {
+    Box box;
+    std::uint32_t ring;
+    std::uint32_t piece;
+  };
+  for (int pass = 0; pass <= tolerance::kMaxHullSubdivisionDepth; ++pass) {
+    for (Ring& ring : rings) {
+      // Each call fixes one tangency; a ring has at most one per vertex.
+      for (std::size_t fixes = 0, limit = 2 * ring.size() + 2; fixes < limit && align_tangent_legs(ring); ++fixes) {
+      }
+    }
+    std::vector<HullRef> refs;
+    for (std::uint32_t r = 0; r < rings.size(); ++r) {
+      for (std::uint32_t i = 0; i < rings[r].size(); ++i) {
+        HullRef ref{{}, r, i};
+        ref.box.add(rings[r][i].a);
+        ref.box.add(ring_end(rings[r], i));
+        if (rings[r][i].conic) ref.box.add(rings[r][i].control);
+        refs.push_back(ref);
+      }
+    }
+    std::sort(refs.begin(), refs.end(), [](const HullRef& a, const HullRef& b) { return a.box.min.x < b.box.min.x; });
+    std::vector<std::vector<char>> split_marks(rings.size());
+    for (std::size_t r = 0; r < rings.size(); ++r) split_marks[r].assign(rings[r].size(), 0);
+    bool any = false;
+    auto hull_of = [&](const HullRef& ref, Vec2* out) {
+      const Piece& piece = rings[ref.ring][ref.piece];
+      out[0] = piece.a;
+      if (piece.conic) {
+        out[1] = piece.control;
+        out[2] = ring_end(rings[ref.ring], ref.piece);
+        return 3;
+      }
+      out[1] = ring_end(rings[ref.ring], ref.piece);
+      return 2;
+    };
+    for (std::size_t i = 0; i < refs.size(); ++i) {
+      const Piece& pi = rings[refs[i].ring][refs[i].piece];
+      for (std::size_t j = i + 1; j < refs.size() && refs[j].box.min.x <= refs[i].box.max.x; ++j) {
+        const Piece& pj = rings[refs[j].ring][refs[j].piece];
+        if (!pi.conic && !pj.conic) continue;
+        if (!boxes_overlap(refs[i].box, refs[j].box)) continue;
+        Vec2 hi[3], hj[3];
+        const int ni = hull_of(refs[i], hi), nj = hull_of(refs[j], hj);
+        if (!hulls_overlap(hi, ni, hj, nj)) continue;
+        // Subdividing a conic shrinks its hull towards the arc; lines stay.
+        if (pi.conic && pi.depth < tolerance::kMaxHullSubdivisionDepth) {
+          split_marks[refs[i].ring][refs[i].piece] = 1;
+          any = true;
+        }
+        if (pj.conic && pj.depth < tolerance::kMaxHullSubdivisionDepth) {
+          split_marks[refs[j].ring][refs[j].piece] = 1;
+          any = true;
+        }
+      }
+    }
+    if (!any) return;
+    for (std::size_t r = 0; r < rings.size(); ++r) {
+      Ring next;
+      next.reserve(rings[r].size() + 8);
+      for (std::size_t i = 0; i < rings[r].size(); ++i) {
+        const Piece& p = rings[r][i];
+        if (!split_marks[r][i]) {
+          next.push_back(p);
+          continue;
+        }
+        const auto halves = split(Segment::conic(p.a, p.control, ring_end(rings[r], i), p.weight), 0.5);
+        next.push_back(conic_piece(halves.first, p.depth + 1));
+        next.push_back(conic_piece(halves.second, p.depth + 1));
+      }
+      rings[r].swap(next);
+    }
+  }
+}
+
+// --- Nesting -------------------------------------------------------------------------
+
+Where point_in_ring(const Ring& ring, Vec2 p) {
+  int winding = 0;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Vec2 a = ring[i].a, b = ring_end(ring, i);
+    if (point_on_segment(a, b, p)) return Where::Boundary;
+    if (a.y <= p.y) {
+      if (b.y > p.y && orient2d(a, b, p) > 0) ++winding;
+    } else if (b.y <= p.y && orient2d(a, b, p) < 0) {
+      --winding;
+    }
+  }
+  return winding != 0 ? Where::Inside : Where::Outside;
+}
+
+namespace {
+
+Box ring_box(const Ring& ring) {
+  Box box;
+  for (const Piece& p : ring) box.add(p.a);
+  return box;
+}
+
+bool box_contains(const Box& outer, const Box& inner) {
+  return outer.min.x <= inner.min.x && outer.min.y <= inner.min.y && inner.max.x <= outer.max.x &&
+         inner.max.y <= outer.max.y;
+}
+
+// Ring `inner` lies inside ring `outer` (they do not cross). After hull
+// separation no vertex of one ring lies in a curved cap of another, so the
+// chord polygon answers for the curved region.
+bool ring_inside(const Ring& inner, const Ring& outer) {
+  for (const Piece& p : inner) {
+    const Where w = point_in_ring(outer, p.a);
+    if (w == Where::Inside) return true;
+    if (w == Where::Outside) return false;
+  }
+  return false;  // every vertex on the other ring: a duplicate, not nested
+}
+
+Ring reversed(const Ring& ring) {
+  Ring out;
+  out.reserve(ring.size());
+  for (std::size_t k = ring.size(); k-- > 0;) {
+    Piece p = ring[k];
+    p.a = ring_end(ring, k);
+    out.push_back(p);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<Region> nest_rings(std::vector<Ring> rings) {
+  const std::size_t n = rings.size();
+  std::vector<double> area(n);
+  std::vector<Box> box(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    area[i] = ring_area(rings[i]);
+    box[i] = ring_box(rings[i]);
+  }
+  // containers[i]: rings that contain ring i.
+  std::vector<std::vector<std::size_t>> containers(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < n; ++j) {
+      if (i == j || !box_contains(box[j], box[i]) || std::fabs(area[j]) < std::fabs(area[i])) continue;
+      if (ring_inside(rings[i], rings[j])) containers[i].push_back(j);
+    }
+  }
+  // Nonzero rule: winding just outside ring i is the sum of the orientations
+  // of the rings around it; just inside it adds its own orientation. The ring
+  // bounds the fill only where exactly one of the two is non-zero.
+  enum class Role { Drop, Outer, Hole };
+  std::vector<Role> role(n, Role::Drop);
+  for (std::size_t i = 0; i < n; ++i) {
+    int outside = 0;
+    for (std::size_t j : containers[i]) outside += area[j] > 0 ? 1 : -1;
+    const int inside = outside + (area[i] > 0 ? 1 : -1);
+    if ((outside != 0) == (inside != 0)) continue;
+    role[i] = inside != 0 ? Role::Outer : Role::Hole;
+    // Normalise: filled side on the left (outer counter-clockwise, holes clockwise).
+    const bool ccw = area[i] > 0;
+    if ((role[i] == Role::Outer) != ccw) rings[i] = reversed(rings[i]);
+  }
+  std::vector<Region> regions;
+  std::vector<std::size_t> region_of(n, n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (role[i] != Role::Outer) continue;
+    region_of[i] = regions.size();
+    regions.push_back({std::move(rings[i]), {}});
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (role[i] != Role::Hole) continue;
+    // The innermost outer ring around a hole is its container.
+    std::size_t best = n;
+    for (std::size_t j : containers[i]) {
+      if (role[j] == Role::Outer && (best == n || std::fabs(area[j]) < std::fabs(area[best]))) best = j;
+    }
+    if (best == n) continue;  // cannot happen for non-crossing rings
+    regions[region_of[best]].holes.push_back(std::move(rings[i]));
+  }
+  return regions;
+}
+
+}  // namespace detail
+
+// --- Assembly ---------------------------------------------------------------------------
+
+namespace {
+
+// Removes zero-width folds "c, v, c" from a polygon loop. They arise where a
+// concave conic's leg and the next piece retrace each other (a tangent cusp
+// after align_tangent_legs); the fold encloses nothing, and the curved
+// triangle on the other side of the shared leg covers the sliver of fill.
+std::vector<Vec2> remove_folds(const std::vector<Vec2>& loop) {
+  std::vector<Vec2> current = loop;
+  for (int round = 0; round < 2; ++round) {
+    std::vector<Vec2> out;
+    out.reserve(current.size());
+    for (const Vec2 p : current) {
+      out.push_back(p);
+      while (out.size() >= 3 && out[out.size() - 3] == out.back()) {
+        out.pop_back();
+        out.pop_back();
+      }
+    }
+    // Rotate by half so folds across the seam are met in the middle next time.
+    std::rotate(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(out.size() / 2), out.end());
+    current.swap(out);
+  }
+  return current;
+}
+
+struct PointIndex {
+  std::map<std::pair<double, double>, std::uint32_t> index;
+  std::vector<Vec2> points;
+  std::uint32_t operator()(Vec2 p) {
+    auto [it, inserted] = index.try_emplace({p.x, p.y}, static_cast<std::uint32_t>(points.size()));
+    if (inserted) points.push_back(p);
+    return it->second;
+  }
+};
+
+}  // namespace
+
+Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
+  using namespace detail;
+  if (!outline.is_finite()) throw Error(ErrorCode::Geometry, "build_mesh: outline has non-finite coordinates or weights");
+  if (!(options.cubic_tolerance > 0.0) || !std::isfinite(options.cubic_tolerance)) {
+    throw Error(ErrorCode::Geometry, "build_mesh: cubic_tolerance must be positive and finite");
+  }
+  const Outline quadratic = to_quadratic_outline(outline, options.cubic_tolerance);
+  std::vector<Ring> rings = clean_rings(quadratic);
+  separate_hulls(rings);
+  std::vector<Region> regions = nest_rings(std::move(rings));
+
+  Mesh mesh;
+  PointIndex index;
+  std::set<EdgeKey> constrained;
+  std::vector<std::array<Vec2, 3>> triangle_points;
+  for (const Region& region : regions) {
+    auto polygonise = [&](const Ring& ring) {
+      std::vector<Vec2> loop;
+      loop.reserve(ring.size() * 2);
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        const Piece& p = ring[i];
+        const Vec2 a = p.a, b = ring_end(ring, i);
+        loop.push_back(a);
+        const std::uint32_t ia = index(a), ib = index(b);
+        if (!p.conic) {
+          mesh.boundary_lines.push_back({ia, ib});
+          constrained.insert(edge_key(ia, ib));
+          continue;
+        }
+        // Filled side is on the left: a control point on the right of the
+        // chord bulges out (convex, the polygon keeps the chord), on the left
+        // it bulges in (concave, the polygon goes through the control point).
+        const bool convex = orient2d(a, b, p.control) <= 0;
+        const std::uint32_t ic = index(p.control);
+        mesh.curves.push_back({ia, ic, ib, p.weight, convex});
+        if (convex) {
+          constrained.insert(edge_key(ia, ib));
+        } else {
+          loop.push_back(p.control);
+          constrained.insert(edge_key(ia, ic));
+          constrained.insert(edge_key(ic, ib));
+        }
+      }
+      return remove_folds(loop);
+    };
+    std::vector<Vec2> outer = polygonise(region.outer);
+    std::vector<std::vector<Vec2>> holes;
+    for (const Ring& hole : region.holes) holes.push_back(polygonise(hole));
+    const std::vector<Vec2> loop = bridge_holes(std::move(outer), std::move(holes));
+    ear_clip(loop, triangle_points);
+  }
+  mesh.triangles.reserve(triangle_points.size());
+  for (const auto& t : triangle_points) mesh.triangles.push_back({index(t[0]), index(t[1]), index(t[2])});
+  delaunay_flips(index.points, mesh.triangles, constrained);
+  mesh.points = std::move(index.points);
+  return mesh;
+}
+
+}  // namespace curvetext

@@ -1,0 +1,137 @@
+#include "tessellate/predicates.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace curvetext::detail {
+namespace {
+
+// Error-free transformations (Knuth two-sum, fma two-product): a + b == s + e
+// and a * b == p + e exactly, for finite doubles without overflow/underflow.
+inline void two_sum(double a, double b, double& s, double& e) {
+  s = a + b;
+  const double bv = s - a;
+  const double av = s - bv;
+  e = (a - av) + (b - bv);
+}
+inline void two_product(double a, double b, double& p, double& e) {
+  p = a * b;
+  e = std::fma(a, b, -p);
+}
+
+}  // namespace
+
+int exact_sign_of_sum(const double* terms, int count) {
+  // Shewchuk's Grow-Expansion: adding each term to a non-overlapping expansion
+  // keeps it exact and non-overlapping with components in increasing magnitude,
+  // so the sign of the sum is the sign of the largest non-zero component.
+  double expansion[64];
+  int size = 0;
+  for (int i = 0; i < count; ++i) {
+    double q = terms[i];
+    int out = 0;
+    for (int j = 0; j < size; ++j) {
+      double s, e;
+      two_sum(q, expansion[j], s, e);
+      q = s;
+      if (e != 0.0) expansion[out++] = e;  // zero elimination keeps it short
+    }
+    if (q != 0.0) expansion[out++] = q;
+    size = out;
+  }
+  for (int j = size - 1; j >= 0; --j) {
+    if (expansion[j] > 0.0) return 1;
+    if (expansion[j] < 0.0) return -1;
+  }
+  return 0;
+}
+
+int orient2d(Vec2 a, Vec2 b, Vec2 c) {
+  const double detleft = (a.x - c.x) * (b.y - c.y);
+  const double detright = (a.y - c.y) * (b.x - c.x);
+  const double det = detleft - detright;
+  // Shewchuk's filter (Adaptive Precision Floating-Point Arithmetic, 1997):
+  // with eps = 2^-53, |det - exact| <= ccwerrboundA * (|detleft| + |detright|)
+  // where ccwerrboundA = (3 + 16 eps) eps. Outside that band the double sign
+  // is exact.
+  constexpr double kEps = std::numeric_limits<double>::epsilon() / 2.0;
+  constexpr double kCcwErrBoundA = (3.0 + 16.0 * kEps) * kEps;
+  const double errbound = kCcwErrBoundA * (std::fabs(detleft) + std::fabs(detright));
+  if (det > errbound) return 1;
+  if (-det > errbound) return -1;
+
+  // Slow path: each difference is split exactly into value + rounding error,
+  // the products expanded into 16 exact terms, and their sum's sign found
+  // exactly.
+  double acx, acx_e, bcy, bcy_e, acy, acy_e, bcx, bcx_e;
+  two_sum(a.x, -c.x, acx, acx_e);
+  two_sum(b.y, -c.y, bcy, bcy_e);
+  two_sum(a.y, -c.y, acy, acy_e);
+  two_sum(b.x, -c.x, bcx, bcx_e);
+  const double left[2] = {acx, acx_e};
+  const double left2[2] = {bcy, bcy_e};
+  const double right[2] = {acy, acy_e};
+  const double right2[2] = {bcx, bcx_e};
+  double terms[16];
+  int n = 0;
+  for (int i = 0; i < 2; ++i) {
+    for (int j = 0; j < 2; ++j) {
+      double p, e;
+      two_product(left[i], left2[j], p, e);
+      terms[n++] = p;
+      terms[n++] = e;
+      two_product(right[i], right2[j], p, e);
+      terms[n++] = -p;
+      terms[n++] = -e;
+    }
+  }
+  return exact_sign_of_sum(terms, n);
+}
+
+long double incircle(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const long double adx = (long double)a.x - d.x, ady = (long double)a.y - d.y;
+  const long double bdx = (long double)b.x - d.x, bdy = (long double)b.y - d.y;
+  const long double cdx = (long double)c.x - d.x, cdy = (long double)c.y - d.y;
+  const long double alift = adx * adx + ady * ady;
+  const long double blift = bdx * bdx + bdy * bdy;
+  const long double clift = cdx * cdx + cdy * cdy;
+  return alift * (bdx * cdy - cdx * bdy) + blift * (cdx * ady - adx * cdy) +
+         clift * (adx * bdy - bdx * ady);
+}
+
+bool point_on_segment(Vec2 a, Vec2 b, Vec2 p) {
+  if (orient2d(a, b, p) != 0) return false;
+  return std::fmin(a.x, b.x) <= p.x && p.x <= std::fmax(a.x, b.x) && std::fmin(a.y, b.y) <= p.y &&
+         p.y <= std::fmax(a.y, b.y);
+}
+
+Where point_in_triangle(Vec2 a, Vec2 b, Vec2 c, Vec2 p) {
+  int o = orient2d(a, b, c);
+  if (o == 0) {
+    return (point_on_segment(a, b, p) || point_on_segment(b, c, p) || point_on_segment(c, a, p))
+               ? Where::Boundary
+               : Where::Outside;
+  }
+  const int s1 = orient2d(a, b, p) * o;
+  const int s2 = orient2d(b, c, p) * o;
+  const int s3 = orient2d(c, a, p) * o;
+  if (s1 < 0 || s2 < 0 || s3 < 0) return Where::Outside;
+  if (s1 == 0 || s2 == 0 || s3 == 0) return Where::Boundary;
+  return Where::Inside;
+}
+
+bool segments_cross_properly(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const int o1 = orient2d(a, b, c), o2 = orient2d(a, b, d);
+  const int o3 = orient2d(c, d, a), o4 = orient2d(c, d, b);
+  return o1 * o2 < 0 && o3 * o4 < 0;
+}
+
+bool segments_intersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const int o1 = orient2d(a, b, c), o2 = orient2d(a, b, d);
+  const int o3 = orient2d(c, d, a), o4 = orient2d(c, d, b);
+  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+  return (o1 == 0 && point_on_segment(a, b, c)) || (o2 == 0 && point_on_segment(a, b, d)) ||
+         (o3 == 0 && point_on_segment(c, d, a)) || (o4 == 0 && point_on_segment(c, d, b));
+}
+
+}  // namespace curvetext::detail

@@ -1,0 +1,49 @@
+// Robust geometric predicates for the tessellator. Every decision that the
+// mesh's topology depends on (left/right of a line, inside a triangle, do two
+// segments meet) goes through orient2d, which returns the exact sign of the
+// determinant for any finite double input (no overflow assumed).
+#pragma once
+
+#include "curvetext/geometry.hpp"
+
+namespace curvetext::detail {
+
+// Sign of the orientation determinant |a-c b-c|: +1 when a, b, c turn
+// counter-clockwise (c left of a->b, y up), -1 clockwise, 0 collinear. Exact.
+int orient2d(Vec2 a, Vec2 b, Vec2 c);
+
+// Twice the signed area of (a, b, c) in plain double arithmetic, for
+// magnitudes only (areas, quality measures); never use its sign for topology.
+inline double orient2d_value(Vec2 a, Vec2 b, Vec2 c) { return cross(b - a, c - a); }
+
+// > 0 when d lies strictly inside the circumcircle of the counter-clockwise
+// triangle (a, b, c). Evaluated in long double without an exactness guarantee:
+// it only steers Delaunay flips, whose count is bounded by the caller, so a
+// wrong sign near zero costs mesh quality, never validity.
+long double incircle(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
+
+enum class Where { Outside, Boundary, Inside };
+
+// Position of p relative to the closed triangle (a, b, c) of either orientation;
+// Outside for a degenerate (zero-area) triangle unless p lies on it.
+Where point_in_triangle(Vec2 a, Vec2 b, Vec2 c, Vec2 p);
+
+// True when p lies on the closed segment [a, b].
+bool point_on_segment(Vec2 a, Vec2 b, Vec2 p);
+
+// True when the open segments (a, b) and (c, d) cross at a single point
+// interior to both (a proper crossing).
+bool segments_cross_properly(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
+
+// True when the closed segments [a, b] and [c, d] share any point.
+bool segments_intersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
+
+// Exact sign of a double sum given as non-overlapping-free terms: used by
+// orient2d's slow path and exposed for tests.
+int exact_sign_of_sum(const double* terms, int count);
+
+inline bool boxes_overlap(const Box& a, const Box& b) {
+  return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y;
+}
+
+}  // namespace curvetext::detail

@@ -1,0 +1,347 @@
+#include "tessellate/triangulate.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <numeric>
+#include <unordered_map>
+
+#include "tessellate/predicates.hpp"
+
+namespace curvetext::detail {
+namespace {
+
+std::size_t prev_index(std::size_t i, std::size_t n) { return i == 0 ? n - 1 : i - 1; }
+std::size_t next_index(std::size_t i, std::size_t n) { return i + 1 == n ? 0 : i + 1; }
+
+// True when the direction from vertex `v` towards `target` points into the
+// filled side at v, the filled side being left of prev->v and of v->next.
+bool inside_cone(Vec2 prev, Vec2 v, Vec2 next, Vec2 target) {
+  if (orient2d(prev, v, next) > 0) {  // convex corner: intersection of half-planes
+    return orient2d(v, next, target) > 0 && orient2d(prev, v, target) > 0;
+  }
+  // reflex or straight corner: union of the half-planes
+  return orient2d(v, next, target) > 0 || orient2d(prev, v, target) > 0;
+}
+
+// True when the bridge segment [o, h] meets the edge [p, q] anywhere other than
+// at o or h themselves.
+bool bridge_blocked_by(Vec2 o, Vec2 h, Vec2 p, Vec2 q) {
+  const bool p_end = (p == o || p == h);
+  const bool q_end = (q == o || q == h);
+  if (p_end && q_end) return false;  // the edge joins the bridge's own endpoints
+  if (p_end || q_end) {
+    // Sharing an endpoint: only a collinear overlap counts.
+    const Vec2 shared = p_end ? p : q;
+    const Vec2 other = p_end ? q : p;
+    const Vec2 far = (shared == o) ? h : o;
+    return point_on_segment(o, h, other) || point_on_segment(shared, other, far);
+  }
+  return segments_intersect(o, h, p, q);
+}
+
+bool bridge_valid(const std::vector<Vec2>& outer, std::size_t oi, const std::vector<Vec2>& hole, std::size_t hi,
+                  const std::vector<std::vector<Vec2>>& obstacles) {
+  const Vec2 o = outer[oi];
+  const Vec2 h = hole[hi];
+  const std::size_t no = outer.size(), nh = hole.size();
+  if (no >= 2 && !inside_cone(outer[prev_index(oi, no)], o, outer[next_index(oi, no)], h)) return false;
+  if (nh >= 2 && !inside_cone(hole[prev_index(hi, nh)], h, hole[next_index(hi, nh)], o)) return false;
+  Box bridge_box;
+  bridge_box.add(o);
+  bridge_box.add(h);
+  auto loop_blocks = [&](const std::vector<Vec2>& loop) {
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const Vec2 p = loop[i], q = loop[next_index(i, loop.size())];
+      if (std::max(p.x, q.x) < bridge_box.min.x || std::min(p.x, q.x) > bridge_box.max.x ||
+          std::max(p.y, q.y) < bridge_box.min.y || std::min(p.y, q.y) > bridge_box.max.y)
+        continue;
+      if (bridge_blocked_by(o, h, p, q)) return true;
+    }
+    return false;
+  };
+  if (loop_blocks(outer)) return false;
+  for (const auto& other : obstacles) {
+    if (loop_blocks(other)) return false;
+  }
+  return true;
+}
+
+double squared_distance(Vec2 a, Vec2 b) { return dot(a - b, a - b); }
+
+}  // namespace
+
+std::vector<Vec2> bridge_holes(std::vector<Vec2> outer, std::vector<std::vector<Vec2>> holes) {
+  // Holes are joined left to right (as earcut does) so that a hole's bridge
+  // usually finds the container directly to its left.
+  auto leftmost = [](const std::vector<Vec2>& loop) {
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < loop.size(); ++i) {
+      if (loop[i].x < loop[best].x || (loop[i].x == loop[best].x && loop[i].y < loop[best].y)) best = i;
+    }
+    return best;
+  };
+  holes.erase(std::remove_if(holes.begin(), holes.end(), [](const auto& h) { return h.empty(); }), holes.end());
+  std::sort(holes.begin(), holes.end(),
+            [&](const auto& a, const auto& b) { return a[leftmost(a)].x < b[leftmost(b)].x; });
+
+  for (std::size_t k = 0; k < holes.size(); ++k) {
+    const std::vector<Vec2>& hole = holes[k];
+    if (outer.empty()) {
+      outer = hole;
+      continue;
+    }
+    // The other holes not yet joined are obstacles (joined ones are in outer).
+    std::vector<std::vector<Vec2>> obstacles(holes.begin() + static_cast<std::ptrdiff_t>(k), holes.end());
+
+    std::vector<std::size_t> outer_order(outer.size());
+    std::size_t found_o = outer.size(), found_h = 0;
+    const std::size_t first_h = leftmost(hole);
+    // Candidate hole vertices: the leftmost against every outer vertex, then
+    // the others against their nearest few only, which bounds the work.
+    constexpr std::size_t kNearCandidates = 8;
+    for (std::size_t step = 0; step < hole.size() && found_o == outer.size(); ++step) {
+      const std::size_t hi = (first_h + step) % hole.size();
+      std::iota(outer_order.begin(), outer_order.end(), std::size_t{0});
+      const Vec2 h = hole[hi];
+      const std::size_t limit = step == 0 ? outer.size() : std::min(kNearCandidates, outer.size());
+      std::partial_sort(outer_order.begin(), outer_order.begin() + static_cast<std::ptrdiff_t>(limit),
+                        outer_order.end(), [&](std::size_t a, std::size_t b) {
+                          return squared_distance(outer[a], h) < squared_distance(outer[b], h);
+                        });
+      for (std::size_t c = 0; c < limit; ++c) {
+        if (outer[outer_order[c]] == h || bridge_valid(outer, outer_order[c], hole, hi, obstacles)) {
+          found_o = outer_order[c];
+          found_h = hi;
+          break;
+        }
+      }
+    }
+    if (found_o == outer.size()) {
+      // Garbage input (the hole is not inside, or crosses): join at the closest
+      // pair anyway; check_mesh will report the result.
+      double best = 1e308;
+      for (std::size_t i = 0; i < outer.size(); ++i) {
+        for (std::size_t j = 0; j < hole.size(); ++j) {
+          const double d = squared_distance(outer[i], hole[j]);
+          if (d < best) best = d, found_o = i, found_h = j;
+        }
+      }
+    }
+    std::vector<Vec2> merged;
+    merged.reserve(outer.size() + hole.size() + 2);
+    merged.insert(merged.end(), outer.begin(), outer.begin() + static_cast<std::ptrdiff_t>(found_o) + 1);
+    const bool touching = outer[found_o] == hole[found_h];
+    // A hole touching its container at a vertex is joined at that pinch point
+    // without a zero-length bridge.
+    for (std::size_t j = touching ? 1 : 0; j <= hole.size(); ++j) {
+      merged.push_back(hole[(found_h + j) % hole.size()]);
+    }
+    if (!touching) merged.push_back(outer[found_o]);
+    merged.insert(merged.end(), outer.begin() + static_cast<std::ptrdiff_t>(found_o) + 1, outer.end());
+    outer = std::move(merged);
+  }
+  return outer;
+}
+
+bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& triangles) {
+  std::size_t n = loop.size();
+  if (n < 3) return n == 0;
+  std::vector<std::size_t> prev(n), next(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    prev[i] = prev_index(i, n);
+    next[i] = next_index(i, n);
+  }
+  std::size_t remaining = n;
+  auto unlink = [&](std::size_t i) {
+    next[prev[i]] = next[i];
+    prev[next[i]] = prev[i];
+    --remaining;
+  };
+  bool clean = true;
+  // Consecutive repeats (possible after bridging) carry no area: drop them.
+  std::size_t start = 0;
+  for (std::size_t guard = 0; guard < n && remaining > 2; ++guard) {
+    const std::size_t i = start;
+    if (loop[i] == loop[next[i]]) {
+      start = next[i];
+      unlink(i);
+    } else {
+      start = next[i];
+    }
+  }
+
+  auto is_ear = [&](std::size_t ia, std::size_t ib, std::size_t ic) {
+    const Vec2 a = loop[ia], b = loop[ib], c = loop[ic];
+    if (orient2d(a, b, c) <= 0) return false;
+    const double min_x = std::min({a.x, b.x, c.x}), max_x = std::max({a.x, b.x, c.x});
+    const double min_y = std::min({a.y, b.y, c.y}), max_y = std::max({a.y, b.y, c.y});
+    // The new edge a-c must leave a and c into the filled side of their own
+    // corners (at a repeated vertex only one of the copies' wedges is right)
+    // and meet no loop edge except at a or c.
+    // A diagonal that coincides with the edge beside it closes a lobe at a
+    // repeated vertex; that is fine.
+    const Vec2 before_a = loop[prev[ia]], after_c = loop[next[ic]];
+    if (before_a != c && !inside_cone(before_a, a, b, c)) return false;
+    if (after_c != a && !inside_cone(b, c, after_c, a)) return false;
+    for (std::size_t p = next[ic]; p != ia; p = next[p]) {
+      const std::size_t q = next[p];
+      if (bridge_blocked_by(a, c, loop[p], loop[q])) return false;
+    }
+    const Vec2 corners[3] = {a, b, c};
+    for (std::size_t p = next[ic]; p != ia; p = next[p]) {
+      const Vec2 pp = loop[p];
+      if (pp.x < min_x || pp.x > max_x || pp.y < min_y || pp.y > max_y) continue;
+      int corner = -1;
+      for (int k = 0; k < 3; ++k) {
+        if (pp == corners[k]) corner = k;
+      }
+      if (corner < 0) {
+        // Any other vertex in the closed triangle blocks (strictness avoids
+        // T-junctions and zero-area triangles).
+        if (point_in_triangle(a, b, c, pp) != Where::Outside) return false;
+        continue;
+      }
+      // A repeat of a corner (bridge or pinch vertex): its edges must not
+      // enter the triangle from that corner.
+      const Vec2 v = corners[corner];
+      const Vec2 x = corners[(corner + 1) % 3];
+      const Vec2 y = corners[(corner + 2) % 3];
+      for (std::size_t q : {prev[p], next[p]}) {
+        const Vec2 qq = loop[q];
+        if (qq == a || qq == b || qq == c) continue;  // along a triangle edge
+        const int ox = orient2d(v, x, qq), oy = orient2d(v, y, qq);
+        if (ox > 0 && oy < 0) return false;
+        if (ox == 0 && dot(qq - v, x - v) > 0) return false;
+        if (oy == 0 && dot(qq - v, y - v) > 0) return false;
+      }
+    }
+    return true;
+  };
+
+  std::size_t cur = start;
+  std::size_t stall = 0;
+  while (remaining > 3) {
+    const std::size_t a = prev[cur], c = next[cur];
+    if (is_ear(a, cur, c)) {
+      triangles.push_back({loop[a], loop[cur], loop[c]});
+      unlink(cur);
+      // Closing a lobe at a repeated vertex leaves two copies side by side.
+      if (remaining > 3 && loop[a] == loop[c]) unlink(c);
+      cur = next[c];
+      stall = 0;
+      continue;
+    }
+    cur = c;
+    if (++stall < remaining) continue;
+    // A full turn without an ear: the loop is not weakly simple. Best effort:
+    // clip the first strictly convex corner, or drop a vertex, so that every
+    // iteration removes one vertex and the loop terminates.
+    clean = false;
+    std::size_t pick = cur;
+    bool convex_found = false;
+    for (std::size_t i = 0, p = cur; i < remaining; ++i, p = next[p]) {
+      if (orient2d(loop[prev[p]], loop[p], loop[next[p]]) > 0) {
+        pick = p;
+        convex_found = true;
+        break;
+      }
+    }
+    if (convex_found) triangles.push_back({loop[prev[pick]], loop[pick], loop[next[pick]]});
+    cur = next[pick];
+    unlink(pick);
+    stall = 0;
+  }
+  if (remaining == 3) {
+    const std::size_t a = prev[cur], c = next[cur];
+    const int o = orient2d(loop[a], loop[cur], loop[c]);
+    if (o > 0) {
+      triangles.push_back({loop[a], loop[cur], loop[c]});
+    } else if (o < 0) {
+      clean = false;
+    }
+  }
+  return clean;
+}
+
+void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std::uint32_t, 3>>& triangles,
+                    const std::set<EdgeKey>& constrained) {
+  struct EdgeFaces {
+    std::uint32_t face[2] = {0, 0};
+    int count = 0;
+  };
+  auto pack = [](EdgeKey k) { return (std::uint64_t{k.first} << 32) | k.second; };
+  std::unordered_map<std::uint64_t, EdgeFaces> edges;
+  edges.reserve(triangles.size() * 3);
+  for (std::uint32_t t = 0; t < triangles.size(); ++t) {
+    for (int k = 0; k < 3; ++k) {
+      EdgeFaces& e = edges[pack(edge_key(triangles[t][k], triangles[t][(k + 1) % 3]))];
+      if (e.count < 2) e.face[e.count] = t;
+      ++e.count;
+    }
+  }
+  std::vector<EdgeKey> stack;
+  for (const auto& [key, faces] : edges) {
+    if (faces.count == 2) stack.push_back({static_cast<std::uint32_t>(key >> 32), static_cast<std::uint32_t>(key)});
+  }
+  // Lawson's algorithm terminates with exact predicates; ours are not exact
+  // (incircle in long double), so the flip count is capped to guarantee an end.
+  std::size_t flips_left = 16 * triangles.size() + 64;
+  auto opposite = [&](const std::array<std::uint32_t, 3>& t, std::uint32_t u, std::uint32_t v) {
+    for (int k = 0; k < 3; ++k) {
+      if (t[k] != u && t[k] != v) return t[k];
+    }
+    return t[0];
+  };
+  auto has_directed = [](const std::array<std::uint32_t, 3>& t, std::uint32_t u, std::uint32_t v) {
+    for (int k = 0; k < 3; ++k) {
+      if (t[k] == u && t[(k + 1) % 3] == v) return true;
+    }
+    return false;
+  };
+  auto replace_face = [&](EdgeKey key, std::uint32_t from, std::uint32_t to) {
+    auto it = edges.find(pack(key));
+    if (it == edges.end()) return;
+    for (int k = 0; k < 2; ++k) {
+      if (it->second.face[k] == from) {
+        it->second.face[k] = to;
+        return;
+      }
+    }
+  };
+  while (!stack.empty() && flips_left > 0) {
+    const EdgeKey key = stack.back();
+    stack.pop_back();
+    if (constrained.count(key)) continue;
+    auto it = edges.find(pack(key));
+    if (it == edges.end() || it->second.count != 2) continue;
+    std::uint32_t t1 = it->second.face[0], t2 = it->second.face[1];
+    std::uint32_t a = key.first, b = key.second;
+    if (!has_directed(triangles[t1], a, b)) std::swap(a, b);
+    if (!has_directed(triangles[t1], a, b) || !has_directed(triangles[t2], b, a)) continue;
+    const std::uint32_t c = opposite(triangles[t1], a, b);
+    const std::uint32_t d = opposite(triangles[t2], a, b);
+    if (c == d) continue;
+    const Vec2 pa = points[a], pb = points[b], pc = points[c], pd = points[d];
+    if (orient2d(pa, pd, pc) <= 0 || orient2d(pd, pb, pc) <= 0) continue;  // quad not strictly convex
+    if (incircle(pa, pb, pc, pd) <= 0) continue;
+    const EdgeKey cd = edge_key(c, d);
+    if (edges.count(pack(cd))) continue;  // would duplicate an existing edge
+    triangles[t1] = {a, d, c};
+    triangles[t2] = {d, b, c};
+    edges.erase(it);
+    EdgeFaces new_edge;
+    new_edge.face[0] = t1;
+    new_edge.face[1] = t2;
+    new_edge.count = 2;
+    edges[pack(cd)] = new_edge;
+    replace_face(edge_key(a, d), t2, t1);
+    replace_face(edge_key(b, c), t1, t2);
+    --flips_left;
+    stack.push_back(edge_key(a, d));
+    stack.push_back(edge_key(d, b));
+    stack.push_back(edge_key(b, c));
+    stack.push_back(edge_key(c, a));
+  }
+}
+
+}  // namespace curvetext::detail

@@ -1,0 +1,40 @@
+// Polygon stage of the tessellator (paper 3.1): holes bridged into their
+// container, ear clipping of the resulting weakly simple loops, and Lawson
+// flips towards a constrained Delaunay triangulation.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "curvetext/geometry.hpp"
+
+namespace curvetext::detail {
+
+// Joins each hole (clockwise, y up) into the counter-clockwise `outer` loop by
+// two sibling edges between a close, mutually visible vertex pair, so the
+// polygon with holes becomes one weakly simple loop (bridge vertices repeat).
+std::vector<Vec2> bridge_holes(std::vector<Vec2> outer, std::vector<std::vector<Vec2>> holes);
+
+// Appends counter-clockwise triangles covering the loop (filled side on the
+// left). Works on weakly simple loops with repeated vertices and collinear
+// runs. Always terminates in O(n^2) ear tests per removed vertex at most; on an
+// invalid loop it falls back to best-effort ears (check_mesh reports the damage).
+// Returns false when a fallback was needed.
+bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& triangles);
+
+using EdgeKey = std::pair<std::uint32_t, std::uint32_t>;  // (min index, max index)
+inline EdgeKey edge_key(std::uint32_t a, std::uint32_t b) {
+  return a < b ? EdgeKey{a, b} : EdgeKey{b, a};
+}
+
+// Lawson flips on counter-clockwise index triangles: an edge shared by two
+// triangles whose quad is strictly convex is flipped while the opposite vertex
+// lies inside the circumcircle. Edges in `constrained` are never flipped. The
+// number of flips is bounded (see implementation), so it always terminates.
+void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std::uint32_t, 3>>& triangles,
+                    const std::set<EdgeKey>& constrained);
+
+}  // namespace curvetext::detail

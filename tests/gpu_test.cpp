@@ -1,0 +1,523 @@
+// GPU side: headless EGL, the curve shader's coverage against exact area
+// coverage, framebuffer limits, PNG round trip, option parsing.
+// Meshes are built by hand so these tests do not depend on the tessellator.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "curvetext/color.hpp"
+#include "curvetext/error.hpp"
+#include "curvetext/headless.hpp"
+#include "curvetext/image.hpp"
+#include "curvetext/renderer.hpp"
+#include "curvetext/font.hpp"
+#include "curvetext/shaping.hpp"
+#include "gpu/vertex_format.hpp"
+#include "support/coverage.hpp"
+#include "support/fonts.hpp"
+
+namespace curvetext {
+namespace {
+
+constexpr int kW = 64;
+constexpr int kH = 48;
+
+// One context per test program: llvmpipe is required here, so failing to
+// create it fails the tests that need it.
+HeadlessContext& context() {
+  static std::optional<HeadlessContext> ctx;
+  if (!ctx) ctx.emplace(HeadlessContext::create());
+  return *ctx;
+}
+
+using Coverage = std::vector<double>;  // kW * kH, row 0 at the top
+
+// Renders black on white and returns coverage 1 - value/255 per pixel.
+Coverage render(const Mesh& mesh, AntiAliasing aa, CurveMode mode = CurveMode::Exact) {
+  context();
+  Renderer renderer;
+  renderer.begin(kW, kH, Color{1, 1, 1, 1});
+  DrawBatch batch = DrawBatch::from_mesh(mesh);
+  // Outline units are pixels with y up: y_px = kH - y.
+  renderer.draw(batch, Placement{1.0, 0.0, kH}, DrawOptions{Color{0, 0, 0, 1}, aa, mode});
+  Image img = renderer.read_pixels();
+  Coverage cov(static_cast<std::size_t>(kW) * kH);
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x)
+      cov[static_cast<std::size_t>(y) * kW + x] = 1.0 - img.pixel(x, y)[0] / 255.0;
+  return cov;
+}
+
+// Supersampled reference: `inside` takes screen coordinates (y down).
+Coverage supersample(const std::function<bool(double, double)>& inside, int n) {
+  Coverage cov(static_cast<std::size_t>(kW) * kH);
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      int hits = 0;
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+          if (inside(x + (i + 0.5) / n, y + (j + 0.5) / n)) ++hits;
+      cov[static_cast<std::size_t>(y) * kW + x] = static_cast<double>(hits) / (n * n);
+    }
+  return cov;
+}
+
+Image to_image(const Coverage& c) {
+  Image img(kW, kH);
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      auto v = static_cast<std::uint8_t>(std::lround(255.0 * (1.0 - c[static_cast<std::size_t>(y) * kW + x])));
+      std::uint8_t* p = img.pixel(x, y);
+      p[0] = p[1] = p[2] = v;
+      p[3] = 255;
+    }
+  return img;
+}
+
+// On failure: result, reference and an amplified diff (red = too dark, blue = too light).
+void save_failure(const std::string& name, const Coverage& result, const Coverage& reference) {
+  std::filesystem::create_directories(CURVETEXT_TEST_OUTPUT_DIR);
+  const std::string base = std::string(CURVETEXT_TEST_OUTPUT_DIR) + "/gpu_" + name;
+  write_png(to_image(result), base + "_result.png");
+  write_png(to_image(reference), base + "_reference.png");
+  Image diff(kW, kH);
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      const double d = result[static_cast<std::size_t>(y) * kW + x] - reference[static_cast<std::size_t>(y) * kW + x];
+      std::uint8_t* p = diff.pixel(x, y);
+      const auto m = static_cast<std::uint8_t>(std::min(255.0, std::fabs(d) * 255.0 * 8.0));
+      p[0] = d > 0 ? 255 : static_cast<std::uint8_t>(255 - m);
+      p[1] = static_cast<std::uint8_t>(255 - m);
+      p[2] = d < 0 ? 255 : static_cast<std::uint8_t>(255 - m);
+      p[3] = 255;
+    }
+  write_png(diff, base + "_diff.png");
+}
+
+struct Stats {
+  double mean_edge = 0.0;
+  double max_error = 0.0;
+  std::size_t edge_pixels = 0;
+};
+
+// Error over the edge band: pixels partially covered in either image.
+Stats compare(const Coverage& result, const Coverage& reference) {
+  Stats s;
+  double sum = 0.0;
+  for (std::size_t i = 0; i < result.size(); ++i) {
+    const double e = std::fabs(result[i] - reference[i]);
+    s.max_error = std::max(s.max_error, e);
+    const bool edge = (reference[i] > 0.0 && reference[i] < 1.0) || (result[i] > 0.0 && result[i] < 1.0);
+    if (edge) {
+      sum += e;
+      ++s.edge_pixels;
+    }
+  }
+  s.mean_edge = s.edge_pixels ? sum / static_cast<double>(s.edge_pixels) : 0.0;
+  return s;
+}
+
+// A convex quadrilateral a,b,c,d (counter-clockwise, y up) as 2 triangles and 4 boundary lines.
+Mesh quad_mesh(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  Mesh m;
+  m.points = {a, b, c, d};
+  m.triangles = {{0, 1, 2}, {0, 2, 3}};
+  m.boundary_lines = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  return m;
+}
+
+// Screen rectangle [x0,x1] x [y0,y1] (y down) as a mesh in y-up outline units.
+Mesh rect_mesh(double x0, double x1, double y0, double y1) {
+  return quad_mesh({x0, kH - y1}, {x1, kH - y1}, {x1, kH - y0}, {x0, kH - y0});
+}
+
+double overlap(double a0, double a1, double b0, double b1) {
+  return std::max(0.0, std::min(a1, b1) - std::max(a0, b0));
+}
+
+TEST(Headless, CreatesContextWithRenderer) {
+  HeadlessContext& ctx = context();
+  EXPECT_FALSE(ctx.renderer().empty());
+  EXPECT_FALSE(ctx.version().empty());
+  std::printf("GL_RENDERER: %s\nGL_VERSION: %s\n", ctx.renderer().c_str(), ctx.version().c_str());
+}
+
+TEST(Headless, NoVendorGivesNoDeviceError) {
+  // Re-executed in a fresh process so EGL is loaded with the broken vendor list.
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_EXIT(
+      {
+        setenv("__EGL_VENDOR_LIBRARY_FILENAMES", "/nonexistent", 1);
+        int code = 2;
+        try {
+          HeadlessContext::create();
+        } catch (const Error& e) {
+          code = (e.code() == ErrorCode::NoDevice && std::string(e.what()).rfind("no EGL display", 0) == 0) ? 0 : 3;
+        }
+        std::exit(code);
+      },
+      testing::ExitedWithCode(0), "");
+}
+
+TEST(Coverage, AxisAlignedSquareFullIsExactArea) {
+  const double x0 = 10.25, x1 = 30.75, y0 = 5.5, y1 = 20.125;
+  const Coverage got = render(rect_mesh(x0, x1, y0, y1), AntiAliasing::Full);
+  Coverage want(got.size());
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x)
+      want[static_cast<std::size_t>(y) * kW + x] = overlap(x, x + 1, x0, x1) * overlap(y, y + 1, y0, y1);
+  const Stats s = compare(got, want);
+  std::printf("aligned square full: max error %.5f, mean edge error %.5f over %zu pixels\n", s.max_error,
+              s.mean_edge, s.edge_pixels);
+  const double tol = 1.0 / 255.0 + 0.002;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * kW + x;
+      EXPECT_NEAR(got[i], want[i], tol) << "pixel " << x << "," << y;
+    }
+  if (s.max_error > tol) save_failure("aligned_full", got, want);
+}
+
+TEST(Coverage, AxisAlignedSquareNoneUsesPixelCentres) {
+  const double x0 = 10.25, x1 = 30.75, y0 = 5.25, y1 = 20.125;
+  const Coverage got = render(rect_mesh(x0, x1, y0, y1), AntiAliasing::None);
+  Coverage want(got.size());
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      const double cx = x + 0.5, cy = y + 0.5;
+      want[static_cast<std::size_t>(y) * kW + x] = (cx > x0 && cx < x1 && cy > y0 && cy < y1) ? 1.0 : 0.0;
+    }
+  const Stats s = compare(got, want);
+  EXPECT_EQ(s.max_error, 0.0);
+  if (s.max_error > 0) save_failure("aligned_none", got, want);
+}
+
+TEST(Coverage, RotatedSquareFull) {
+  const double cx = 31.3, cy = 23.7, half = 13.1, angle = M_PI / 6;
+  std::vector<Vec2> screen;
+  for (int k = 0; k < 4; ++k) {
+    const double a = angle + k * M_PI / 2 + M_PI / 4;
+    screen.push_back({cx + half * std::sqrt(2.0) * std::cos(a), cy + half * std::sqrt(2.0) * std::sin(a)});
+  }
+  // Increasing angle in y-down screen space is clockwise once flipped to y up: reverse.
+  auto up = [](Vec2 p) { return Vec2{p.x, kH - p.y}; };
+  const Mesh mesh = quad_mesh(up(screen[3]), up(screen[2]), up(screen[1]), up(screen[0]));
+  ASSERT_GT(cross(mesh.points[1] - mesh.points[0], mesh.points[2] - mesh.points[0]), 0.0);
+  const Coverage got = render(mesh, AntiAliasing::Full);
+  const Coverage want = supersample(
+      [&](double x, double y) {
+        const Vec2 p{x, kH - y};
+        for (int k = 0; k < 4; ++k) {
+          const Vec2 a = mesh.points[static_cast<std::size_t>(k)];
+          const Vec2 b = mesh.points[static_cast<std::size_t>((k + 1) % 4)];
+          if (cross(b - a, p - a) < 0) return false;
+        }
+        return true;
+      },
+      64);
+  const Stats s = compare(got, want);
+  std::printf("rotated square full: mean edge error %.5f, max %.5f over %zu pixels\n", s.mean_edge, s.max_error,
+              s.edge_pixels);
+  EXPECT_LE(s.mean_edge, 0.01);
+  EXPECT_LE(s.max_error, 0.06);
+  if (s.mean_edge > 0.01 || s.max_error > 0.06) save_failure("rotated_full", got, want);
+}
+
+// A region bounded by one conic (p0, control, p2, w) and its chord. The chord
+// lies on a pixel row boundary so the (aliased, non-curve) chord edge is exact.
+struct ConicRegion {
+  Vec2 p0{8, 6}, control{30, 40}, p2{56, 6};  // y up
+  double w = 1.0;
+
+  Mesh mesh() const {
+    Mesh m;
+    m.points = {p0, control, p2};
+    m.curves = {CurvedTriangle{0, 1, 2, w, true}};
+    return m;
+  }
+  bool inside(double sx, double sy) const {
+    const Vec2 p{sx, kH - sy};
+    const double area2 = cross(control - p0, p2 - p0);
+    const double t1 = cross(p - p0, p2 - p0) / area2;
+    const double t2 = cross(control - p0, p - p0) / area2;
+    const double t0 = 1 - t1 - t2;
+    if (t0 < 0 || t1 < 0 || t2 < 0) return false;
+    return t1 * t1 - 4 * w * w * t0 * t2 < 0;
+  }
+};
+
+Stats conic_stats(const ConicRegion& region, CurveMode mode, const std::string& name, Coverage* out = nullptr) {
+  const Coverage got = render(region.mesh(), AntiAliasing::Full, mode);
+  const Coverage want = supersample([&](double x, double y) { return region.inside(x, y); }, 32);
+  const Stats s = compare(got, want);
+  std::printf("conic w=%.2f %s: mean edge error %.5f, max %.5f over %zu pixels\n", region.w,
+              mode == CurveMode::Exact ? "exact" : "paper", s.mean_edge, s.max_error, s.edge_pixels);
+  if (mode == CurveMode::Exact && s.mean_edge > 0.02) save_failure(name, got, want);
+  if (out) *out = got;
+  return s;
+}
+
+TEST(Coverage, ConicExactAndPaper) {
+  for (double w : {1.0, 0.5}) {
+    ConicRegion region;
+    region.w = w;
+    Coverage exact_img, paper_img;
+    const Stats exact = conic_stats(region, CurveMode::Exact, "conic_exact_w" + std::to_string(w), &exact_img);
+    const Stats paper = conic_stats(region, CurveMode::Paper, "conic_paper_w" + std::to_string(w), &paper_img);
+    EXPECT_LE(exact.mean_edge, 0.02) << "w=" << w;
+    const Stats between = compare(paper_img, exact_img);
+    if (w == 1.0) {
+      // Equation 2 is exact for parabolas: only rounding separates the modes.
+      EXPECT_LE(between.max_error, 3.0 / 255.0);
+      EXPECT_NEAR(paper.mean_edge, exact.mean_edge, 0.005);
+    } else {
+      // Equation 2 draws a different curve for w != 1 (DESIGN.md section 3).
+      EXPECT_GT(between.max_error, 0.2);
+      EXPECT_GT(paper.mean_edge, 2.0 * exact.mean_edge);
+    }
+  }
+}
+
+TEST(Coverage, ConcaveConicIsComplementOfConvex) {
+  // The same conic drawn as convex (chord side) and as concave (control side):
+  // inside the hull the two coverages must add up to one in every pixel.
+  ConicRegion region;
+  region.w = 0.7;
+  Mesh convex = region.mesh();
+  Mesh concave = region.mesh();
+  concave.curves[0].convex = false;
+  const Coverage a = render(convex, AntiAliasing::Full);
+  const Coverage b = render(concave, AntiAliasing::Full);
+  const Vec2 p0 = region.p0, c = region.control, p2 = region.p2;
+  const Coverage hull = supersample(
+      [&](double x, double y) {
+        const Vec2 p{x, kH - y};
+        return cross(c - p0, p - p0) <= 0 && cross(p2 - c, p - c) <= 0 && cross(p0 - p2, p - p2) <= 0;
+      },
+      16);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (hull[i] == 1.0) worst = std::max(worst, std::fabs(a[i] + b[i] - 1.0));
+  std::printf("convex + concave inside the hull: worst |sum - 1| %.4f\n", worst);
+  EXPECT_LE(worst, 2.5 / 255.0);
+}
+
+TEST(Coverage, FanIsWatertightUnderTranslucentColor) {
+  // A 24-gon meshed as a fan around an off-centre point: every interior
+  // pixel must be blended exactly once (a double hit would show as 0.75, a
+  // crack as less than 0.5).
+  Mesh m;
+  const Vec2 centre{31.7, 24.3};
+  m.points.push_back({29.1, 22.9});
+  const int n = 24;
+  for (int k = 0; k < n; ++k) {
+    const double a = 2 * M_PI * k / n + 0.1;
+    m.points.push_back({centre.x + 19.3 * std::cos(a), centre.y + 19.3 * std::sin(a)});
+  }
+  for (std::uint32_t k = 0; k < static_cast<std::uint32_t>(n); ++k) {
+    const std::uint32_t a = 1 + k, b = 1 + (k + 1) % static_cast<std::uint32_t>(n);
+    m.triangles.push_back({0, a, b});
+    m.boundary_lines.push_back({a, b});
+  }
+  context();
+  Renderer renderer;
+  renderer.begin(kW, kH, Color{1, 1, 1, 1});
+  DrawBatch batch = DrawBatch::from_mesh(m);
+  renderer.draw(batch, Placement{1.0, 0.0, kH}, DrawOptions{Color{0, 0, 0, 0.5f}, AntiAliasing::Full,
+                                                            CurveMode::Exact});
+  const Image img = renderer.read_pixels();
+  int checked = 0, bad = 0;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      if (std::hypot(x + 0.5 - centre.x, (kH - y - 0.5) - centre.y) > 17.0) continue;
+      ++checked;
+      if (std::abs(img.pixel(x, y)[0] - 128) > 1) ++bad;
+    }
+  EXPECT_GT(checked, 500);
+  EXPECT_EQ(bad, 0);
+}
+
+TEST(Text, GlyphBatchMatchesFreeTypeReference) {
+  context();
+  const Font font = Font::open(test::kDejaVuSans);
+  const ShapedLine line = shape_line(font, "Hamburgefonstiv 0123");
+  const FontMetrics fm = font.metrics();
+  const double ppem = 24.0;
+  const double scale = ppem / fm.units_per_em;
+  const double margin = 4.0;
+  const Placement placement{scale, margin, margin + fm.ascender * scale};
+  const int width = static_cast<int>(std::ceil(2 * margin + line.advance * scale));
+  const int height = static_cast<int>(std::ceil(2 * margin + (fm.ascender - fm.descender) * scale));
+
+  GlyphCache cache;
+  Renderer renderer;
+  DrawBatch batch = DrawBatch::from_text(cache, font, line, ppem);
+  EXPECT_GT(batch.vertex_count(), 0u);
+  EXPECT_EQ(batch.gpu_bytes(), batch.vertex_count() * sizeof(gpu::Vertex));
+  renderer.begin(width, height, Color{1, 1, 1, 1});
+  renderer.draw(batch, placement, DrawOptions{});
+  const test::Coverage got = test::coverage_from_black_on_white(renderer.read_pixels());
+
+  // The same glyphs as one outline, at the same pen positions.
+  Outline all;
+  double pen_x = 0, pen_y = 0;
+  for (const ShapedGlyph& g : line.glyphs) {
+    const Vec2 origin{pen_x + g.x_offset, pen_y + g.y_offset};
+    const Outline glyph = font.glyph_outline(g.glyph_id);
+    for (Contour c : glyph.contours()) {
+      for (Segment& seg : c.segments)
+        for (Vec2& p : seg.p) p = p + origin;
+      all.contours().push_back(c);
+    }
+    pen_x += g.x_advance;
+    pen_y += g.y_advance;
+  }
+  const test::Coverage want = test::freetype_reference(all, placement, width, height, 8);
+  const test::CoverageStats s = test::compare(got, want);
+  std::printf("text 24px: edge mean %.4f, max %.4f, ink ratio %.4f over %zu edge pixels\n", s.edge_mean_abs,
+              s.max_abs, s.ink_ratio, s.edge_pixels);
+  // Known weakness (measured: edge mean 0.021, ink 1.05 at 24 px): interior
+  // triangles next to a curve's chord or leg do not evaluate the curve, so
+  // pixel centres just outside a curved triangle but within a pixel of the
+  // curve are drawn fully covered (too heavy near curve end points, mostly
+  // in counters). Straight-edged glyphs match to 0.001. Tighten when fixed.
+  EXPECT_LE(s.edge_mean_abs, 0.03);
+  EXPECT_NEAR(s.ink_ratio, 1.0, 0.07);
+  if (s.edge_mean_abs > 0.03 || std::fabs(s.ink_ratio - 1.0) > 0.07) test::write_comparison("gpu_text", got, want);
+
+  // A second batch of the same text hits the cache for every glyph.
+  const GlyphCache::Stats before = cache.stats();
+  DrawBatch again = DrawBatch::from_text(cache, font, line, ppem);
+  const GlyphCache::Stats after = cache.stats();
+  EXPECT_EQ(after.misses, before.misses);
+  EXPECT_EQ(after.hits - before.hits, line.glyphs.size());
+  EXPECT_EQ(again.vertex_count(), batch.vertex_count());
+}
+
+TEST(Text, CacheEvictsWithinBudget) {
+  context();
+  const Font font = Font::open(test::kDejaVuSans);
+  const ShapedLine line = shape_line(font, "abcdefghijklmnopqrstuvwxyz");
+  GlyphCache cache(8 * 1024);
+  DrawBatch batch = DrawBatch::from_text(cache, font, line, 16.0);
+  EXPECT_LE(cache.stats().bytes, 8u * 1024u + 0u);
+  EXPECT_LT(cache.stats().glyphs, line.glyphs.size());
+  EXPECT_GT(batch.vertex_count(), 0u);
+}
+
+TEST(Renderer, SizeAboveGlMaximumIsInvalidArgument) {
+  context();
+  Renderer renderer;
+  try {
+    renderer.begin(1 << 20, 4, Color{1, 1, 1, 1});
+    FAIL() << "expected InvalidArgument";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::InvalidArgument) << e.what();
+  }
+  try {
+    renderer.begin(0, 4, Color{1, 1, 1, 1});
+    FAIL() << "expected InvalidArgument";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::InvalidArgument) << e.what();
+  }
+  // Still usable afterwards.
+  renderer.begin(8, 8, Color{1, 0, 0, 0.5f});
+  Image img = renderer.read_pixels();
+  EXPECT_EQ(img.pixel(3, 3)[0], 255);
+  EXPECT_NEAR(img.pixel(3, 3)[3], 128, 1);
+}
+
+TEST(Renderer, FringeVerticesAreZeroAreaWithoutFullAa) {
+  const auto packed = gpu::pack_mesh(rect_mesh(1, 5, 1, 5));
+  // 2 interior triangles + 4 fringe quads of 2 triangles.
+  EXPECT_EQ(packed.size(), 3u * (2 + 8));
+  for (const auto& v : packed) EXPECT_EQ(v.info[0], 1.0f);  // every triangle touches an edge
+}
+
+TEST(Png, RoundTrip) {
+  Image img(7, 5);
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      std::uint8_t* p = img.pixel(x, y);
+      p[0] = static_cast<std::uint8_t>(x * 30);
+      p[1] = static_cast<std::uint8_t>(y * 50);
+      p[2] = static_cast<std::uint8_t>(x * y);
+      p[3] = static_cast<std::uint8_t>(255 - x);
+    }
+  std::filesystem::create_directories(CURVETEXT_TEST_OUTPUT_DIR);
+  const std::string path = std::string(CURVETEXT_TEST_OUTPUT_DIR) + "/gpu_png_roundtrip.png";
+  write_png(img, path);
+  const Image back = read_png(path);
+  EXPECT_EQ(back.width, img.width);
+  EXPECT_EQ(back.height, img.height);
+  EXPECT_EQ(back.rgba, img.rgba);
+}
+
+TEST(Png, ErrorsNameThePath) {
+  try {
+    read_png("/nonexistent/dir/x.png");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::Io);
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/dir/x.png"), std::string::npos);
+  }
+  try {
+    write_png(Image(2, 2), "/nonexistent/dir/y.png");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::Io);
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/dir/y.png"), std::string::npos);
+  }
+}
+
+TEST(Parse, Colors) {
+  const Color c = parse_color("#ff8000");
+  EXPECT_FLOAT_EQ(c.r, 1.0f);
+  EXPECT_NEAR(c.g, 128 / 255.0f, 1e-6);
+  EXPECT_FLOAT_EQ(c.b, 0.0f);
+  EXPECT_FLOAT_EQ(c.a, 1.0f);
+  EXPECT_NEAR(parse_color("#0f0").g, 1.0f, 1e-6);
+  EXPECT_NEAR(parse_color("#00000080").a, 128 / 255.0f, 1e-6);
+  EXPECT_FLOAT_EQ(parse_color("transparent").a, 0.0f);
+  EXPECT_FLOAT_EQ(parse_color("white").b, 1.0f);
+  for (const char* bad : {"", "#", "#12", "#12345", "#gggggg", "purple", "ff0000", "#1234567"}) {
+    try {
+      parse_color(bad);
+      FAIL() << bad;
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ErrorCode::InvalidArgument) << bad;
+    }
+  }
+}
+
+TEST(Parse, ModesAndErrors) {
+  EXPECT_EQ(parse_antialiasing("none"), AntiAliasing::None);
+  EXPECT_EQ(parse_antialiasing("curves"), AntiAliasing::Curves);
+  EXPECT_EQ(parse_antialiasing("full"), AntiAliasing::Full);
+  EXPECT_EQ(parse_curve_mode("exact"), CurveMode::Exact);
+  EXPECT_EQ(parse_curve_mode("paper"), CurveMode::Paper);
+  for (const char* bad : {"", "Full", "msaa", "vbaa2"}) {
+    try {
+      parse_antialiasing(bad);
+      FAIL() << bad;
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ErrorCode::InvalidArgument);
+    }
+  }
+  try {
+    parse_curve_mode("loop-blinn");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::InvalidArgument);
+  }
+}
+
+}  // namespace
+}  // namespace curvetext

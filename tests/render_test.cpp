@@ -1,0 +1,254 @@
+// Rendering through the whole pipeline (shaping -> glyph meshes -> GLES2 curve
+// shader on llvmpipe -> pixels), compared with exact area coverage of the same
+// outlines from FreeType's AA rasterizer, supersampled (DESIGN.md section 6).
+// Failing cases write result, reference and diff images to build/test-output.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <numbers>
+#include <string>
+
+#include "curvetext/curves.hpp"
+#include "curvetext/error.hpp"
+#include "curvetext/font.hpp"
+#include "curvetext/headless.hpp"
+#include "curvetext/mesh.hpp"
+#include "curvetext/renderer.hpp"
+#include "curvetext/text_image.hpp"
+#include "support/coverage.hpp"
+#include "support/fonts.hpp"
+
+namespace curvetext {
+namespace {
+
+// One GL context and renderer for the whole program.
+struct Gpu {
+  HeadlessContext context = HeadlessContext::create();
+  Renderer renderer;
+  GlyphCache cache;
+};
+Gpu& gpu() {
+  static std::unique_ptr<Gpu> instance = std::make_unique<Gpu>();
+  return *instance;
+}
+
+// The shaped line as one outline in font units, glyphs at their pen positions
+// exactly as DrawBatch::from_text places them.
+Outline line_outline(const Font& font, const ShapedLine& line) {
+  Outline all;
+  double pen_x = 0, pen_y = 0;
+  for (const ShapedGlyph& g : line.glyphs) {
+    const Vec2 origin{pen_x + g.x_offset, pen_y + g.y_offset};
+    const Outline glyph = font.glyph_outline(g.glyph_id);
+    for (Contour c : glyph.contours()) {
+      for (Segment& s : c.segments)
+        for (Vec2& p : s.p) p = p + origin;
+      all.contours().push_back(std::move(c));
+    }
+    pen_x += g.x_advance;
+    pen_y += g.y_advance;
+  }
+  return all;
+}
+
+struct Case {
+  const char* font_name;
+  const char* font_path;
+  const char* script;
+  const char* text;
+  double size;
+};
+
+std::string case_name(const Case& c, const char* mode) {
+  std::string n = std::string(c.font_name) + "_" + c.script + "_" + std::to_string(static_cast<int>(c.size)) + "px_" + mode;
+  return n;
+}
+
+struct Rendered {
+  test::Coverage result;
+  test::Coverage reference;
+  test::CoverageStats stats;
+};
+
+Rendered render_case(const Case& c, AntiAliasing aa) {
+  Font font = Font::open(c.font_path);
+  TextImageOptions options;
+  options.size_px = c.size;
+  options.antialiasing = aa;
+  const TextImageLayout layout = layout_text_image(font, c.text, options);
+  const Image image = render_text_image(gpu().renderer, gpu().cache, font, layout, options);
+  Rendered r;
+  r.result = test::coverage_from_black_on_white(image);
+  // 16x supersampling below 48 px, 4x above: FreeType's chord and 1/64 px
+  // rounding errors shrink by that factor.
+  const int supersample = c.size < 48 ? 16 : 4;
+  r.reference = test::freetype_reference(line_outline(font, layout.line), layout.placement, layout.width,
+                                         layout.height, supersample);
+  r.stats = test::compare(r.result, r.reference);
+  return r;
+}
+
+const char* kLatin = "Hamburgefontsiv";
+const char* kGreek = "Καλημέρα κόσμε";
+const char* kCyrillic = "Съешь ещё этих";
+
+std::vector<Case> all_cases() {
+  std::vector<Case> cases;
+  const struct {
+    const char* name;
+    const char* path;
+  } fonts[] = {{"DejaVuSans", test::kDejaVuSans}, {"NotoSans", test::kNotoSans}, {"NimbusRoman", test::kNimbusRoman}};
+  const struct {
+    const char* name;
+    const char* text;
+  } scripts[] = {{"Latin", kLatin}, {"Greek", kGreek}, {"Cyrillic", kCyrillic}};
+  for (const auto& f : fonts)
+    for (const auto& s : scripts)
+      for (double size : {12.0, 16.0, 24.0, 48.0, 200.0}) cases.push_back({f.name, f.path, s.name, s.text, size});
+  return cases;
+}
+
+class FullAntialiasing : public ::testing::TestWithParam<Case> {};
+
+// Issue targets: edge-band mean error <= 0.04 at 12-16 px, <= 0.03 from 24 px
+// up; ink within 3%.
+TEST_P(FullAntialiasing, MatchesExactCoverage) {
+  const Case& c = GetParam();
+  const Rendered r = render_case(c, AntiAliasing::Full);
+  const double limit = c.size <= 16 ? 0.04 : 0.03;
+  std::printf("%-34s edge %.4f  mean %.5f  max %.3f  ink %.4f\n", case_name(c, "full").c_str(),
+              r.stats.edge_mean_abs, r.stats.mean_abs, r.stats.max_abs, r.stats.ink_ratio);
+  const bool ok = r.stats.edge_mean_abs <= limit && std::abs(r.stats.ink_ratio - 1.0) <= 0.03;
+  if (!ok) test::write_comparison(case_name(c, "full"), r.result, r.reference);
+  EXPECT_LE(r.stats.edge_mean_abs, limit);
+  EXPECT_NEAR(r.stats.ink_ratio, 1.0, 0.03);
+}
+
+INSTANTIATE_TEST_SUITE_P(Strings, FullAntialiasing, ::testing::ValuesIn(all_cases()),
+                         [](const ::testing::TestParamInfo<Case>& param) { return case_name(param.param, "full"); });
+
+// `curves` (the paper's single pass) antialiases curved edges only, so it is
+// judged by ink and a looser edge error; it must not beat `full` on text with
+// straight stems.
+TEST(CurvesAntialiasing, CloseInInkAndWorseThanFullOnStraightEdges) {
+  for (double size : {16.0, 48.0}) {
+    const Case c{"DejaVuSans", test::kDejaVuSans, "Latin", kLatin, size};
+    const Rendered curves = render_case(c, AntiAliasing::Curves);
+    const Rendered full = render_case(c, AntiAliasing::Full);
+    std::printf("%-34s edge %.4f  ink %.4f (full: edge %.4f)\n", case_name(c, "curves").c_str(),
+                curves.stats.edge_mean_abs, curves.stats.ink_ratio, full.stats.edge_mean_abs);
+    if (std::abs(curves.stats.ink_ratio - 1.0) > 0.06 || curves.stats.edge_mean_abs > 0.2)
+      test::write_comparison(case_name(c, "curves"), curves.result, curves.reference);
+    EXPECT_NEAR(curves.stats.ink_ratio, 1.0, 0.06);
+    EXPECT_LE(curves.stats.edge_mean_abs, 0.2);
+    EXPECT_GT(curves.stats.edge_mean_abs, full.stats.edge_mean_abs);
+  }
+}
+
+// `none` is the bare in/out test: every pixel is fully in or out, and the ink
+// is right on average.
+TEST(NoAntialiasing, BinaryPixelsWithRightInk) {
+  for (double size : {24.0, 200.0}) {
+    const Case c{"NotoSans", test::kNotoSans, "Latin", kLatin, size};
+    const Rendered r = render_case(c, AntiAliasing::None);
+    std::size_t partial = 0;
+    for (float v : r.result.value)
+      if (v > 0.002f && v < 0.998f) ++partial;
+    std::printf("%-34s ink %.4f partial pixels %zu\n", case_name(c, "none").c_str(), r.stats.ink_ratio, partial);
+    EXPECT_EQ(partial, 0u);
+    EXPECT_NEAR(r.stats.ink_ratio, 1.0, size < 48 ? 0.08 : 0.02);
+    if (::testing::Test::HasFailure()) test::write_comparison(case_name(c, "none"), r.result, r.reference);
+  }
+}
+
+// --- A circle from four rational quadratic arcs (w = sqrt(2)/2) ---------------
+
+Outline circle(double r) {
+  const double w = std::numbers::sqrt2 / 2;
+  Outline o;
+  o.move_to({r, 0});
+  o.conic_to({r, r}, {0, r}, w);
+  o.conic_to({-r, r}, {-r, 0}, w);
+  o.conic_to({-r, -r}, {0, -r}, w);
+  o.conic_to({r, -r}, {r, 0}, w);
+  o.close();
+  return o;
+}
+
+// Largest radial offset of the drawn circle from the true one, in pixels, from
+// exact band areas: the coverage summed over one pixel row (column) is the
+// drawn area in that band; the true area of a circle in a band has a closed
+// form. The difference over the band's two edges is the horizontal (vertical)
+// edge offset, converted to a radial offset with the edge's angle. Rows are
+// used where the edge is within 45 degrees of vertical, columns elsewhere.
+double max_radial_offset(const test::Coverage& cov, double cx, double cy, double r) {
+  auto band_area = [&](double t0, double t1) {  // area of the circle with t0 < (coord - centre) < t1
+    auto f = [&](double t) {
+      t = std::clamp(t, -r, r);
+      return t * std::sqrt(r * r - t * t) + r * r * std::asin(t / r);
+    };
+    return f(t1) - f(t0);
+  };
+  double worst = 0.0;
+  const double limit = r * std::numbers::sqrt2 / 2 - 1.0;
+  for (int y = 0; y < cov.height; ++y) {
+    const double t0 = y - cy, t1 = y + 1 - cy;
+    if (std::max(std::abs(t0), std::abs(t1)) > limit) continue;
+    double sum = 0;
+    for (int x = 0; x < cov.width; ++x) sum += cov.at(x, y);
+    const double dx = (sum - band_area(t0, t1)) / 2.0;
+    const double mid = 0.5 * (t0 + t1);
+    worst = std::max(worst, std::abs(dx) * std::sqrt(r * r - mid * mid) / r);
+  }
+  for (int x = 0; x < cov.width; ++x) {
+    const double t0 = x - cx, t1 = x + 1 - cx;
+    if (std::max(std::abs(t0), std::abs(t1)) > limit) continue;
+    double sum = 0;
+    for (int y = 0; y < cov.height; ++y) sum += cov.at(x, y);
+    const double dy = (sum - band_area(t0, t1)) / 2.0;
+    const double mid = 0.5 * (t0 + t1);
+    worst = std::max(worst, std::abs(dy) * std::sqrt(r * r - mid * mid) / r);
+  }
+  return worst;
+}
+
+test::Coverage draw_circle(double radius, CurveMode mode, double cx, double cy, int size) {
+  const Mesh mesh = build_mesh(circle(radius));
+  DrawBatch batch = DrawBatch::from_mesh(mesh);
+  gpu().renderer.begin(size, size, Color{1, 1, 1, 1});
+  DrawOptions options;
+  options.curve_mode = mode;
+  gpu().renderer.draw(batch, Placement{1.0, cx, cy}, options);
+  return test::coverage_from_black_on_white(gpu().renderer.read_pixels());
+}
+
+TEST(Circle, ExactModeWithinAnEighthPixelAtRadius400) {
+  const double r = 400, cx = 432.3, cy = 431.6;
+  const test::Coverage cov = draw_circle(r, CurveMode::Exact, cx, cy, 864);
+  const double offset = max_radial_offset(cov, cx, cy, r);
+  std::printf("circle r=400 exact mode: largest radial offset %.4f px\n", offset);
+  const test::Coverage ref = test::sampled_reference(
+      [&](double x, double y) { return (x - cx) * (x - cx) + (y - cy) * (y - cy) < r * r; }, 864, 864, 16);
+  const test::CoverageStats s = test::compare(cov, ref);
+  std::printf("circle r=400 exact mode: edge error %.4f, max %.3f, ink %.6f\n", s.edge_mean_abs, s.max_abs,
+              s.ink_ratio);
+  if (offset > 0.125) test::write_comparison("circle-exact", cov, ref);
+  EXPECT_LE(offset, 0.125);
+  EXPECT_LE(s.edge_mean_abs, 0.03);
+}
+
+TEST(Circle, PaperModeIsOffByPercentOfTheRadius) {
+  const double r = 400, cx = 432.3, cy = 431.6;
+  const test::Coverage cov = draw_circle(r, CurveMode::Paper, cx, cy, 864);
+  const double offset = max_radial_offset(cov, cx, cy, r);
+  // Recorded, not hidden: equation 2 of the paper is exact only for w = 1
+  // (DESIGN.md section 3 predicts up to 2.1% of the radius, ~8 px here).
+  std::printf("circle r=400 paper mode: largest radial offset %.3f px (%.2f%% of r)\n", offset, 100 * offset / r);
+  RecordProperty("paper_mode_radial_offset_px", std::to_string(offset));
+  EXPECT_GT(offset, 1.0);
+}
+
+}  // namespace
+}  // namespace curvetext

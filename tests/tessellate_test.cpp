@@ -1,0 +1,351 @@
+// Tessellator: meshes of synthetic outlines checked against the invariants of
+// DESIGN.md section 4 and against areas computed independently here.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include "curvetext/curves.hpp"
+#include "curvetext/error.hpp"
+#include "curvetext/mesh.hpp"
+#include "curvetext/outline.hpp"
+#include "tessellate/predicates.hpp"
+
+namespace curvetext {
+namespace {
+
+// Builds the mesh and checks it; returns the mesh for further assertions.
+Mesh build_and_check(const Outline& outline, double expected_area, double rel = 1e-9) {
+  const MeshOptions options;
+  Mesh mesh = build_mesh(outline, options);
+  const MeshCheck check = check_mesh(mesh, to_quadratic_outline(outline, options.cubic_tolerance));
+  for (const std::string& p : check.problems) ADD_FAILURE() << p;
+  EXPECT_TRUE(check.ok());
+  EXPECT_TRUE(check.watertight);
+  EXPECT_EQ(check.hull_overlaps, 0u);
+  EXPECT_EQ(check.degenerate, 0u);
+  EXPECT_NEAR(check.area_outline, expected_area, rel * std::max(1.0, std::fabs(expected_area)));
+  EXPECT_NEAR(mesh_area(mesh), expected_area, rel * std::max(1.0, std::fabs(expected_area)));
+  return mesh;
+}
+
+void add_polygon(Outline& o, const std::vector<Vec2>& pts) {
+  o.move_to(pts[0]);
+  for (std::size_t i = 1; i < pts.size(); ++i) o.line_to(pts[i]);
+  o.close();
+}
+
+std::vector<Vec2> square(double x0, double y0, double size, bool ccw) {
+  std::vector<Vec2> p = {{x0, y0}, {x0 + size, y0}, {x0 + size, y0 + size}, {x0, y0 + size}};
+  if (!ccw) std::reverse(p.begin(), p.end());
+  return p;
+}
+
+// Circle of radius r from four quarter arcs (rational conics, w = sqrt(2)/2).
+void add_circle(Outline& o, Vec2 c, double r, bool ccw) {
+  const double w = std::numbers::sqrt2 / 2.0;
+  const double s = ccw ? 1.0 : -1.0;
+  o.move_to({c.x + r, c.y});
+  o.conic_to({c.x + r, c.y + s * r}, {c.x, c.y + s * r}, w);
+  o.conic_to({c.x - r, c.y + s * r}, {c.x - r, c.y}, w);
+  o.conic_to({c.x - r, c.y - s * r}, {c.x, c.y - s * r}, w);
+  o.conic_to({c.x + r, c.y - s * r}, {c.x + r, c.y}, w);
+  o.close();
+}
+
+// Reference area of an outline by fine polylines (independent of the closed
+// conic area formulas): the signed shoelace area of each contour flattened.
+double polyline_area(const Contour& contour, int steps_per_conic) {
+  double area = 0.0;
+  for (const Segment& s : contour.segments) {
+    const int steps = s.kind == Segment::Kind::Line ? 1 : steps_per_conic;
+    Vec2 prev = s.p[0];
+    for (int i = 1; i <= steps; ++i) {
+      const Vec2 p = evaluate(s, static_cast<double>(i) / steps);
+      area += 0.5 * cross(prev, p);
+      prev = p;
+    }
+  }
+  return area;
+}
+
+TEST(Predicates, Orient2dIsExactNearDegeneracy) {
+  using detail::orient2d;
+  EXPECT_EQ(orient2d({0, 0}, {1, 1}, {2, 2}), 0);
+  EXPECT_EQ(orient2d({0, 0}, {1, 0}, {0.5, 1e-300}), 1);
+  // Points on the line y = x with a tiny perturbation that double
+  // arithmetic loses in the naive determinant.
+  const double a = 0.1, b = 0.7;
+  EXPECT_EQ(orient2d({a, a}, {b, b}, {0.3, 0.3}), detail::orient2d({a, a}, {b, b}, {0.3, 0.3}));
+  EXPECT_EQ(orient2d({1e15, 1e15}, {1e15 + 1, 1e15 + 1}, {1e15 + 2, 1e15 + 2}), 0);
+  EXPECT_EQ(orient2d({1e15, 1e15}, {1e15 + 2, 1e15 + 2}, {1e15 + 1, 1e15 + 1 + 0.125}), 1);
+  EXPECT_EQ(orient2d({1e15, 1e15}, {1e15 + 2, 1e15 + 2}, {1e15 + 1, 1e15 + 1 - 0.125}), -1);
+  // Classic failure case of naive orientation (Kettner et al.): a point near
+  // the line through two others, swept over a tiny grid; the exact answer
+  // must be antisymmetric under swapping a and b.
+  for (int i = 0; i < 64; ++i) {
+    for (int j = 0; j < 64; ++j) {
+      const Vec2 p{0.5 + i * std::ldexp(1.0, -53), 0.5 + j * std::ldexp(1.0, -53)};
+      const Vec2 q{12, 12}, r{24, 24};
+      EXPECT_EQ(orient2d(p, q, r), -orient2d(q, p, r));
+      EXPECT_EQ(orient2d(p, q, r), i == j ? 0 : (j > i ? 1 : -1));
+    }
+  }
+}
+
+TEST(BuildMesh, SquareBothOrientations) {
+  for (bool ccw : {true, false}) {
+    Outline o;
+    add_polygon(o, square(0, 0, 10, ccw));
+    const Mesh mesh = build_and_check(o, 100.0);
+    EXPECT_EQ(mesh.triangles.size(), 2u);
+    EXPECT_EQ(mesh.points.size(), 4u);
+    EXPECT_EQ(mesh.boundary_lines.size(), 4u);
+    EXPECT_TRUE(mesh.curves.empty());
+  }
+}
+
+TEST(BuildMesh, SquareWithHole) {
+  for (bool outer_ccw : {true, false}) {
+    Outline o;
+    add_polygon(o, square(0, 0, 10, outer_ccw));
+    add_polygon(o, square(3, 4, 4, !outer_ccw));
+    const Mesh mesh = build_and_check(o, 100.0 - 16.0);
+    // A polygon with n vertices and h holes has n + 2h - 2 triangles.
+    EXPECT_EQ(mesh.triangles.size(), 8u);
+    EXPECT_EQ(mesh.points.size(), 8u);
+  }
+}
+
+TEST(BuildMesh, NestedSameOrientationIsFilledByNonzero) {
+  Outline o;
+  add_polygon(o, square(0, 0, 10, true));
+  add_polygon(o, square(3, 4, 4, true));
+  const Mesh mesh = build_and_check(o, 100.0);
+  EXPECT_EQ(mesh.triangles.size(), 2u);
+}
+
+TEST(BuildMesh, IslandInsideHole) {
+  // A ring with an island: outer, hole, and a filled square inside the hole.
+  Outline o;
+  add_polygon(o, square(0, 0, 30, true));
+  add_polygon(o, square(5, 5, 20, false));
+  add_polygon(o, square(10, 10, 10, true));
+  build_and_check(o, 900.0 - 400.0 + 100.0);
+}
+
+TEST(BuildMesh, CircleFromRationalConics) {
+  for (bool ccw : {true, false}) {
+    Outline o;
+    add_circle(o, {3, -2}, 5.0, ccw);
+    const Mesh mesh = build_and_check(o, std::numbers::pi * 25.0);
+    EXPECT_EQ(mesh.curves.size(), 4u);
+    EXPECT_EQ(mesh.triangles.size(), 2u);
+    for (const CurvedTriangle& c : mesh.curves) EXPECT_TRUE(c.convex);
+  }
+}
+
+TEST(BuildMesh, SquareWithCircularHole) {
+  Outline o;
+  add_polygon(o, square(-10, -10, 20, true));
+  add_circle(o, {0, 0}, 5.0, false);
+  const Mesh mesh = build_and_check(o, 400.0 - std::numbers::pi * 25.0);
+  EXPECT_EQ(mesh.curves.size(), 4u);
+  // Seen from the filled side the hole's arcs bulge inwards: concave.
+  for (const CurvedTriangle& c : mesh.curves) EXPECT_FALSE(c.convex);
+}
+
+// A TrueType-like 'O': outer and inner ellipses from parabolic conics with
+// implied on-curve points, in opposite directions.
+void add_parabolic_ellipse(Outline& o, Vec2 c, double rx, double ry, int pieces, bool ccw) {
+  std::vector<Vec2> controls;
+  for (int i = 0; i < pieces; ++i) {
+    const double t = 2.0 * std::numbers::pi * i / pieces * (ccw ? 1.0 : -1.0);
+    controls.push_back({c.x + rx * std::cos(t), c.y + ry * std::sin(t)});
+  }
+  auto mid = [&](int i) { return (controls[i % pieces] + controls[(i + 1) % pieces]) * 0.5; };
+  o.move_to(mid(0));
+  for (int i = 1; i <= pieces; ++i) o.conic_to(controls[i % pieces], mid(i));
+  o.close();
+}
+
+TEST(BuildMesh, GlyphLikeO) {
+  Outline o;
+  add_parabolic_ellipse(o, {300, 350}, 280, 360, 8, true);
+  add_parabolic_ellipse(o, {300, 350}, 180, 270, 8, false);
+  const double expected = polyline_area(o.contours()[0], 20000) + polyline_area(o.contours()[1], 20000);
+  const Mesh mesh = build_and_check(o, expected, 1e-7);
+  bool any_convex = false, any_concave = false;
+  for (const CurvedTriangle& c : mesh.curves) (c.convex ? any_convex : any_concave) = true;
+  EXPECT_TRUE(any_convex);
+  EXPECT_TRUE(any_concave);
+}
+
+TEST(BuildMesh, DuplicatedAndCollinearPoints) {
+  Outline o;
+  add_polygon(o, {{0, 0}, {0, 0}, {5, 0}, {10, 0}, {10, 0}, {10, 5}, {10, 10}, {5, 10}, {0, 10}, {0, 10}, {0, 5}});
+  const Mesh mesh = build_and_check(o, 100.0);
+  for (const auto& t : mesh.triangles) {
+    EXPECT_GT(detail::orient2d(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]), 0);
+  }
+}
+
+TEST(BuildMesh, NearlyCollinearVerticesKeepArea) {
+  Outline o;
+  add_polygon(o, {{0, 0}, {5, 1e-7}, {10, 0}, {10, 10}, {5, 10 - 1e-7}, {0, 10}});
+  build_and_check(o, 100.0 - 1e-6 + 1e-6 * 0.0 - 0.0, 1e-8);
+}
+
+TEST(BuildMesh, TinyAndZeroAreaContoursAreDropped) {
+  Outline o;
+  o.move_to({1, 1});
+  o.close();
+  o.move_to({2, 2});
+  o.line_to({3, 3});
+  o.close();
+  add_polygon(o, {{0, 0}, {1, 1}, {2, 2}});  // collinear: zero area
+  add_polygon(o, {{5, 5}, {6, 5}, {5, 5}});  // a spike
+  const Mesh mesh = build_mesh(o);
+  EXPECT_TRUE(mesh.empty());
+  const MeshCheck check = check_mesh(mesh, o);
+  EXPECT_TRUE(check.ok()) << (check.problems.empty() ? "" : check.problems[0]);
+}
+
+TEST(BuildMesh, EmptyOutline) {
+  const Outline o;
+  const Mesh mesh = build_mesh(o);
+  EXPECT_TRUE(mesh.empty());
+  EXPECT_TRUE(check_mesh(mesh, o).ok());
+}
+
+TEST(BuildMesh, NonFiniteInputThrows) {
+  Outline o;
+  add_polygon(o, {{0, 0}, {std::nan(""), 0}, {1, 1}});
+  try {
+    build_mesh(o);
+    FAIL() << "expected Error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::Geometry);
+  }
+  Outline inf;
+  inf.move_to({0, 0});
+  inf.conic_to({1, 1}, {2, 0}, std::numeric_limits<double>::infinity());
+  EXPECT_THROW(build_mesh(inf), Error);
+}
+
+TEST(BuildMesh, ConicHullOverlappingAnEdgeIsSubdivided) {
+  // The concave top arc's control triangle reaches below the bottom edge,
+  // though the arc itself stays above it.
+  Outline o;
+  o.move_to({0, 0});
+  o.line_to({10, 0});
+  o.line_to({10, 10});
+  o.conic_to({5, -5}, {0, 10});
+  o.close();
+  // Square minus the parabolic segment: 100 - (2/3) * 75.
+  const Mesh mesh = build_and_check(o, 50.0);
+  EXPECT_GT(mesh.curves.size(), 1u);
+}
+
+TEST(BuildMesh, FlatConicsBecomeLines) {
+  Outline o;
+  o.move_to({0, 0});
+  o.conic_to({5, 0}, {10, 0});     // control on the chord
+  o.conic_to({10, 20}, {10, 10});  // control beyond the end: an overshoot
+  o.line_to({0, 10});
+  o.close();
+  const Mesh mesh = build_and_check(o, 100.0);
+  EXPECT_TRUE(mesh.curves.empty());
+}
+
+TEST(BuildMesh, HoleTouchingOuterAtAVertex) {
+  Outline o;
+  add_polygon(o, square(0, 0, 10, true));
+  add_polygon(o, {{0, 0}, {4, 6}, {6, 4}});  // clockwise, shares (0, 0)
+  build_and_check(o, 100.0 - 10.0);
+}
+
+TEST(BuildMesh, CubicsAreApproximated) {
+  Outline o;
+  o.move_to({0, 0});
+  o.line_to({100, 0});
+  o.cubic_to({130, 30}, {130, 70}, {100, 100});
+  o.line_to({0, 100});
+  o.close();
+  const MeshOptions options{0.01};
+  const Mesh mesh = build_mesh(o, options);
+  const Outline quadratic = to_quadratic_outline(o, options.cubic_tolerance);
+  const MeshCheck check = check_mesh(mesh, quadratic);
+  EXPECT_TRUE(check.ok()) << (check.problems.empty() ? "" : check.problems[0]);
+  EXPECT_NEAR(check.area_mesh, quadratic.signed_area(), 1e-9 * 10000);
+  EXPECT_GT(mesh.curves.size(), 1u);
+}
+
+// Random star-shaped polygons (simple by construction), with and without a
+// star-shaped hole, and with some edges replaced by shallow conics.
+TEST(BuildMesh, RandomStars) {
+  std::mt19937 rng(12345);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int trial = 0; trial < 300; ++trial) {
+    const int n = 3 + static_cast<int>(unit(rng) * 60);
+    std::vector<double> angles(n);
+    for (double& a : angles) a = unit(rng) * 2.0 * std::numbers::pi;
+    std::sort(angles.begin(), angles.end());
+    angles.erase(std::unique(angles.begin(), angles.end()), angles.end());
+    // The hole (radius <= 40) fits inside the outer star (radius >= 60) when
+    // no angular gap exceeds pi/3: every edge then stays 60 cos(pi/6) > 40 away.
+    double largest_gap = 2.0 * std::numbers::pi - angles.back() + angles.front();
+    for (std::size_t i = 1; i < angles.size(); ++i) largest_gap = std::max(largest_gap, angles[i] - angles[i - 1]);
+    const bool with_hole = trial % 3 == 1 && largest_gap < std::numbers::pi / 3.0;
+    const bool ccw = trial % 2 == 0;
+    // Integers like font units, so shared coordinates and collinear runs occur.
+    std::vector<Vec2> pts;
+    for (double a : angles) {
+      const double r = with_hole ? 60 + 40 * unit(rng) : 5 + 95 * unit(rng);
+      pts.push_back({std::round(r * std::cos(a)), std::round(r * std::sin(a))});
+    }
+    if (!ccw) std::reverse(pts.begin(), pts.end());
+    double area = 0.0;
+    for (std::size_t i = 0; i < pts.size(); ++i) area += 0.5 * cross(pts[i], pts[(i + 1) % pts.size()]);
+    // Rounding may fold the polygon; only test simple ones (no edge crossing).
+    bool simple = true;
+    for (std::size_t i = 0; i < pts.size() && simple; ++i) {
+      for (std::size_t j = i + 1; j < pts.size() && simple; ++j) {
+        const Vec2 a = pts[i], b = pts[(i + 1) % pts.size()], c = pts[j], d = pts[(j + 1) % pts.size()];
+        const bool adjacent = j == i + 1 || (i == 0 && j == pts.size() - 1);
+        if (adjacent) {
+          if (detail::orient2d(a, b, d) == 0 && dot(b - a, d - c) < 0 && j == i + 1) simple = false;
+          continue;
+        }
+        if (detail::segments_intersect(a, b, c, d)) simple = false;
+      }
+    }
+    if (!simple || pts.size() < 3) continue;
+    Outline o;
+    add_polygon(o, pts);
+    double expected = std::fabs(area);
+    if (with_hole) {
+      std::vector<Vec2> hole;
+      for (int k = 0; k < 7; ++k) {
+        const double a = 2.0 * std::numbers::pi * k / 7.0;
+        const double r = 10 + 30 * unit(rng);
+        hole.push_back({r * std::cos(-a), r * std::sin(-a)});
+      }
+      double hole_area = 0.0;
+      for (std::size_t i = 0; i < hole.size(); ++i) hole_area += 0.5 * cross(hole[i], hole[(i + 1) % hole.size()]);
+      if (!ccw) std::reverse(hole.begin(), hole.end());
+      add_polygon(o, hole);
+      expected -= std::fabs(hole_area);
+    }
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    const Mesh mesh = build_and_check(o, expected);
+    // Euler: V vertices (exactly collinear runs are merged) and h holes give
+    // V - 2 + 2h triangles.
+    EXPECT_EQ(mesh.triangles.size(), mesh.points.size() - 2 + (with_hole ? 2 : 0));
+  }
+}
+
+}  // namespace
+}  // namespace curvetext
