@@ -10,6 +10,8 @@
 #include <numbers>
 #include <string>
 
+#include <hb.h>
+
 #include "curvetext/curves.hpp"
 #include "curvetext/error.hpp"
 #include "curvetext/font.hpp"
@@ -34,24 +36,7 @@ Gpu& gpu() {
   return *instance;
 }
 
-// The shaped line as one outline in font units, glyphs at their pen positions
-// exactly as DrawBatch::from_text places them.
-Outline line_outline(const Font& font, const ShapedLine& line) {
-  Outline all;
-  double pen_x = 0, pen_y = 0;
-  for (const ShapedGlyph& g : line.glyphs) {
-    const Vec2 origin{pen_x + g.x_offset, pen_y + g.y_offset};
-    const Outline glyph = font.glyph_outline(g.glyph_id);
-    for (Contour c : glyph.contours()) {
-      for (Segment& s : c.segments)
-        for (Vec2& p : s.p) p = p + origin;
-      all.contours().push_back(std::move(c));
-    }
-    pen_x += g.x_advance;
-    pen_y += g.y_advance;
-  }
-  return all;
-}
+using test::line_outline;
 
 struct Case {
   const char* font_name;
@@ -129,21 +114,23 @@ TEST_P(FullAntialiasing, MatchesExactCoverage) {
 INSTANTIATE_TEST_SUITE_P(Strings, FullAntialiasing, ::testing::ValuesIn(all_cases()),
                          [](const ::testing::TestParamInfo<Case>& param) { return case_name(param.param, "full"); });
 
-// `curves` (the paper's single pass) antialiases curved edges only, so it is
-// judged by ink and a looser edge error; it must not beat `full` on text with
-// straight stems.
-TEST(CurvesAntialiasing, CloseInInkAndWorseThanFullOnStraightEdges) {
+// `curves` is the paper's single pass: curved edges are antialiased inside
+// their triangles only and straight edges are aliased (pixel centres decide).
+// It is measurably worse than `full`; these bounds record how far it is off
+// (measured: ink 0.926 and edge error 0.081 at 16 px, 0.989 and 0.059 at 48 px).
+TEST(CurvesAntialiasing, PaperSinglePassIsCloseInInkAndWorseThanFull) {
   for (double size : {16.0, 48.0}) {
     const Case c{"DejaVuSans", test::kDejaVuSans, "Latin", kLatin, size};
     const Rendered curves = render_case(c, AntiAliasing::Curves);
     const Rendered full = render_case(c, AntiAliasing::Full);
     std::printf("%-34s edge %.4f  ink %.4f (full: edge %.4f)\n", case_name(c, "curves").c_str(),
                 curves.stats.edge_mean_abs, curves.stats.ink_ratio, full.stats.edge_mean_abs);
-    if (std::abs(curves.stats.ink_ratio - 1.0) > 0.06 || curves.stats.edge_mean_abs > 0.2)
+    const double ink_limit = size < 24 ? 0.10 : 0.03;
+    if (std::abs(curves.stats.ink_ratio - 1.0) > ink_limit || curves.stats.edge_mean_abs > 0.12)
       test::write_comparison(case_name(c, "curves"), curves.result, curves.reference);
-    EXPECT_NEAR(curves.stats.ink_ratio, 1.0, 0.06);
-    EXPECT_LE(curves.stats.edge_mean_abs, 0.2);
-    EXPECT_GT(curves.stats.edge_mean_abs, full.stats.edge_mean_abs);
+    EXPECT_NEAR(curves.stats.ink_ratio, 1.0, ink_limit);
+    EXPECT_LE(curves.stats.edge_mean_abs, 0.12);
+    EXPECT_GT(curves.stats.edge_mean_abs, 2 * full.stats.edge_mean_abs);
   }
 }
 
@@ -161,6 +148,78 @@ TEST(NoAntialiasing, BinaryPixelsWithRightInk) {
     EXPECT_NEAR(r.stats.ink_ratio, 1.0, size < 48 ? 0.08 : 0.02);
     if (::testing::Test::HasFailure()) test::write_comparison(case_name(c, "none"), r.result, r.reference);
   }
+}
+
+// --- Geometry contract (DESIGN.md section 6) ------------------------------------
+
+TEST(GeometryContract, ImageSizeAndPenFollowHarfBuzzAtThePixelSize) {
+  const double size = 24;
+  const char* text = "Hamburgefontsiv";
+  Font font = Font::open(test::kDejaVuSans);
+  TextImageOptions options;
+  options.size_px = size;
+  const TextImageLayout layout = layout_text_image(font, text, options);
+
+  // Independently: HarfBuzz at size * 64 (26.6), as other renderers call it.
+  hb_blob_t* blob = hb_blob_create_from_file(test::kDejaVuSans);
+  hb_face_t* face = hb_face_create(blob, 0);
+  hb_font_t* hb = hb_font_create(face);
+  const int scale = static_cast<int>(size * 64);
+  hb_font_set_scale(hb, scale, scale);
+  hb_font_extents_t ext{};
+  hb_font_get_h_extents(hb, &ext);
+  hb_buffer_t* buf = hb_buffer_create();
+  hb_buffer_add_utf8(buf, text, -1, 0, -1);
+  hb_buffer_guess_segment_properties(buf);
+  hb_shape(hb, buf, nullptr, 0);
+  unsigned n = 0;
+  const hb_glyph_position_t* pos = hb_buffer_get_glyph_positions(buf, &n);
+  double advance = 0;
+  for (unsigned i = 0; i < n; ++i) advance += pos[i].x_advance / 64.0;
+  const double a = ext.ascender / 64.0, d = ext.descender / 64.0;
+  hb_buffer_destroy(buf);
+  hb_font_destroy(hb);
+  hb_face_destroy(face);
+  hb_blob_destroy(blob);
+
+  EXPECT_EQ(layout.width, static_cast<int>(std::ceil(2 * 16 + advance)));
+  EXPECT_EQ(layout.height, static_cast<int>(std::ceil(2 * 16 + a - d)));
+  EXPECT_NEAR(layout.placement.origin_x, 16.0, 1e-12);
+  EXPECT_NEAR(layout.placement.origin_y, 16.0 + a, 1.0 / 64);
+  EXPECT_NEAR(layout.placement.scale, size / font.metrics().units_per_em, 1e-15);
+  EXPECT_NEAR(layout.line.advance * layout.placement.scale, advance, 1.0 / 64 * n);
+}
+
+// Moving a batch is a uniform change: the same buffer drawn at an origin moved
+// by whole pixels gives the same pixels, moved; drawn at twice the scale it
+// still matches exact coverage (no rebuild, no atlas).
+TEST(DrawBatchTransform, MovingAndScalingChangeOnlyUniforms) {
+  Font font = Font::open(test::kNotoSans);
+  const ShapedLine line = shape_line(font, "Moving text");
+  DrawBatch batch = DrawBatch::from_text(gpu().cache, font, line, 24.0);
+  const std::size_t vertices = batch.vertex_count();
+  ASSERT_GT(vertices, 0u);
+  const double scale = 24.0 / font.metrics().units_per_em;
+  auto draw = [&](Placement p, int w, int h) {
+    gpu().renderer.begin(w, h, Color{1, 1, 1, 1});
+    gpu().renderer.draw(batch, p, DrawOptions{});
+    return test::coverage_from_black_on_white(gpu().renderer.read_pixels());
+  };
+  const test::Coverage a = draw({scale, 10.25, 40.5}, 220, 80);
+  const test::Coverage b = draw({scale, 13.25, 45.5}, 220, 80);
+  double worst = 0;
+  for (int y = 0; y + 5 < 80; ++y)
+    for (int x = 0; x + 3 < 220; ++x) worst = std::max(worst, static_cast<double>(std::abs(a.at(x, y) - b.at(x + 3, y + 5))));
+  EXPECT_LE(worst, 1.0 / 255 + 1e-6) << "a whole-pixel move changed pixel values";
+  EXPECT_EQ(batch.vertex_count(), vertices);
+
+  const Placement big{2 * scale, 10.25, 80.5};
+  const test::Coverage c = draw(big, 420, 120);
+  const test::Coverage ref = test::freetype_reference(line_outline(font, line), big, 420, 120, 8);
+  const test::CoverageStats s = test::compare(c, ref);
+  if (s.edge_mean_abs > 0.03) test::write_comparison("moving-text-scaled", c, ref);
+  EXPECT_LE(s.edge_mean_abs, 0.03);
+  EXPECT_NEAR(s.ink_ratio, 1.0, 0.03);
 }
 
 // --- A circle from four rational quadratic arcs (w = sqrt(2)/2) ---------------

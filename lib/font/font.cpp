@@ -19,6 +19,7 @@
 
 #include "curvetext/error.hpp"
 #include "font/font_impl.hpp"
+#include "font/option_lists.hpp"
 
 namespace curvetext {
 
@@ -101,11 +102,7 @@ std::string normalise_tag(std::string_view tag) {
   return padded;
 }
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-  return s;
-}
+using detail::trim;
 
 // FNV-1a, 64 bit: stable across runs (the key may be stored) and good enough
 // to tell faces and variation settings apart.
@@ -202,12 +199,7 @@ int decompose_cubic_to(const FT_Vector* control1, const FT_Vector* control2, con
 
 std::vector<Variation> parse_variations(std::string_view text) {
   std::vector<Variation> result;
-  if (trim(text).empty()) return result;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    std::size_t comma = text.find(',', start);
-    if (comma == std::string_view::npos) comma = text.size();
-    const std::string_view item = trim(text.substr(start, comma - start));
+  for (const std::string_view item : detail::split_comma_list(text)) {
     // Built by appending: GCC 12 warns falsely (-Wrestrict) on "'" + string.
     std::string quoted(1, '\'');
     quoted.append(item).push_back('\'');
@@ -224,7 +216,6 @@ std::vector<Variation> parse_variations(std::string_view text) {
     if (number.empty() || ec != std::errc() || end != number.data() + number.size() || !std::isfinite(value))
       throw Error(ErrorCode::InvalidArgument, "bad variation value in " + quoted + ": expected a number");
     result.push_back({tag, static_cast<float>(value)});
-    start = comma + 1;
   }
   return result;
 }

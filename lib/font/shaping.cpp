@@ -10,16 +10,13 @@
 #include "curvetext/error.hpp"
 #include "curvetext/shaping.hpp"
 #include "font/font_impl.hpp"
+#include "font/option_lists.hpp"
 
 namespace curvetext {
 
 namespace {
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-  return s;
-}
+using detail::trim;
 
 std::string lower(std::string_view s) {
   std::string out(s);
@@ -41,12 +38,7 @@ hb_tag_t feature_tag(const std::string& tag) {
 
 std::vector<Feature> parse_features(std::string_view text) {
   std::vector<Feature> result;
-  if (trim(text).empty()) return result;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    std::size_t comma = text.find(',', start);
-    if (comma == std::string_view::npos) comma = text.size();
-    const std::string_view item = trim(text.substr(start, comma - start));
+  for (const std::string_view item : detail::split_comma_list(text)) {
     hb_feature_t feature{};
     if (item.empty() || !hb_feature_from_string(item.data(), static_cast<int>(item.size()), &feature))
       throw Error(ErrorCode::InvalidArgument, "bad OpenType feature '" + std::string(item) + "' in '" +
@@ -59,7 +51,6 @@ std::vector<Feature> parse_features(std::string_view text) {
     char tag[4];
     hb_tag_to_string(feature.tag, tag);
     result.push_back({std::string(tag, 4), feature.value});
-    start = comma + 1;
   }
   return result;
 }

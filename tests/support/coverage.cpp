@@ -73,6 +73,22 @@ FtOutlineData to_freetype(const Outline& pixel_outline, double k, int bitmap_hei
 
 }  // namespace
 
+Outline line_outline(const Font& font, const ShapedLine& line) {
+  Outline all;
+  Vec2 pen{0, 0};
+  for (const ShapedGlyph& g : line.glyphs) {
+    const Vec2 origin = pen + Vec2{g.x_offset, g.y_offset};
+    const Outline glyph = font.glyph_outline(g.glyph_id);
+    for (Contour c : glyph.contours()) {
+      for (Segment& s : c.segments)
+        for (Vec2& p : s.p) p = p + origin;
+      all.contours().push_back(std::move(c));
+    }
+    pen = pen + Vec2{g.x_advance, g.y_advance};
+  }
+  return all;
+}
+
 Outline place_outline(const Outline& outline, const Placement& pl) {
   Outline out = outline;
   auto map = [&](Vec2 p) { return Vec2{pl.scale * p.x + pl.origin_x, pl.origin_y - pl.scale * p.y}; };

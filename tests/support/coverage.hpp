@@ -6,9 +6,11 @@
 #include <string>
 #include <vector>
 
+#include "curvetext/font.hpp"
 #include "curvetext/image.hpp"
 #include "curvetext/outline.hpp"
 #include "curvetext/renderer.hpp"
+#include "curvetext/shaping.hpp"
 
 namespace curvetext::test {
 
@@ -53,6 +55,10 @@ CoverageStats compare(const Coverage& result, const Coverage& reference);
 // Writes <dir>/<name>-result.png, -reference.png and -diff.png (red: result
 // too dark, blue: too light) and returns the directory.
 std::string write_comparison(const std::string& name, const Coverage& result, const Coverage& reference);
+
+// A shaped line as one outline in font units, each glyph at its pen position
+// exactly as DrawBatch::from_text places it (pen from (0,0), y up).
+Outline line_outline(const Font& font, const ShapedLine& line);
 
 // Outline in pixel space -> the same with every point mapped by placement.
 Outline place_outline(const Outline& outline, const Placement& placement);
