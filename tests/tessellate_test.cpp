@@ -267,6 +267,136 @@ TEST(BuildMesh, HoleTouchingOuterAtAVertex) {
   build_and_check(o, 100.0 - 10.0);
 }
 
+// Cells (x, y) of an n x n board with x + y even (the dark squares of a
+// checkerboard), size `cell`, drawn as ONE contour: each square is walked
+// counter-clockwise, and at a corner shared with a dark square not yet drawn
+// the walk makes a detour around that square first (recursively) and comes
+// back to the same corner. The contour touches itself at every inner corner
+// of the board and never crosses itself; it encloses ceil(n^2 / 2) squares.
+void trace_dark_square(int x, int y, int start, int n, double cell, std::vector<std::vector<char>>& drawn,
+                       std::vector<Vec2>& pts) {
+  drawn[static_cast<std::size_t>(x)][static_cast<std::size_t>(y)] = 1;
+  const int corner_dx[4] = {0, 1, 1, 0}, corner_dy[4] = {0, 0, 1, 1};  // counter-clockwise from lower left
+  const int diag_dx[4] = {-1, 1, 1, -1}, diag_dy[4] = {-1, -1, 1, 1};  // the square beyond each corner
+  for (int m = 0; m < 4; ++m) {
+    const int k = (start + m) % 4;
+    const Vec2 corner{(x + corner_dx[k]) * cell, (y + corner_dy[k]) * cell};
+    if (m > 0) pts.push_back(corner);  // the start corner was written by the caller
+    const int nx = x + diag_dx[k], ny = y + diag_dy[k];
+    if (nx < 0 || ny < 0 || nx >= n || ny >= n || drawn[static_cast<std::size_t>(nx)][static_cast<std::size_t>(ny)]) {
+      continue;
+    }
+    trace_dark_square(nx, ny, (k + 2) % 4, n, cell, drawn, pts);  // its opposite corner is ours
+    pts.push_back(corner);
+  }
+}
+
+std::vector<Vec2> checkerboard_contour(int n, double cell, bool ccw) {
+  std::vector<std::vector<char>> drawn(static_cast<std::size_t>(n), std::vector<char>(static_cast<std::size_t>(n), 0));
+  std::vector<Vec2> pts = {{0, 0}};
+  trace_dark_square(0, 0, 0, n, cell, drawn, pts);
+  if (!ccw) std::reverse(pts.begin(), pts.end());
+  return pts;
+}
+
+TEST(BuildMesh, CheckerboardAsOneSelfTouchingContour) {
+  // The 3 x 3 board written out, to show what the generator makes: the lower
+  // left square, a detour around the centre square (which detours around the
+  // three other corner squares), back to the lower left square.
+  const std::vector<Vec2> board3 = checkerboard_contour(3, 1.0, true);
+  const std::vector<Vec2> expected = {{0, 0}, {1, 0}, {1, 1}, {2, 1}, {2, 0}, {3, 0}, {3, 1}, {2, 1}, {2, 2}, {3, 2},
+                                      {3, 3}, {2, 3}, {2, 2}, {1, 2}, {1, 3}, {0, 3}, {0, 2}, {1, 2}, {1, 1}, {0, 1}};
+  ASSERT_EQ(board3.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_TRUE(board3[i] == expected[i]) << i;
+  for (bool ccw : {true, false}) {
+    for (int n = 2; n <= 8; ++n) {
+      SCOPED_TRACE("n = " + std::to_string(n) + (ccw ? " ccw" : " cw"));
+      Outline o;
+      // Font-unit-like cell size, so corners are exact and shared bit for bit.
+      add_polygon(o, checkerboard_contour(n, 167.0, ccw));
+      const double dark = static_cast<double>((n * n + 1) / 2);
+      const Mesh mesh = build_and_check(o, dark * 167.0 * 167.0, 1e-12);
+      EXPECT_EQ(mesh.triangles.size(), 2 * static_cast<std::size_t>(dark));
+    }
+  }
+}
+
+TEST(BuildMesh, FigureEightTouchingAtOneVertex) {
+  // Two triangles meeting at the origin, both counter-clockwise, in one contour.
+  for (bool ccw : {true, false}) {
+    std::vector<Vec2> pts = {{0, 0}, {1, -1}, {1, 1}, {0, 0}, {-1, 1}, {-1, -1}};
+    if (!ccw) std::reverse(pts.begin(), pts.end());
+    Outline o;
+    add_polygon(o, pts);
+    const Mesh mesh = build_and_check(o, 2.0, 1e-15);
+    EXPECT_EQ(mesh.triangles.size(), 2u);
+  }
+  // The same with curved lobes: a convex and a concave conic in each lobe.
+  Outline o;
+  o.move_to({0, 0});
+  o.line_to({10, -10});
+  o.conic_to({14, 0}, {10, 10}, 1.0);  // bulges out
+  o.line_to({0, 0});
+  o.line_to({-10, 10});
+  o.conic_to({-6, 0}, {-10, -10}, 1.0);  // bulges in
+  o.close();
+  // Triangles of 100 each; a parabolic segment is 2/3 of its control triangle.
+  build_and_check(o, 200.0 + (2.0 / 3.0) * 40.0 - (2.0 / 3.0) * 40.0);
+}
+
+TEST(BuildMesh, OneContourWithAHoleLobeTouchingAtAVertex) {
+  // A square and, inside it, a clockwise triangle drawn in the same contour
+  // from the shared corner: by the nonzero rule the triangle is a hole.
+  for (bool ccw : {true, false}) {
+    std::vector<Vec2> pts = {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 0}, {4, 6}, {6, 4}};
+    if (!ccw) std::reverse(pts.begin(), pts.end());
+    Outline o;
+    add_polygon(o, pts);
+    build_and_check(o, 100.0 - 10.0);
+  }
+}
+
+TEST(BuildMesh, ContoursTouchingAtVertices) {
+  {  // Two squares sharing a corner.
+    Outline o;
+    add_polygon(o, square(0, 0, 10, true));
+    add_polygon(o, square(10, 10, 10, true));
+    build_and_check(o, 200.0);
+  }
+  {  // Two holes touching each other at a vertex.
+    Outline o;
+    add_polygon(o, square(0, 0, 10, true));
+    add_polygon(o, {{2, 2}, {5, 5}, {8, 2}});  // clockwise
+    add_polygon(o, {{2, 8}, {8, 8}, {5, 5}});  // clockwise
+    build_and_check(o, 100.0 - 9.0 - 9.0);
+  }
+  {  // A hole touching its container at two vertices cuts it in two.
+    Outline o;
+    add_polygon(o, {{0, 0}, {5, -1}, {10, 0}, {10, 10}, {5, 11}, {0, 10}});
+    add_polygon(o, {{5, -1}, {3, 5}, {5, 11}, {7, 5}});  // clockwise
+    build_and_check(o, 110.0 - 24.0);
+  }
+  {  // Four holes meeting at the centre, each touching the container at one
+     // vertex: the holes cut the region into four pieces joined only at points.
+    Outline o;
+    add_polygon(o, {{0, 0}, {5, -1}, {10, 0}, {11, 5}, {10, 10}, {5, 11}, {0, 10}, {-1, 5}});
+    add_polygon(o, {{5, 5}, {5, -1}, {3, 2}});  // clockwise; the others are it turned by 90 degrees
+    add_polygon(o, {{5, 5}, {11, 5}, {8, 3}});
+    add_polygon(o, {{5, 5}, {5, 11}, {7, 8}});
+    add_polygon(o, {{5, 5}, {-1, 5}, {2, 7}});
+    double holes = 0.0;
+    for (std::size_t c = 1; c < o.contours().size(); ++c) holes += polyline_area(o.contours()[c], 1);
+    EXPECT_DOUBLE_EQ(holes, -4.0 * 6.0);
+    build_and_check(o, 120.0 + holes);
+  }
+  {  // The same holes drawn as one clockwise contour around the centre.
+    Outline o;
+    add_polygon(o, {{0, 0}, {5, -1}, {10, 0}, {11, 5}, {10, 10}, {5, 11}, {0, 10}, {-1, 5}});
+    add_polygon(o, {{5, 5}, {5, -1}, {3, 2}, {5, 5}, {-1, 5}, {2, 7}, {5, 5}, {5, 11}, {7, 8}, {5, 5}, {11, 5}, {8, 3}});
+    build_and_check(o, 120.0 - 24.0);
+  }
+}
+
 TEST(BuildMesh, CubicsAreApproximated) {
   Outline o;
   o.move_to({0, 0});

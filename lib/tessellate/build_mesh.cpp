@@ -3,6 +3,7 @@
 // clipping -> Lawson flips -> indexed mesh (DESIGN.md section 4, paper 3.1).
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <set>
@@ -96,6 +97,42 @@ bool simplify_pass(Ring& ring) {
   return changed;
 }
 
+// Splits a closed ring at every vertex it passes through more than once into
+// closed sub-rings without repeated vertices (a checkerboard drawn as one
+// contour that touches itself at cell corners becomes one ring per lobe).
+// The pieces are kept as they are, so the sub-rings together trace exactly
+// the original ring and the winding number of every point is unchanged: the
+// nonzero fill of the sub-rings is the fill of the ring. Each sub-ring keeps
+// the orientation it has, and nest_rings decides its role (outer, hole, or
+// neither) by the nonzero rule like for any other ring. Sub-rings of contours
+// that do not cross only touch at the split vertices; the ear clipper then
+// never sees a pinch vertex inside one ring, where its local ear tests cannot
+// tell which lobe a triangle would cover.
+//
+// Walk the pieces keeping the open path on a stack; when a piece starts at a
+// vertex already on the stack, the pieces since that vertex form a closed
+// loop: cut it off. What remains at the end starts and ends at ring[0].a.
+std::vector<Ring> split_at_repeated_vertices(const Ring& ring) {
+  std::vector<Ring> loops;
+  Ring path;
+  path.reserve(ring.size());
+  std::map<std::pair<double, double>, std::size_t> position;  // vertex -> index in path
+  for (const Piece& piece : ring) {
+    const std::pair<double, double> key{piece.a.x, piece.a.y};
+    const auto found = position.find(key);
+    if (found != position.end()) {
+      const std::size_t k = found->second;
+      for (std::size_t m = k + 1; m < path.size(); ++m) position.erase({path[m].a.x, path[m].a.y});
+      loops.emplace_back(path.begin() + static_cast<std::ptrdiff_t>(k), path.end());
+      path.resize(k);
+    }
+    position[key] = path.size();
+    path.push_back(piece);
+  }
+  if (!path.empty()) loops.push_back(std::move(path));
+  return loops;
+}
+
 }  // namespace
 
 double ring_area(const Ring& ring) {
@@ -131,10 +168,17 @@ std::vector<Ring> clean_rings(const Outline& quadratic) {
     // adversarial input, where leftovers are handled by the ear clipper.
     for (int pass = 0; pass < 16 && ring.size() >= 2 && simplify_pass(ring); ++pass) {
     }
-    const bool has_conic = std::any_of(ring.begin(), ring.end(), [](const Piece& p) { return p.conic; });
-    if (ring.size() < 2 || (ring.size() == 2 && !has_conic)) continue;
-    if (ring_area(ring) == 0.0) continue;
-    rings.push_back(std::move(ring));
+    // Split after simplifying: simplification only deletes vertices, so it
+    // cannot create new repeats, while the sub-rings are not simplified again
+    // because merging a straight run through a split vertex would leave that
+    // vertex in the middle of an edge of the sub-ring, a T-junction against
+    // the other sub-ring that touches it there.
+    for (Ring& loop : split_at_repeated_vertices(ring)) {
+      const bool has_conic = std::any_of(loop.begin(), loop.end(), [](const Piece& p) { return p.conic; });
+      if (loop.size() < 2 || (loop.size() == 2 && !has_conic)) continue;  // a lone back-and-forth: no area
+      if (ring_area(loop) == 0.0) continue;
+      rings.push_back(std::move(loop));
+    }
   }
   return rings;
 }
@@ -537,8 +581,11 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
     std::vector<Vec2> outer = polygonise(region.outer);
     std::vector<std::vector<Vec2>> holes;
     for (const Ring& hole : region.holes) holes.push_back(polygonise(hole));
-    const std::vector<Vec2> loop = bridge_holes(std::move(outer), std::move(holes));
-    ear_clip(loop, triangle_points);
+    // Where loops touch at vertices, re-link them first so that each polygon
+    // handed to the ear clipper has one filled sector per corner.
+    for (PolygonLoops& polygon : relink_touching_loops(std::move(outer), std::move(holes))) {
+      ear_clip(bridge_holes(std::move(polygon.outer), std::move(polygon.holes)), triangle_points);
+    }
   }
   mesh.triangles.reserve(triangle_points.size());
   for (const auto& t : triangle_points) mesh.triangles.push_back({index(t[0]), index(t[1]), index(t[2])});

@@ -31,7 +31,8 @@ struct Region {
 double ring_area(const Ring& ring);
 
 // Rings of the quadratic outline with zero-length pieces, flat conics, exact
-// collinear runs and spikes removed; rings without area dropped.
+// collinear runs and spikes removed, each split at its repeated vertices into
+// sub-rings that pass through every vertex once; rings without area dropped.
 std::vector<Ring> clean_rings(const Outline& quadratic);
 
 // True when two hulls (2 points: a segment; 3: a control triangle) share any

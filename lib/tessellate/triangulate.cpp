@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <map>
 #include <numeric>
+#include <utility>
+#include <vector>
 #include <unordered_map>
 
 #include "tessellate/predicates.hpp"
@@ -68,7 +71,173 @@ bool bridge_valid(const std::vector<Vec2>& outer, std::size_t oi, const std::vec
 
 double squared_distance(Vec2 a, Vec2 b) { return dot(a - b, a - b); }
 
+// Exact counter-clockwise angular order of the directions p->a and p->b
+// (a, b != p), starting from the +x direction: first by half-plane (angles in
+// [0, pi) before [pi, 2 pi)), then by orientation within a half-plane.
+bool angle_less(Vec2 p, Vec2 a, Vec2 b) {
+  auto upper = [&](Vec2 q) { return q.y > p.y || (q.y == p.y && q.x > p.x); };
+  const bool ua = upper(a), ub = upper(b);
+  if (ua != ub) return ua;
+  return orient2d(p, a, b) > 0;
+}
+
+double loop_area(const std::vector<Vec2>& loop) {
+  double area = 0.0;
+  for (std::size_t i = 0; i < loop.size(); ++i) area += 0.5 * cross(loop[i], loop[next_index(i, loop.size())]);
+  return area;
+}
+
+// Nonzero winding of a polygon loop around p, or Boundary when p is on it.
+Where point_in_loop(const std::vector<Vec2>& loop, Vec2 p) {
+  int winding = 0;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const Vec2 a = loop[i], b = loop[next_index(i, loop.size())];
+    if (point_on_segment(a, b, p)) return Where::Boundary;
+    if (a.y <= p.y) {
+      if (b.y > p.y && orient2d(a, b, p) > 0) ++winding;
+    } else if (b.y <= p.y && orient2d(a, b, p) < 0) {
+      --winding;
+    }
+  }
+  return winding != 0 ? Where::Inside : Where::Outside;
+}
+
+// Whether the clockwise loop `hole` lies inside the counter-clockwise loop
+// `outer`; the two may touch at vertices, so the first vertex of the hole off
+// the outer decides (or, if every vertex is on it, an edge midpoint).
+bool hole_inside(const std::vector<Vec2>& hole, const std::vector<Vec2>& outer) {
+  for (const Vec2 p : hole) {
+    const Where w = point_in_loop(outer, p);
+    if (w != Where::Boundary) return w == Where::Inside;
+  }
+  for (std::size_t i = 0; i < hole.size(); ++i) {
+    const Vec2 mid = 0.5 * (hole[i] + hole[next_index(i, hole.size())]);
+    const Where w = point_in_loop(outer, mid);
+    if (w != Where::Boundary) return w == Where::Inside;
+  }
+  return false;
+}
+
 }  // namespace
+
+std::vector<PolygonLoops> relink_touching_loops(std::vector<Vec2> outer, std::vector<std::vector<Vec2>> holes) {
+  // Every loop vertex is a node; prev/next link the nodes of each loop.
+  std::vector<Vec2> pos;
+  std::vector<std::size_t> prev, next;
+  auto add_loop = [&](const std::vector<Vec2>& loop) {
+    const std::size_t first = pos.size();
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      // Zero-length edges have no direction to sort by; they carry nothing.
+      if (pos.size() > first && loop[i] == pos.back()) continue;
+      if (i + 1 == loop.size() && pos.size() > first && loop[i] == pos[first]) continue;
+      pos.push_back(loop[i]);
+    }
+    const std::size_t count = pos.size() - first;
+    for (std::size_t k = 0; k < count; ++k) {
+      prev.push_back(first + prev_index(k, count));
+      next.push_back(first + next_index(k, count));
+    }
+  };
+  add_loop(outer);
+  for (const auto& hole : holes) add_loop(hole);
+  const std::size_t n = pos.size();
+
+  std::map<std::pair<double, double>, std::vector<std::size_t>> copies;
+  for (std::size_t i = 0; i < n; ++i) copies[{pos[i].x, pos[i].y}].push_back(i);
+  const bool touching = std::any_of(copies.begin(), copies.end(), [](const auto& c) { return c.second.size() > 1; });
+  if (!touching) {
+    std::vector<PolygonLoops> unchanged(1);
+    unchanged[0].outer = std::move(outer);
+    unchanged[0].holes = std::move(holes);
+    return unchanged;
+  }
+
+  // link[c]: having arrived at node c's position along c's incoming edge, the
+  // walk leaves along link[c]'s outgoing edge. At a shared vertex the filled
+  // side of an arrival lies clockwise of its incoming ray (it is on the left
+  // of the travel), so the departure that keeps the filled corner free of
+  // other edges is the first outgoing ray clockwise from the incoming ray.
+  // Around a vertex where non-crossing loops touch, incoming and outgoing rays
+  // alternate, so that is the next ray clockwise; skipping outgoing rays
+  // already taken only matters for garbage input, and keeps link a bijection.
+  std::vector<std::size_t> link(n);
+  std::iota(link.begin(), link.end(), std::size_t{0});
+  struct Ray {
+    Vec2 to;
+    std::size_t node;
+    bool outgoing;
+  };
+  std::vector<Ray> rays;
+  std::vector<char> taken;
+  for (const auto& [key, nodes] : copies) {
+    if (nodes.size() < 2) continue;
+    const Vec2 p = pos[nodes.front()];
+    rays.clear();
+    for (std::size_t c : nodes) {
+      rays.push_back({pos[prev[c]], c, false});
+      rays.push_back({pos[next[c]], c, true});
+    }
+    std::stable_sort(rays.begin(), rays.end(), [&](const Ray& a, const Ray& b) { return angle_less(p, a.to, b.to); });
+    taken.assign(rays.size(), 0);
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      if (rays[i].outgoing) continue;
+      for (std::size_t step = 1; step < rays.size(); ++step) {
+        const std::size_t j = (i + rays.size() - step) % rays.size();  // clockwise from ray i
+        if (rays[j].outgoing && !taken[j]) {
+          taken[j] = 1;
+          link[rays[i].node] = rays[j].node;
+          break;
+        }
+      }
+    }
+  }
+
+  // next[link[.]] is a permutation of the nodes: its cycles are the new loops.
+  std::vector<std::vector<Vec2>> outers, new_holes;
+  std::vector<char> visited(n, 0);
+  for (std::size_t s = 0; s < n; ++s) {
+    if (visited[s]) continue;
+    std::vector<Vec2> loop;
+    for (std::size_t cur = s; !visited[cur]; cur = next[link[cur]]) {
+      visited[cur] = 1;
+      loop.push_back(pos[cur]);
+    }
+    if (loop.size() < 3) continue;  // a back-and-forth between two points: no area
+    const double area = loop_area(loop);
+    if (area > 0.0) {
+      outers.push_back(std::move(loop));
+    } else if (area < 0.0) {
+      new_holes.push_back(std::move(loop));
+    }
+  }
+  if (outers.empty()) {  // not a region with the filled side on the left: leave it to the fallbacks
+    std::vector<PolygonLoops> unchanged(1);
+    unchanged[0].outer = std::move(outer);
+    unchanged[0].holes = std::move(holes);
+    return unchanged;
+  }
+  // Smallest outers first, so a hole goes to the innermost outer around it.
+  std::vector<double> areas;
+  for (const auto& loop : outers) areas.push_back(loop_area(loop));
+  std::vector<std::size_t> order(outers.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return areas[a] < areas[b]; });
+  std::vector<PolygonLoops> polygons(outers.size());
+  for (std::size_t i = 0; i < outers.size(); ++i) polygons[i].outer = std::move(outers[i]);
+  for (auto& hole : new_holes) {
+    std::size_t home = order.back();  // garbage (no outer around it): the largest
+    if (polygons.size() > 1) {
+      for (std::size_t k : order) {
+        if (hole_inside(hole, polygons[k].outer)) {
+          home = k;
+          break;
+        }
+      }
+    }
+    polygons[home].holes.push_back(std::move(hole));
+  }
+  return polygons;
+}
 
 std::vector<Vec2> bridge_holes(std::vector<Vec2> outer, std::vector<std::vector<Vec2>> holes) {
   // Holes are joined left to right (as earcut does) so that a hole's bridge

@@ -18,6 +18,24 @@ namespace curvetext::detail {
 // polygon with holes becomes one weakly simple loop (bridge vertices repeat).
 std::vector<Vec2> bridge_holes(std::vector<Vec2> outer, std::vector<std::vector<Vec2>> holes);
 
+// One polygon for bridge_holes: a counter-clockwise outer loop and the
+// clockwise loops of its holes.
+struct PolygonLoops {
+  std::vector<Vec2> outer;
+  std::vector<std::vector<Vec2>> holes;
+};
+
+// Loops of one filled region (outer counter-clockwise, holes clockwise, the
+// filled side on the left of every loop) re-linked where they touch: at a
+// vertex that several loops (or one loop several times) pass through, each
+// arrival continues along the departure that keeps the filled corner tight
+// (nothing else between them), so that every corner of the resulting loops
+// is a single filled sector. Loops with positive area become outers, with
+// negative area holes of the smallest outer around them. A hole that touches
+// its outer at two vertices thus cuts it into two polygons; holes touching each
+// other become one pinched hole. Without shared vertices, returns the input.
+std::vector<PolygonLoops> relink_touching_loops(std::vector<Vec2> outer, std::vector<std::vector<Vec2>> holes);
+
 // Appends counter-clockwise triangles covering the loop (filled side on the
 // left). Works on weakly simple loops with repeated vertices and collinear
 // runs. Always terminates in O(n^2) ear tests per removed vertex at most; on an
