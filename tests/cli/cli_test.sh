@@ -64,6 +64,26 @@ else
   bad "render --text-file failed: $(cat "$tmp/stderr")"
 fi
 
+# --- check and mesh ---------------------------------------------------------------
+if timeout 120 "$CURVETEXT" check --max-glyphs 120 --json >"$tmp/check.json" 2>"$tmp/stderr"; then
+  if grep -q '"glyphs": 120' "$tmp/check.json" && grep -q '"failed": 0' "$tmp/check.json" &&
+     grep -q '"build_us_median"' "$tmp/check.json" && grep -q '"mean_bytes"' "$tmp/check.json"; then
+    ok "check --json on the first 120 glyphs"
+  else
+    bad "check --json output: $(head -c 300 "$tmp/check.json")"
+  fi
+else
+  bad "check failed: $(head -c 300 "$tmp/check.json") $(cat "$tmp/stderr")"
+fi
+if timeout 60 "$CURVETEXT" mesh --char g -o "$tmp/g.svg" 2>"$tmp/stderr" && grep -q "<svg" "$tmp/g.svg" &&
+   [ "$(grep -c "<polygon" "$tmp/g.svg")" -gt 20 ] && grep -q "invariants hold" "$tmp/g.svg"; then
+  ok "mesh --char g"
+else
+  bad "mesh --char g: $(cat "$tmp/stderr")"
+fi
+expect_error "mesh: glyph out of range" 1 "glyph" -- mesh --glyph 999999 -o "$tmp/out.png"
+expect_error "mesh: no glyph for char" 1 "no glyph" -- mesh --char "$(printf '\xE4\xB8\xAD')" -o "$tmp/out.png"
+
 # --- bad input ------------------------------------------------------------------
 head -c 4096 /dev/urandom >"$tmp/corrupt.ttf"
 : >"$tmp/empty.ttf"

@@ -45,6 +45,10 @@ struct DrawOptions {
   CurveMode curve_mode = CurveMode::Exact;
 };
 
+// Bytes `mesh` takes in a GPU vertex buffer once packed (interior and curved
+// triangles plus the antialiasing fringes), as DrawBatch uploads it.
+std::size_t gpu_bytes(const Mesh& mesh);
+
 // Meshes packed for the GPU, per glyph, keyed by (font cache key, glyph, level
 // of detail), with a memory budget (least recently used glyphs are dropped).
 class GlyphCache {

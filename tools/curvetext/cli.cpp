@@ -1,0 +1,45 @@
+#include "cli.hpp"
+
+#include <charconv>
+
+#include "curvetext/default_font.hpp"
+
+#ifndef CURVETEXT_BUILD_FONT_DIR
+#define CURVETEXT_BUILD_FONT_DIR ""
+#endif
+
+namespace curvetext::cli {
+
+double parse_number(std::string_view option, std::string_view text) {
+  double value = 0.0;
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || ptr != text.data() + text.size())
+    throw UsageError{std::string(option) + " needs a number, got '" + std::string(text) + "'"};
+  return value;
+}
+
+int parse_int(std::string_view option, std::string_view text) {
+  int value = 0;
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || ptr != text.data() + text.size())
+    throw UsageError{std::string(option) + " needs a whole number, got '" + std::string(text) + "'"};
+  return value;
+}
+
+bool FontChoice::parse(Args& args) {
+  const std::string& o = args.option();
+  if (o == "--font") path = args.value();
+  else if (o == "--face-index") face_index = parse_int(o, args.value());
+  else if (o == "--variations") variations = args.value();
+  else return false;
+  if (face_index < 0) throw UsageError{"--face-index must be 0 or more"};
+  return true;
+}
+
+Font FontChoice::open() const {
+  Font font = Font::open(path ? *path : default_font_path(CURVETEXT_BUILD_FONT_DIR), face_index);
+  if (variations) font.set_variations(parse_variations(*variations));
+  return font;
+}
+
+}  // namespace curvetext::cli

@@ -1,0 +1,70 @@
+// curvetext render: one line of text to a PNG (DESIGN.md section 6).
+#include <fstream>
+#include <sstream>
+
+#include "cli.hpp"
+#include "curvetext/error.hpp"
+#include "curvetext/headless.hpp"
+#include "curvetext/image.hpp"
+#include "curvetext/renderer.hpp"
+#include "curvetext/text_image.hpp"
+
+namespace curvetext::cli {
+
+namespace {
+
+std::string read_text_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(ErrorCode::Io, "cannot read text file " + path);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  std::string text = ss.str();
+  // One line of text: a trailing line break is the file's, not the text's.
+  if (!text.empty() && text.back() == '\n') text.pop_back();
+  if (!text.empty() && text.back() == '\r') text.pop_back();
+  return text;
+}
+
+}  // namespace
+
+int run_render(const std::vector<std::string>& arguments) {
+  FontChoice font_choice;
+  std::optional<std::string> text, text_file, output, features;
+  std::optional<double> size;
+  TextImageOptions options;
+
+  Args args(arguments);
+  while (args.next()) {
+    const std::string& a = args.option();
+    if (font_choice.parse(args)) continue;
+    if (a == "--size") size = parse_number(a, args.value());
+    else if (a == "--text") text = args.value();
+    else if (a == "--text-file") text_file = args.value();
+    else if (a == "-o" || a == "--output") output = args.value();
+    else if (a == "--margin") options.margin_px = parse_number(a, args.value());
+    else if (a == "--aa") options.antialiasing = parse_antialiasing(args.value());
+    else if (a == "--curve") options.curve_mode = parse_curve_mode(args.value());
+    else if (a == "--features") features = args.value();
+    else if (a == "--fg") options.foreground = parse_color(args.value());
+    else if (a == "--bg") options.background = parse_color(args.value());
+    else throw UsageError{"unknown option " + a};
+  }
+  if (!size) throw UsageError{"--size is required"};
+  if (text.has_value() == text_file.has_value()) throw UsageError{"give exactly one of --text and --text-file"};
+  if (!output) throw UsageError{"-o OUT.png is required"};
+  options.size_px = *size;
+  if (text_file) text = read_text_file(*text_file);
+  if (features) options.shaping.features = parse_features(*features);
+
+  const Font font = font_choice.open();
+  // Everything that can be checked without a GL device is checked first.
+  const TextImageLayout layout = layout_text_image(font, *text, options);
+  HeadlessContext context = HeadlessContext::create();
+  Renderer renderer;
+  GlyphCache cache;
+  const Image image = render_text_image(renderer, cache, font, layout, options);
+  write_png(image, *output);
+  return 0;
+}
+
+}  // namespace curvetext::cli
