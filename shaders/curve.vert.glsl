@@ -5,6 +5,7 @@ precision highp float;
 attribute vec4 a_pos;   // (x, y, ox, oy): outline units, fringe offset per unit of dilation
 attribute vec4 a_coef;  // (c0, c1, c2, c3)
 attribute vec4 a_info;  // (kind, w or dc2, dc0, dc1)
+attribute vec4 a_fade;  // (f0, f1, df0, df1): two more boundary lines, any kind
 
 uniform mat3 u_transform;     // outline units -> framebuffer pixels, y down
 uniform vec2 u_viewport;      // framebuffer size in pixels
@@ -12,7 +13,9 @@ uniform float u_px_per_unit;  // sqrt|det| of the linear part of u_transform
 uniform float u_fringe_px;    // fringe width in pixels (0 unless AA is full)
 
 varying vec4 v_coef;
-varying vec2 v_info;  // (kind, weight)
+varying vec4 v_info;  // a_info: (kind, weight, ...) see vertex_format.hpp
+varying vec2 v_tau;   // kinds 3, 4: (tau1, tau2) of the neighbouring curve A
+varying vec2 v_fade;  // distances to the two a_fade lines
 
 // Vertices shared between triangles must land on identical positions, or
 // rasterisation leaves cracks / double-blended pixels along shared edges.
@@ -21,11 +24,17 @@ invariant gl_Position;
 void main() {
   // Dilation in outline units; 0 makes the fringe triangles zero-area.
   float t = u_fringe_px / u_px_per_unit;
-  vec2 p = a_pos.xy + a_pos.zw * t;
+  // Kinds 3 and 4 (interior triangles next to curves) never move; their
+  // offset slot carries curve A's barycentrics instead.
+  bool next_to_curve = a_info.x > 2.5;
+  vec2 p = next_to_curve ? a_pos.xy : a_pos.xy + a_pos.zw * t;
+  v_tau = next_to_curve ? a_pos.zw : vec2(0.0);
   // For edges (kind 1) the weight slot carries the derivative of c2.
   float dc2 = (a_info.x > 0.5 && a_info.x < 1.5) ? a_info.y : 0.0;
-  v_coef = a_coef + vec4(a_info.z, a_info.w, dc2, 0.0) * t;
-  v_info = a_info.xy;
+  vec4 dcoef = next_to_curve ? vec4(0.0) : vec4(a_info.z, a_info.w, dc2, 0.0);
+  v_coef = a_coef + dcoef * t;
+  v_info = a_info;
+  v_fade = a_fade.xy + a_fade.zw * t;
   vec3 q = u_transform * vec3(p, 1.0);
   gl_Position = vec4(2.0 * q.x / u_viewport.x - 1.0, 1.0 - 2.0 * q.y / u_viewport.y, 0.0, 1.0);
 }

@@ -93,7 +93,7 @@ void compile(const Shader& shader, GLenum type, const char* source, bool gles) {
 
 struct Renderer::Impl {
   GLuint program = 0;
-  GLint a_pos = -1, a_coef = -1, a_info = -1;
+  GLint a_pos = -1, a_coef = -1, a_info = -1, a_fade = -1;
   GLint u_transform = -1, u_viewport = -1, u_px_per_unit = -1, u_fringe_px = -1, u_color = -1,
         u_aa = -1, u_curve_mode = -1;
   GLuint framebuffer = 0;
@@ -133,6 +133,7 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
   glBindAttribLocation(r.program, 0, "a_pos");
   glBindAttribLocation(r.program, 1, "a_coef");
   glBindAttribLocation(r.program, 2, "a_info");
+  glBindAttribLocation(r.program, 3, "a_fade");
   glLinkProgram(r.program);
   GLint ok = GL_FALSE;
   glGetProgramiv(r.program, GL_LINK_STATUS, &ok);
@@ -148,6 +149,7 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
   r.a_pos = 0;
   r.a_coef = 1;
   r.a_info = 2;
+  r.a_fade = 3;
   r.u_transform = glGetUniformLocation(r.program, "u_transform");
   r.u_viewport = glGetUniformLocation(r.program, "u_viewport");
   r.u_px_per_unit = glGetUniformLocation(r.program, "u_px_per_unit");
@@ -261,9 +263,9 @@ void Renderer::draw(const DrawBatch& batch, const Placement& placement, const Dr
 
   glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
   const GLsizei stride = static_cast<GLsizei>(sizeof(gpu::Vertex));
-  const GLuint locs[3] = {static_cast<GLuint>(r.a_pos), static_cast<GLuint>(r.a_coef),
-                          static_cast<GLuint>(r.a_info)};
-  for (GLuint i = 0; i < 3; ++i) {
+  const GLuint locs[4] = {static_cast<GLuint>(r.a_pos), static_cast<GLuint>(r.a_coef),
+                          static_cast<GLuint>(r.a_info), static_cast<GLuint>(r.a_fade)};
+  for (GLuint i = 0; i < 4; ++i) {
     glEnableVertexAttribArray(locs[i]);
     glVertexAttribPointer(locs[i], 4, GL_FLOAT, GL_FALSE, stride,
                           reinterpret_cast<const void*>(static_cast<std::uintptr_t>(i) * 16u));

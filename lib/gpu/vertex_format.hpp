@@ -1,7 +1,7 @@
 // The GPU vertex format of the curve shader (shaders/curve.*.glsl) and the
 // packing of meshes into it. Private to the library; tests include it.
 //
-// Unindexed triangles, 3 vec4 per vertex (48 bytes):
+// Unindexed triangles, 4 vec4 per vertex (64 bytes):
 //   a_pos  = (x, y, ox, oy)   position in outline units; (ox, oy) is the
 //            direction a fringe vertex moves per outline unit of dilation t
 //            (a miter vector at joins, so adjacent fringes share their edge
@@ -10,6 +10,11 @@
 //   a_info = (kind, w, dc0, dc1): kind 0 solid, 1 edge, 2 curve; w the conic
 //            weight (kind 2) or dc2 (kind 1: the derivative of c2, which has
 //            no other slot); dc0/dc1 the derivatives of c0/c1 per unit of t.
+//   a_fade = (f0, f1, df0, df1): two more boundary lines (signed distances
+//            as kind 1, with their derivatives per unit of t) that every
+//            kind fades by in full AA: the far side of a feature thinner than
+//            a pixel (a serif, a hairline) or the other line of a corner.
+//            Unused slots hold kUnusedDistance.
 // The vertex shader computes pos = xy + (ox,oy)*t, coef = a_coef + dc*t with
 // t = fringe_px / px_per_unit (t = 0 unless antialiasing is `full`, which
 // makes the fringe triangles zero-area so they produce no fragments).
@@ -18,7 +23,23 @@
 //           has no derivative slot); unused slots hold kUnusedDistance.
 //   kind 2: c0 = tau1, c1 = tau2 (barycentrics of the control triangle,
 //           p0 -> (1,0,0), control -> (0,1,0), p2 -> (0,0,1)), c2 = s (+1 the
-//           chord side is filled, -1 the outer side).
+//           chord side is filled, -1 the outer side), c3 = 1 where an
+//           interior triangle lies across a convex curve's chord (the shape
+//           is solid beyond it, over the chord's span), else 0.
+//   kind 3, 4: an interior triangle sharing an edge or a vertex with one
+//           (3) or two (4) curved triangles, wholly beyond that curve's chord
+//           (convex) or leg (concave) (full AA fades it near those curves, which can
+//           be closer than a pixel to it). Such triangles never move, so the
+//           offset and derivative slots are reused:
+//             a_pos  = (x, y, tau1 A, tau2 A)  barycentrics of curve A's
+//                      control triangle, extrapolated affinely to this vertex
+//             a_coef = kind 3: four line distances as kind 1;
+//                      kind 4: (line 0, line 1, tau1 B, tau2 B)
+//             a_info = (kind, w A, w B, shared edges: edge A + 3 * edge B)
+//           with edge 0 the chord (tau1 = 0; the curve is convex), 1 the leg
+//           p0-control (tau2 = 0) and 2 the leg control-p2 (tau0 = 0) (both
+//           concave). The shared edge determines the filled side.
+
 #pragma once
 
 #include <cstddef>
@@ -33,10 +54,14 @@ struct Vertex {
   float pos[4];
   float coef[4];
   float info[4];
+  float fade[4];
 };
-static_assert(sizeof(Vertex) == 48, "the shader's attribute layout assumes 48-byte vertices");
+static_assert(sizeof(Vertex) == 64, "the shader's attribute layout assumes 64-byte vertices");
 
-enum VertexKind : int { kSolid = 0, kEdge = 1, kCurve = 2 };
+enum VertexKind : int { kSolid = 0, kEdge = 1, kCurve = 2, kNextToCurve = 3, kNextToTwoCurves = 4 };
+
+// Which edge of a curve's control triangle an interior triangle shares.
+enum SharedCurveEdge : int { kChord = 0, kLegFromP0 = 1, kLegToP2 = 2 };
 
 // A constant distance far inside: its screen gradient is 0, which the shader
 // reads as "no edge in this slot".
