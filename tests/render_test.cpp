@@ -222,6 +222,45 @@ TEST(DrawBatchTransform, MovingAndScalingChangeOnlyUniforms) {
   EXPECT_NEAR(s.ink_ratio, 1.0, 0.03);
 }
 
+// --- Zoom accuracy: cubic (CFF) glyphs at 2,000 and 10,000 px/em ---------------
+// A window of the glyph is drawn; the mesh's cubic approximation is chosen for
+// the drawn scale (lod.hpp), so the outline stays within 1/16 px of the true
+// one. A boundary displaced by e changes a pixel's coverage by at most about
+// e times the boundary length inside the pixel (up to sqrt 2), so no pixel may
+// be off by more than sqrt(2)/16 plus the reference's own error.
+TEST(ZoomAccuracy, CubicGlyphWindowsStayWithinASixteenthPixel) {
+  Font font = Font::open(test::kNimbusRoman);
+  const double upem = font.metrics().units_per_em;
+  for (const char* text : {"S", "g"}) {
+    const ShapedLine line = shape_line(font, text);
+    const Outline outline = line_outline(font, line);
+    ASSERT_TRUE(outline.has_cubics());
+    for (double ppem : {2000.0, 10000.0}) {
+      DrawBatch batch = DrawBatch::from_text(gpu().cache, font, line, ppem);
+      const double scale = ppem / upem;
+      // A 200 x 200 window centred on the middle of the glyph's first cubic.
+      Vec2 centre{};
+      for (const Contour& c : outline.contours())
+        for (const Segment& seg : c.segments)
+          if (seg.kind == Segment::Kind::Cubic && centre == Vec2{}) centre = evaluate(seg, 0.5);
+      const int size = 200;
+      const Placement p{scale, size / 2.0 - scale * centre.x - 0.37, size / 2.0 + scale * centre.y + 0.21};
+      gpu().renderer.begin(size, size, Color{1, 1, 1, 1});
+      gpu().renderer.draw(batch, p, DrawOptions{});
+      const test::Coverage got = test::coverage_from_black_on_white(gpu().renderer.read_pixels());
+      const test::Coverage ref = test::freetype_reference(outline, p, size, size, 16);
+      const test::CoverageStats s = test::compare(got, ref);
+      std::printf("zoom %s at %.0f px/em: edge %.4f max %.4f (%zu edge pixels)\n", text, ppem, s.edge_mean_abs,
+                  s.max_abs, s.edge_pixels);
+      const double limit = std::sqrt(2.0) / 16 + 0.02;
+      if (s.max_abs > limit)
+        test::write_comparison(std::string("zoom-") + text + "-" + std::to_string(static_cast<int>(ppem)), got, ref);
+      EXPECT_GT(s.edge_pixels, 100u) << "the window must contain the outline";
+      EXPECT_LE(s.max_abs, limit);
+    }
+  }
+}
+
 // --- A circle from four rational quadratic arcs (w = sqrt(2)/2) ---------------
 
 Outline circle(double r) {
@@ -274,13 +313,14 @@ double max_radial_offset(const test::Coverage& cov, double cx, double cy, double
 }
 
 test::Coverage draw_circle(double radius, CurveMode mode, double cx, double cy, int size) {
+  Gpu& g = gpu();  // the GL context must exist before the batch uploads
   const Mesh mesh = build_mesh(circle(radius));
   DrawBatch batch = DrawBatch::from_mesh(mesh);
-  gpu().renderer.begin(size, size, Color{1, 1, 1, 1});
+  g.renderer.begin(size, size, Color{1, 1, 1, 1});
   DrawOptions options;
   options.curve_mode = mode;
-  gpu().renderer.draw(batch, Placement{1.0, cx, cy}, options);
-  return test::coverage_from_black_on_white(gpu().renderer.read_pixels());
+  g.renderer.draw(batch, Placement{1.0, cx, cy}, options);
+  return test::coverage_from_black_on_white(g.renderer.read_pixels());
 }
 
 TEST(Circle, ExactModeWithinAnEighthPixelAtRadius400) {
