@@ -2,7 +2,10 @@
 // DESIGN.md section 4 and against areas computed independently here.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -474,6 +477,185 @@ TEST(BuildMesh, RandomStars) {
     // Euler: V vertices (exactly collinear runs are merged) and h holes give
     // V - 2 + 2h triangles.
     EXPECT_EQ(mesh.triangles.size(), mesh.points.size() - 2 + (with_hole ? 2 : 0));
+  }
+}
+
+}  // namespace
+}  // namespace curvetext
+
+// --- Crossing, overlapping and edge-sharing contours (nonzero union) ---------
+
+namespace curvetext {
+namespace {
+
+// A circle of radius r from four quarter conics (w = sqrt(2)/2), area pi r^2.
+Outline circles(const std::vector<std::pair<Vec2, double>>& list, bool ccw = true) {
+  Outline o;
+  for (const auto& [c, r] : list) add_circle(o, c, r, ccw);
+  return o;
+}
+
+TEST(Crossing, TwoOverlappingSquares) {
+  Outline o;
+  add_polygon(o, square(0, 0, 10, true));
+  add_polygon(o, square(5, 5, 10, true));
+  build_and_check(o, 175.0);
+}
+
+TEST(Crossing, OppositeOrientationsCancelInTheOverlap) {
+  // Windings +1, -1 and 0 (overlap): the nonzero fill is the symmetric difference.
+  Outline o;
+  add_polygon(o, square(0, 0, 10, true));
+  add_polygon(o, square(5, 5, 10, false));
+  build_and_check(o, 150.0);
+  // Both clockwise: the same union as counter-clockwise.
+  Outline cw;
+  add_polygon(cw, square(0, 0, 10, false));
+  add_polygon(cw, square(5, 5, 10, false));
+  build_and_check(cw, 175.0);
+}
+
+TEST(Crossing, SquareOverlappedByCircle) {
+  // Circle (12, 5) radius 5 crosses the square's edge x = 10 at y = 5 -+ sqrt(21):
+  // conics crossing a line properly. Union = square + circle - circular
+  // segment left of x = 10 (distance 2 from the centre).
+  Outline o;
+  add_polygon(o, square(0, 0, 10, true));
+  add_circle(o, {12, 5}, 5, true);
+  const double segment = 25.0 * std::acos(2.0 / 5.0) - 2.0 * std::sqrt(21.0);
+  build_and_check(o, 100.0 + 25.0 * std::numbers::pi - segment, 1e-7);
+}
+
+TEST(Crossing, FigureEightBowTie) {
+  // One contour whose edges cross at (5, 5): two triangles of opposite
+  // orientation, both filled by nonzero.
+  Outline o;
+  add_polygon(o, {{0, 0}, {10, 10}, {10, 0}, {0, 10}});
+  build_and_check(o, 50.0);
+}
+
+TEST(Crossing, PentagramFillsItsCentre) {
+  // Five outer points joined 0-2-4-1-3: winding 2 in the central pentagon,
+  // which nonzero fills. Area = 10 triangles (centre, outer point, inner point).
+  const double R = 100.0, pi = std::numbers::pi;
+  std::vector<Vec2> pts;
+  for (int k = 0; k < 5; ++k) {
+    const double a = pi / 2 + 2.0 * pi * (2 * k % 5) / 5.0;
+    pts.push_back({R * std::cos(a), R * std::sin(a)});
+  }
+  Outline o;
+  add_polygon(o, pts);
+  const double inner = R * std::cos(2.0 * pi / 5.0) / std::cos(pi / 5.0);
+  build_and_check(o, 10.0 * 0.5 * R * inner * std::sin(pi / 5.0), 1e-9);
+}
+
+TEST(Crossing, IdenticalContours) {
+  Outline o;
+  add_polygon(o, square(0, 0, 10, true));
+  add_polygon(o, square(0, 0, 10, true));
+  build_and_check(o, 100.0);
+  // The same with curves (identical conics are merged, not subdivided).
+  build_and_check(circles({{{0, 0}, 10}, {{0, 0}, 10}}), 100.0 * std::numbers::pi, 1e-9);
+  // Opposite orientations cancel everywhere: nothing is filled.
+  Outline cancel;
+  add_polygon(cancel, square(0, 0, 10, true));
+  add_polygon(cancel, square(0, 0, 10, false));
+  const Mesh mesh = build_and_check(cancel, 0.0);
+  EXPECT_TRUE(mesh.empty());
+}
+
+TEST(Crossing, ContoursSharingAnEdge) {
+  // Whole edge shared: the common edge is interior to the union.
+  Outline o;
+  add_polygon(o, square(0, 0, 10, true));
+  add_polygon(o, square(10, 0, 10, true));
+  const Mesh mesh = build_and_check(o, 200.0);
+  for (const auto& b : mesh.boundary_lines) {
+    EXPECT_FALSE(mesh.points[b[0]].x == 10 && mesh.points[b[1]].x == 10) << "shared edge kept as boundary";
+  }
+  // Part of an edge shared (collinear overlap and T-junctions).
+  Outline part;
+  add_polygon(part, square(0, 0, 10, true));
+  add_polygon(part, square(10, 5, 10, true));
+  build_and_check(part, 200.0);
+  // Opposite orientations sharing an edge: still the union of two squares.
+  Outline opposite;
+  add_polygon(opposite, square(0, 0, 10, true));
+  add_polygon(opposite, square(10, 0, 10, false));
+  build_and_check(opposite, 200.0);
+}
+
+TEST(Crossing, ConicCrossingConic) {
+  // Two circles (w = sqrt(2)/2): union = 2 pi r^2 - lens.
+  const double r = 10.0, d = 12.0;
+  const double lens = 2.0 * r * r * std::acos(d / (2.0 * r)) - 0.5 * d * std::sqrt(4.0 * r * r - d * d);
+  build_and_check(circles({{{0, 0}, r}, {{d, 0}, r}}), 2.0 * std::numbers::pi * r * r - lens, 1e-7);
+  // Two parabolic caps y = x(10-x)/5 and y = (x-5)(15-x)/5 crossing at
+  // (7.5, 3.75): union = 2 * int_0^7.5 x(10-x)/5 dx = 56.25.
+  Outline o;
+  o.move_to({0, 0});
+  o.line_to({10, 0});
+  o.conic_to({5, 10}, {0, 0});
+  o.close();
+  o.move_to({5, 0});
+  o.line_to({15, 0});
+  o.conic_to({10, 10}, {5, 0});
+  o.close();
+  build_and_check(o, 56.25, 1e-7);
+}
+
+TEST(Crossing, ManySegmentsThroughOnePoint) {
+  // Three bow-ties crossing exactly at the origin (six edges through one
+  // point), plus a contour with a vertex on another's edge. The reference is
+  // check_mesh's own sweep, computed without the resolver.
+  Outline o;
+  add_polygon(o, {{-10, -1}, {10, 1}, {10, -1}, {-10, 1}});
+  add_polygon(o, {{-1, -10}, {1, 10}, {-1, 10}, {1, -10}});
+  add_polygon(o, {{-8, -7}, {8, 7}, {7, 8}, {-7, -8}});
+  add_polygon(o, {{0, 0}, {5, -3}, {6, 3}});
+  const MeshOptions options;
+  const Mesh mesh = build_mesh(o, options);
+  const MeshCheck check = check_mesh(mesh, o);
+  for (const std::string& p : check.problems) ADD_FAILURE() << p;
+  EXPECT_GT(check.area_outline, 60.0);
+}
+
+TEST(Crossing, RandomSelfIntersectingPolygons) {
+  // Random polygons on a small integer grid: crossings, collinear overlaps,
+  // repeated points and vertices on edges are all common.
+  std::mt19937 rng(777);
+  std::uniform_int_distribution<int> coord(0, 12);
+  std::uniform_int_distribution<int> count(3, 12);
+  for (int trial = 0; trial < 400; ++trial) {
+    Outline o;
+    const int contours = 1 + trial % 3;
+    for (int c = 0; c < contours; ++c) {
+      std::vector<Vec2> pts;
+      const int n = count(rng);
+      for (int k = 0; k < n; ++k) pts.push_back({static_cast<double>(coord(rng)), static_cast<double>(coord(rng))});
+      add_polygon(o, pts);
+    }
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    const Mesh mesh = build_mesh(o);
+    const MeshCheck check = check_mesh(mesh, o);
+    for (const std::string& p : check.problems) ADD_FAILURE() << p;
+  }
+}
+
+TEST(Crossing, RandomOverlappingCircles) {
+  std::mt19937 rng(99);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int trial = 0; trial < 100; ++trial) {
+    Outline o;
+    const int n = 2 + trial % 4;
+    for (int k = 0; k < n; ++k) {
+      add_circle(o, {std::round(40 * unit(rng)), std::round(40 * unit(rng))}, std::round(5 + 20 * unit(rng)),
+                 unit(rng) < 0.8);
+    }
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    const Mesh mesh = build_mesh(o);
+    const MeshCheck check = check_mesh(mesh, o);
+    for (const std::string& p : check.problems) ADD_FAILURE() << p;
   }
 }
 

@@ -1,4 +1,6 @@
-// build_mesh: outline -> cleaned rings -> separated hulls -> nesting and
+// build_mesh: outline -> cleaned rings -> separated hulls -> (crossing,
+// overlapping or edge-sharing contours only: resolve.cpp's non-crossing rings
+// of the nonzero fill, hulls separated again) -> nesting and
 // orientation -> polygon loops + curved triangles -> bridged loops -> ear
 // clipping -> Lawson flips -> indexed mesh (DESIGN.md section 4, paper 3.1).
 #include <algorithm>
@@ -97,6 +99,19 @@ bool simplify_pass(Ring& ring) {
   return changed;
 }
 
+// Every piece a line and every vertex on one line: a ring that encloses nothing.
+bool all_collinear(const Ring& ring) {
+  std::size_t k = 1;
+  while (k < ring.size() && ring[k].a == ring[0].a) ++k;
+  if (k == ring.size()) return true;
+  for (const Piece& p : ring) {
+    if (p.conic || orient2d(ring[0].a, ring[k].a, p.a) != 0) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 // Splits a closed ring at every vertex it passes through more than once into
 // closed sub-rings without repeated vertices (a checkerboard drawn as one
 // contour that touches itself at cell corners becomes one ring per lobe).
@@ -112,6 +127,7 @@ bool simplify_pass(Ring& ring) {
 // Walk the pieces keeping the open path on a stack; when a piece starts at a
 // vertex already on the stack, the pieces since that vertex form a closed
 // loop: cut it off. What remains at the end starts and ends at ring[0].a.
+
 std::vector<Ring> split_at_repeated_vertices(const Ring& ring) {
   std::vector<Ring> loops;
   Ring path;
@@ -132,8 +148,6 @@ std::vector<Ring> split_at_repeated_vertices(const Ring& ring) {
   if (!path.empty()) loops.push_back(std::move(path));
   return loops;
 }
-
-}  // namespace
 
 double ring_area(const Ring& ring) {
   double area = 0.0;
@@ -176,7 +190,10 @@ std::vector<Ring> clean_rings(const Outline& quadratic) {
     for (Ring& loop : split_at_repeated_vertices(ring)) {
       const bool has_conic = std::any_of(loop.begin(), loop.end(), [](const Piece& p) { return p.conic; });
       if (loop.size() < 2 || (loop.size() == 2 && !has_conic)) continue;  // a lone back-and-forth: no area
-      if (ring_area(loop) == 0.0) continue;
+      // A ring without area is dropped only when it is a flat run of lines:
+      // a self-crossing ring (a bow-tie) can have zero signed area and still
+      // fill its lobes, which the crossing resolver sorts out.
+      if (ring_area(loop) == 0.0 && (!kResolveCrossingContours || all_collinear(loop))) continue;
       rings.push_back(std::move(loop));
     }
   }
@@ -311,7 +328,7 @@ bool hulls_overlap(const Vec2* p, int np, const Vec2* q, int nq) {
   return np == 3 && nq == 3 && triangle_interiors_intersect(p, q);
 }
 
-void separate_hulls(std::vector<Ring>& rings) {
+bool separate_hulls(std::vector<Ring>& rings) {
   struct HullRef {
     Box box;
     std::uint32_t ring;
@@ -337,6 +354,7 @@ void separate_hulls(std::vector<Ring>& rings) {
     std::vector<std::vector<char>> split_marks(rings.size());
     for (std::size_t r = 0; r < rings.size(); ++r) split_marks[r].assign(rings[r].size(), 0);
     bool any = false;
+    bool overlap_left = false;  // an overlap seen in this pass
     auto hull_of = [&](const HullRef& ref, Vec2* out) {
       const Piece& piece = rings[ref.ring][ref.piece];
       out[0] = piece.a;
@@ -353,6 +371,12 @@ void separate_hulls(std::vector<Ring>& rings) {
       for (std::size_t j = i + 1; j < refs.size() && refs[j].box.min.x <= refs[i].box.max.x; ++j) {
         const Piece& pj = rings[refs[j].ring][refs[j].piece];
         if (!pi.conic && !pj.conic) continue;
+        // Identical curves (duplicated contours) overlap at every depth;
+        // splitting them is useless, the crossing resolver merges them.
+        if (pi.conic && pj.conic && pi.control == pj.control && pi.weight == pj.weight) {
+          const Vec2 ei = ring_end(rings[refs[i].ring], refs[i].piece), ej = ring_end(rings[refs[j].ring], refs[j].piece);
+          if ((pi.a == pj.a && ei == ej) || (pi.a == ej && ei == pj.a)) continue;
+        }
         if (!boxes_overlap(refs[i].box, refs[j].box)) continue;
         Vec2 hi[3], hj[3];
         const int ni = hull_of(refs[i], hi), nj = hull_of(refs[j], hj);
@@ -366,9 +390,10 @@ void separate_hulls(std::vector<Ring>& rings) {
           split_marks[refs[j].ring][refs[j].piece] = 1;
           any = true;
         }
+        overlap_left = true;
       }
     }
-    if (!any) return;
+    if (!any) return !overlap_left;
     for (std::size_t r = 0; r < rings.size(); ++r) {
       Ring next;
       next.reserve(rings[r].size() + 8);
@@ -385,6 +410,7 @@ void separate_hulls(std::vector<Ring>& rings) {
       rings[r].swap(next);
     }
   }
+  return false;  // passes used up right after splitting: not known to be separated
 }
 
 // --- Nesting -------------------------------------------------------------------------
@@ -425,7 +451,16 @@ bool ring_inside(const Ring& inner, const Ring& outer) {
     if (w == Where::Inside) return true;
     if (w == Where::Outside) return false;
   }
-  return false;  // every vertex on the other ring: a duplicate, not nested
+  // Every vertex on the other ring: an island touching its hole at all its
+  // corners (common after resolving crossings), or a duplicate. Ask the
+  // middles of the chords; a chord that is not an edge of `outer` has its
+  // middle strictly inside or outside it.
+  for (std::size_t i = 0; i < inner.size(); ++i) {
+    const Where w = point_in_ring(outer, (inner[i].a + ring_end(inner, i)) * 0.5);
+    if (w == Where::Inside) return true;
+    if (w == Where::Outside) return false;
+  }
+  return false;  // every chord on the other ring: a duplicate, not nested
 }
 
 Ring reversed(const Ring& ring) {
@@ -541,7 +576,14 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
   }
   const Outline quadratic = to_quadratic_outline(outline, options.cubic_tolerance);
   std::vector<Ring> rings = clean_rings(quadratic);
-  separate_hulls(rings);
+  const bool separated = separate_hulls(rings);
+  // Crossing, overlapping or edge-sharing contours: resolve them into
+  // non-crossing rings of the nonzero fill first (skipped, after one sweep,
+  // for the usual glyph whose contours do not meet).
+  if (kResolveCrossingContours && rings_cross(rings, separated)) {
+    rings = resolve_crossings(rings);
+    separate_hulls(rings);
+  }
   std::vector<Region> regions = nest_rings(std::move(rings));
 
   Mesh mesh;

@@ -40,11 +40,32 @@ std::vector<Ring> clean_rings(const Outline& quadratic);
 bool hulls_overlap(const Vec2* p, int np, const Vec2* q, int nq);
 
 // Subdivides conics until no conic hull overlaps another piece's hull, to at
-// most tolerance::kMaxHullSubdivisionDepth levels.
-void separate_hulls(std::vector<Ring>& rings);
+// most tolerance::kMaxHullSubdivisionDepth levels. Returns true when no conic
+// hull overlaps another piece's any more (identical conics aside).
+bool separate_hulls(std::vector<Ring>& rings);
 
 // Position of p against the chord polygon of a ring (nonzero winding).
 Where point_in_ring(const Ring& ring, Vec2 p);
+
+// Splits a closed ring at every vertex it passes through more than once into
+// sub-rings that pass through each vertex once (same winding everywhere).
+std::vector<Ring> split_at_repeated_vertices(const Ring& ring);
+
+// Internal switch for the crossing resolver (resolve.cpp). Off, crossing
+// outlines go through the non-crossing path as before (wrong fill, no crash).
+inline constexpr bool kResolveCrossingContours = true;
+
+// True when two pieces of the (hull-separated) rings share a point other
+// than a common vertex: crossings, T-junctions, shared stretches, duplicates,
+// conic hulls still overlapping something at the subdivision limit.
+// `hulls_separated`: separate_hulls reported success, so conic hulls need not
+// be tested again (only lines against lines and shared end points).
+bool rings_cross(const std::vector<Ring>& rings, bool hulls_separated);
+
+// Non-crossing rings, fill on the left (outer counter-clockwise, holes
+// clockwise), covering exactly the nonzero fill of `rings` (crossing conics
+// replaced by chords at the hull-subdivision limit). Input: separated hulls.
+std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings);
 
 // Nonzero-rule roles of non-crossing rings: which bound the fill, their
 // orientation normalised, holes attached to their innermost container.

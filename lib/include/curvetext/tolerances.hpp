@@ -16,6 +16,12 @@ inline constexpr int kMaxQuadraticsPerCubic = 64;
 // --- Tessellation -------------------------------------------------------------
 // Relative area error allowed by the area identity check (mesh vs outline).
 inline constexpr double kAreaIdentityRelative = 1e-6;
+// Floor of the area the identity's error is relative to, as a fraction of the
+// squared diagonal of the outline's control box (dimensionless). Outlines
+// whose nonzero area is zero (contours that cancel, back-and-forth lines)
+// have reference areas of rounding noise (~1e-16 of diag^2) otherwise
+// compared relatively to nothing.
+inline constexpr double kAreaIdentityFloorOfBox = 1e-6;
 // Deepest de Casteljau subdivision used to separate overlapping curve hulls.
 inline constexpr int kMaxHullSubdivisionDepth = 10;
 // Points closer than this (font units) are merged when building loops.

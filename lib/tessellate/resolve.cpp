@@ -1,0 +1,563 @@
+// Resolving crossing contours into non-crossing rings (DESIGN.md section 4:
+// overlapping, self-intersecting and edge-sharing contours, nonzero rule).
+//
+// Strategy. Hull separation (separate_hulls) has already subdivided conics
+// whose control triangles overlap another piece's; conics that cross or touch
+// something keep overlapping however deep they are split, so they end at the
+// subdivision limit (parameter span 2^-kMaxHullSubdivisionDepth). Those last
+// small pieces are replaced by their chords: their arcs deviate from the chord
+// by a sagitta of ~1e-6 of the curve's size, far below a pixel. Every conic
+// that is left then has a hull no other piece enters, so the arrangement's
+// topology is that of the chords: a line arrangement. Lines are split at their
+// crossings and T-junctions (exact orient2d decides; the crossing point is
+// rounded to doubles and snapped to vertices within 1e-12 of the outline's
+// size), conics the rounding pushed into conflict are split further (the
+// loop in resolve_crossings), coincident edges merged with a net direction
+// count, and each edge's left/right winding number obtained by a ray cast from
+// its midpoint against the other edges (binned by span; exact orient2d). An edge bounds the fill when exactly one
+// side has winding != 0; it is kept, directed with the fill on its left, and
+// the kept edges are linked into loops turning at every vertex to the first
+// edge clockwise from the one we came along (which traces face boundaries, so
+// loops never cross). The loops go through the usual split/nesting path.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "curvetext/curves.hpp"
+#include "curvetext/tolerances.hpp"
+#include "tessellate/rings.hpp"
+
+namespace curvetext::detail {
+namespace {
+
+Vec2 canonical(Vec2 p) { return {p.x + 0.0, p.y + 0.0}; }
+
+// A piece of the arrangement: a line or a conic whose hull nothing enters.
+struct Edge {
+  Vec2 a, b;
+  Vec2 control;
+  double weight = 1.0;
+  bool conic = false;
+  int depth = 0;
+  int count = 1;  // net number of times the outline runs a -> b
+  Box box;
+};
+
+Box edge_box(const Edge& e) {
+  Box box;
+  box.add(e.a);
+  box.add(e.b);
+  if (e.conic) box.add(e.control);
+  return box;
+}
+
+int hull_points(const Edge& e, Vec2* out) {
+  out[0] = e.a;
+  if (e.conic) {
+    out[1] = e.control;
+    out[2] = e.b;
+    return 3;
+  }
+  out[1] = e.b;
+  return 2;
+}
+
+bool same_ends(const Edge& e, const Edge& f) { return (e.a == f.a && e.b == f.b) || (e.a == f.b && e.b == f.a); }
+
+// Same curve, in either direction.
+bool same_curve(const Edge& e, const Edge& f) {
+  if (!same_ends(e, f) || e.conic != f.conic) return false;
+  return !e.conic || (e.control == f.control && e.weight == f.weight);
+}
+
+// Two lines share a point other than one common end point (a crossing, a
+// T-junction, a collinear overlap or a duplicate).
+bool lines_conflict(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  if (!segments_intersect(a, b, c, d)) return false;
+  if ((a == c && b == d) || (a == d && b == c)) return true;
+  Vec2 shared, p, q;  // the common end point and the two other ends
+  if (a == c) {
+    shared = a, p = b, q = d;
+  } else if (a == d) {
+    shared = a, p = b, q = c;
+  } else if (b == c) {
+    shared = b, p = a, q = d;
+  } else if (b == d) {
+    shared = b, p = a, q = c;
+  } else {
+    return true;
+  }
+  // Sharing an end, they meet elsewhere only when one runs along the other.
+  return point_on_segment(shared, p, q) || point_on_segment(shared, q, p);
+}
+
+// Pairs of edges with overlapping boxes (sweep over x); f(i, j) returns true to stop.
+template <class F>
+bool for_each_close_pair(const std::vector<Edge>& edges, F&& f) {
+  std::vector<std::uint32_t> order(edges.size());
+  for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(),
+            [&](std::uint32_t x, std::uint32_t y) { return edges[x].box.min.x < edges[y].box.min.x; });
+  for (std::size_t oi = 0; oi < order.size(); ++oi) {
+    const Edge& e = edges[order[oi]];
+    for (std::size_t oj = oi + 1; oj < order.size() && edges[order[oj]].box.min.x <= e.box.max.x; ++oj) {
+      if (!boxes_overlap(e.box, edges[order[oj]].box)) continue;
+      if (f(order[oi], order[oj])) return true;
+    }
+  }
+  return false;
+}
+
+// Whether two pieces conflict: lines by lines_conflict; with a conic, any
+// overlap of hulls beyond a shared vertex, or the same end points (the chords
+// would coincide). Identical curves are reported too (they merge later).
+bool pieces_conflict(const Edge& e, const Edge& f) {
+  if (!e.conic && !f.conic) return lines_conflict(e.a, e.b, f.a, f.b);
+  if (same_ends(e, f)) return true;
+  Vec2 he[3], hf[3];
+  const int ne = hull_points(e, he), nf = hull_points(f, hf);
+  return hulls_overlap(he, ne, hf, nf);
+}
+
+std::vector<Edge> edges_of(const std::vector<Ring>& rings) {
+  std::vector<Edge> edges;
+  for (const Ring& ring : rings) {
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      Edge e;
+      e.a = ring[i].a;
+      e.b = ring_end(ring, i);
+      e.conic = ring[i].conic;
+      e.control = ring[i].control;
+      e.weight = ring[i].weight;
+      e.depth = ring[i].depth;
+      e.box = edge_box(e);
+      edges.push_back(e);
+    }
+  }
+  return edges;
+}
+
+// Crossing points computed from different pairs of lines through one point
+// differ in their last bits; left apart they make slivers and zero-length
+// loops. Cut points closer than the merge distance to an end point of any
+// edge become that end point, and to each other the first of them (the merge
+// distance is 1e-9 font units or 1e-12 of the outline's size, far above the
+// rounding error of a crossing of lines that are not nearly parallel).
+void snap_cuts(const std::vector<Edge>& edges, std::vector<std::vector<Vec2>>& cuts) {
+  std::vector<Vec2> vertices;
+  Box all;
+  for (const Edge& e : edges) {
+    vertices.push_back(e.a);
+    vertices.push_back(e.b);
+    all.add(e.a);
+    all.add(e.b);
+  }
+  const double extent = std::max(all.max.x - all.min.x, all.max.y - all.min.y);
+  const double eps = std::max(tolerance::kMergeDistanceFontUnits, 1e-12 * extent);
+  auto by_x = [](Vec2 a, Vec2 b) { return a.x != b.x ? a.x < b.x : a.y < b.y; };
+  std::sort(vertices.begin(), vertices.end(), by_x);
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  // The nearest point of a list sorted by x within eps (Chebyshev) of p.
+  auto nearest = [eps](const std::vector<Vec2>& sorted, Vec2 p, Vec2& out) {
+    auto it = std::lower_bound(sorted.begin(), sorted.end(), p.x - eps, [](Vec2 v, double x) { return v.x < x; });
+    double best = eps;
+    bool found = false;
+    for (; it != sorted.end() && it->x <= p.x + eps; ++it) {
+      const double d = std::max(std::fabs(it->x - p.x), std::fabs(it->y - p.y));
+      if (d <= best) {
+        best = d;
+        out = *it;
+        found = true;
+      }
+    }
+    return found;
+  };
+  // First onto existing vertices (all of them, whatever the order of
+  // discovery), then the remaining cut points onto each other.
+  struct Loose {
+    Vec2 p;
+    std::size_t edge, slot;
+  };
+  std::vector<Loose> loose;
+  for (std::size_t i = 0; i < cuts.size(); ++i) {
+    for (std::size_t k = 0; k < cuts[i].size(); ++k) {
+      Vec2 v;
+      if (nearest(vertices, cuts[i][k], v)) {
+        cuts[i][k] = v;
+      } else {
+        loose.push_back({cuts[i][k], i, k});
+      }
+    }
+  }
+  std::sort(loose.begin(), loose.end(), [&](const Loose& a, const Loose& b) { return by_x(a.p, b.p); });
+  std::vector<Vec2> reps;  // sorted by x because `loose` is
+  for (const Loose& l : loose) {
+    Vec2 r;
+    if (nearest(reps, l.p, r)) {
+      cuts[l.edge][l.slot] = r;
+    } else {
+      reps.push_back(l.p);
+    }
+  }
+}
+
+// Splits line edges at every crossing and every end point lying inside them.
+// Rounding a crossing point to doubles can move it off either line by an ulp
+// and, very rarely, create a new conflict; a few rounds settle that (bounded).
+void split_lines(std::vector<Edge>& edges) {
+  constexpr int kRounds = 4;
+  for (int round = 0; round < kRounds; ++round) {
+    std::vector<std::vector<Vec2>> cuts(edges.size());
+    bool any = false;
+    auto cut = [&](std::uint32_t i, Vec2 p) {
+      if (p == edges[i].a || p == edges[i].b) return;
+      cuts[i].push_back(canonical(p));
+      any = true;
+    };
+    for_each_close_pair(edges, [&](std::uint32_t i, std::uint32_t j) {
+      const Edge& e = edges[i];
+      const Edge& f = edges[j];
+      if (e.conic || f.conic || same_ends(e, f)) return false;
+      const int o1 = orient2d(e.a, e.b, f.a), o2 = orient2d(e.a, e.b, f.b);
+      const int o3 = orient2d(f.a, f.b, e.a), o4 = orient2d(f.a, f.b, e.b);
+      if (o1 * o2 < 0 && o3 * o4 < 0) {
+        // Proper crossing: the point from e's parametrisation, t clamped to
+        // the open interval (rounding cannot push it past an end).
+        const Vec2 r = e.b - e.a, s = f.b - f.a;
+        double t = cross(f.a - e.a, s) / cross(r, s);
+        t = std::clamp(t, 0.0, 1.0);
+        const Vec2 p = e.a + r * t;
+        cut(i, p);
+        cut(j, p);
+        return false;
+      }
+      // Touching: an end point of one on the other (T-junction, overlap).
+      if (o1 == 0 && point_on_segment(e.a, e.b, f.a)) cut(i, f.a);
+      if (o2 == 0 && point_on_segment(e.a, e.b, f.b)) cut(i, f.b);
+      if (o3 == 0 && point_on_segment(f.a, f.b, e.a)) cut(j, e.a);
+      if (o4 == 0 && point_on_segment(f.a, f.b, e.b)) cut(j, e.b);
+      return false;
+    });
+    if (!any) return;
+    snap_cuts(edges, cuts);
+    std::vector<Edge> next;
+    next.reserve(edges.size() + 16);
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+      if (cuts[i].empty()) {
+        next.push_back(edges[i]);
+        continue;
+      }
+      const Edge& e = edges[i];
+      const Vec2 dir = e.b - e.a;
+      std::vector<Vec2>& c = cuts[i];
+      std::sort(c.begin(), c.end(), [&](Vec2 p, Vec2 q) { return dot(p - e.a, dir) < dot(q - e.a, dir); });
+      c.erase(std::unique(c.begin(), c.end()), c.end());
+      Vec2 from = e.a;
+      c.push_back(e.b);
+      for (const Vec2 p : c) {
+        if (p == from) continue;
+        Edge piece = e;
+        piece.a = from;
+        piece.b = p;
+        piece.box = edge_box(piece);
+        next.push_back(piece);
+        from = p;
+      }
+    }
+    edges.swap(next);
+  }
+}
+
+// Coincident edges become one with the sum of their directed counts; edges
+// whose count cancels (a contour running back over another) disappear.
+std::vector<Edge> merge_coincident(const std::vector<Edge>& edges) {
+  using Key = std::tuple<double, double, double, double, bool, double, double, double>;
+  std::map<Key, std::size_t> index;
+  std::vector<Edge> merged;
+  for (const Edge& e0 : edges) {
+    Edge e = e0;
+    if (std::make_pair(e.b.x, e.b.y) < std::make_pair(e.a.x, e.a.y)) {
+      std::swap(e.a, e.b);
+      e.count = -e.count;
+    }
+    if (e.a == e.b) continue;
+    const Key key{e.a.x, e.a.y, e.b.x, e.b.y, e.conic, e.conic ? e.control.x : 0.0, e.conic ? e.control.y : 0.0,
+                  e.conic ? e.weight : 0.0};
+    const auto [it, inserted] = index.try_emplace(key, merged.size());
+    if (inserted) {
+      merged.push_back(e);
+    } else {
+      merged[it->second].count += e.count;
+    }
+  }
+  merged.erase(std::remove_if(merged.begin(), merged.end(), [](const Edge& e) { return e.count == 0; }),
+               merged.end());
+  return merged;
+}
+
+// Winding numbers just left and right of each edge. A ray from the edge's
+// midpoint m along +x (or +y for edges closer to horizontal, done by rotating
+// every point by -90 degrees, which is exact) crosses the other edges; the
+// half-open rule with exact orient2d counts each crossing once. Other edges
+// do not pass within the edge's interior (the arrangement does not cross),
+// so the rounded m is on the same side of all of them as the true midpoint;
+// conic caps are not entered by the ray's start (hulls are separated), and a
+// ray through a cap crosses chord and arc with the same net count.
+void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::vector<int>& right) {
+  const std::size_t n = edges.size();
+  left.assign(n, 0);
+  right.assign(n, 0);
+  if (n == 0) return;
+  // Only edges whose span in the ray's perpendicular coordinate contains the
+  // midpoint's can be crossed. Edges go into bins of y (for horizontal rays)
+  // and of x (for vertical ones) by their closed span, so a query looks at
+  // the edges of one bin: about sqrt(n) bins keep it near-linear for glyphs
+  // while every bin still holds the edges it must.
+  struct Bins {
+    double lo = 0.0, scale = 0.0;
+    std::size_t count = 1;
+    std::vector<std::vector<std::uint32_t>> members;
+    std::size_t bin(double v) const {
+      const double k = (v - lo) * scale;
+      if (!(k > 0.0)) return 0;
+      return std::min(count - 1, static_cast<std::size_t>(k));
+    }
+  };
+  Box all;
+  for (const Edge& e : edges) {
+    all.add(e.a);
+    all.add(e.b);
+  }
+  const std::size_t count = std::max<std::size_t>(1, static_cast<std::size_t>(std::sqrt(static_cast<double>(n))));
+  auto make_bins = [&](bool use_x) {
+    Bins b;
+    b.count = count;
+    b.lo = use_x ? all.min.x : all.min.y;
+    const double hi = use_x ? all.max.x : all.max.y;
+    b.scale = hi > b.lo ? static_cast<double>(count) / (hi - b.lo) : 0.0;
+    b.members.resize(count);
+    for (std::uint32_t j = 0; j < n; ++j) {
+      const double v0 = use_x ? std::min(edges[j].a.x, edges[j].b.x) : std::min(edges[j].a.y, edges[j].b.y);
+      const double v1 = use_x ? std::max(edges[j].a.x, edges[j].b.x) : std::max(edges[j].a.y, edges[j].b.y);
+      for (std::size_t k = b.bin(v0), last = b.bin(v1); k <= last; ++k) b.members[k].push_back(j);
+    }
+    return b;
+  };
+  const Bins by_y = make_bins(false), by_x = make_bins(true);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Edge& e = edges[i];
+    const bool rotate = std::fabs(e.b.x - e.a.x) > std::fabs(e.b.y - e.a.y);
+    auto tf = [rotate](Vec2 p) { return rotate ? Vec2{p.y, -p.x} : p; };
+    const Vec2 mid = (e.a + e.b) * 0.5;
+    const Vec2 m = tf(mid);
+    const std::vector<std::uint32_t>& candidates = rotate ? by_x.members[by_x.bin(mid.x)] : by_y.members[by_y.bin(mid.y)];
+    int w = 0;
+    for (const std::uint32_t j : candidates) {
+      if (j == i) continue;
+      const Edge& f = edges[j];
+      const Vec2 a = tf(f.a), b = tf(f.b);
+      // For an edge sharing an end point with e, every point of e's open
+      // interior is on the side of f's line where e's other end is; asking
+      // that end instead of the rounded midpoint is exact even for a tiny e.
+      Vec2 probe = m;
+      if (f.a == e.a || f.b == e.a) probe = tf(e.b);
+      if (f.a == e.b || f.b == e.b) probe = tf(e.a);
+      if (a.y <= m.y) {
+        if (b.y > m.y && orient2d(a, b, probe) > 0) w += f.count;
+      } else if (b.y <= m.y && orient2d(a, b, probe) < 0) {
+        w -= f.count;
+      }
+    }
+    const bool upward = tf(e.b).y > tf(e.a).y;
+    left[i] = upward ? w + e.count : w;
+    right[i] = upward ? w : w - e.count;
+  }
+}
+
+// Angular order of directions from a common vertex v (exact: signs of
+// coordinate differences are exact in floating point, cross signs by orient2d).
+bool angle_less(Vec2 v, Vec2 p, Vec2 q) {
+  auto half = [v](Vec2 r) { return (r.y < v.y || (r.y == v.y && r.x < v.x)) ? 1 : 0; };
+  const int hp = half(p), hq = half(q);
+  if (hp != hq) return hp < hq;
+  return orient2d(v, p, q) > 0;
+}
+
+}  // namespace
+
+bool rings_cross(const std::vector<Ring>& rings, bool hulls_separated) {
+  const std::vector<Edge> edges = edges_of(rings);
+  return for_each_close_pair(edges, [&](std::uint32_t i, std::uint32_t j) {
+    const Edge& e = edges[i];
+    const Edge& f = edges[j];
+    if (e.conic || f.conic) {
+      if (same_ends(e, f)) return true;  // chords would coincide (or duplicates)
+      if (hulls_separated) return false;
+      return pieces_conflict(e, f);
+    }
+    // Lines sharing one end point (consecutive pieces, mostly) conflict only
+    // when they run along each other: one exact orientation test.
+    Vec2 shared, p, q;
+    if (e.a == f.a) {
+      shared = e.a, p = e.b, q = f.b;
+    } else if (e.a == f.b) {
+      shared = e.a, p = e.b, q = f.a;
+    } else if (e.b == f.a) {
+      shared = e.b, p = e.a, q = f.b;
+    } else if (e.b == f.b) {
+      shared = e.b, p = e.a, q = f.a;
+    } else {
+      return segments_intersect(e.a, e.b, f.a, f.b);
+    }
+    if (p == q) return true;  // the same segment twice
+    return orient2d(shared, p, q) == 0 && dot(p - shared, q - shared) > 0.0;
+  });
+}
+
+std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings) {
+  std::vector<Edge> edges = edges_of(rings);
+
+  // Conics in conflict with another piece (sharing a point other than a
+  // common vertex, or both end points) are halved, and flattened once at the
+  // subdivision limit, where their arcs are within ~1e-6 of the curve's size
+  // of their chords. Splitting lines at crossings can move a line by the
+  // rounding of a crossing point; near a conic's vertex that can make it
+  // enter the conic's hull, so conflicts are looked for again after every
+  // round of line splitting. Each round deepens every conic still in
+  // conflict, so the loop ends after at most kMaxHullSubdivisionDepth + 2
+  // rounds with no conic in conflict.
+  constexpr int kMaxRounds = tolerance::kMaxHullSubdivisionDepth + 2;
+  for (int round = 0; round <= kMaxRounds; ++round) {
+    std::vector<char> marked(edges.size(), 0);
+    bool any = false;
+    for_each_close_pair(edges, [&](std::uint32_t i, std::uint32_t j) {
+      const Edge& e = edges[i];
+      const Edge& f = edges[j];
+      if (!e.conic && !f.conic) return false;
+      if (same_curve(e, f) || !pieces_conflict(e, f)) return false;
+      if (e.conic) marked[i] = 1;
+      if (f.conic) marked[j] = 1;
+      any = true;
+      return false;
+    });
+    if (!any && round > 0) break;
+    if (round == kMaxRounds) break;
+    std::vector<Edge> next;
+    next.reserve(edges.size() + 16);
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+      const Edge& e = edges[i];
+      if (!marked[i]) {
+        next.push_back(e);
+      } else if (e.depth >= tolerance::kMaxHullSubdivisionDepth) {
+        Edge flat = e;
+        flat.conic = false;
+        flat.weight = 1.0;
+        flat.box = edge_box(flat);
+        next.push_back(flat);
+      } else {
+        const auto halves = split(Segment::conic(e.a, e.control, e.b, e.weight), 0.5);
+        for (const Segment& h : {halves.first, halves.second}) {
+          Edge half = e;
+          half.a = canonical(h.p[0]);
+          half.control = canonical(h.p[1]);
+          half.b = canonical(h.p[2]);
+          half.weight = h.weight;
+          half.depth = e.depth + 1;
+          half.box = edge_box(half);
+          next.push_back(half);
+        }
+      }
+    }
+    edges.swap(next);
+    split_lines(edges);
+  }
+  const std::vector<Edge> merged = merge_coincident(edges);
+  std::vector<int> left, right;
+  side_windings(merged, left, right);
+
+  // Kept edges, directed with the fill on the left.
+  std::vector<Edge> kept;
+  for (std::size_t i = 0; i < merged.size(); ++i) {
+    const bool l = left[i] != 0, r = right[i] != 0;
+    if (l == r) continue;
+    Edge e = merged[i];
+    if (!l) std::swap(e.a, e.b);
+    e.count = 1;
+    kept.push_back(e);
+  }
+
+  // Outgoing kept edges per vertex.
+  std::map<std::pair<double, double>, std::vector<std::uint32_t>> outgoing;
+  for (std::uint32_t i = 0; i < kept.size(); ++i) outgoing[{kept[i].a.x, kept[i].a.y}].push_back(i);
+
+  // At v, coming along u -> v: the next edge is the first outgoing one
+  // clockwise from the direction back to u. Fill-on-left edges alternate in
+  // and out around v, so this pairs each incoming edge with one outgoing edge.
+  auto next_edge = [&](const Edge& in) -> std::uint32_t {
+    const Vec2 v = in.b;
+    const std::vector<std::uint32_t>& outs = outgoing[{v.x, v.y}];
+    std::uint32_t best_before = UINT32_MAX, best_any = UINT32_MAX;
+    for (const std::uint32_t o : outs) {
+      const Vec2 p = kept[o].b;
+      if (best_any == UINT32_MAX || angle_less(v, kept[best_any].b, p)) best_any = o;
+      if (angle_less(v, p, in.a) && (best_before == UINT32_MAX || angle_less(v, kept[best_before].b, p))) {
+        best_before = o;
+      }
+    }
+    return best_before != UINT32_MAX ? best_before : best_any;
+  };
+
+  std::vector<char> used(kept.size(), 0);
+  std::vector<Ring> loops;
+  for (std::uint32_t start = 0; start < kept.size(); ++start) {
+    if (used[start]) continue;
+    Ring ring;
+    std::uint32_t cur = start;
+    for (std::size_t steps = 0; steps <= kept.size(); ++steps) {
+      used[cur] = 1;
+      Piece p;
+      p.a = kept[cur].a;
+      p.conic = kept[cur].conic;
+      p.control = kept[cur].control;
+      p.weight = kept[cur].weight;
+      p.depth = kept[cur].depth;
+      ring.push_back(p);
+      const std::uint32_t nxt = next_edge(kept[cur]);
+      if (nxt == UINT32_MAX || nxt == start || used[nxt]) break;
+      cur = nxt;
+    }
+    // Straight-through vertices where the boundary passes alone (one kept
+    // edge out) are dropped: they come from splitting at crossings whose
+    // other edges turned out interior.
+    Ring simple;
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const std::size_t prev = (i + ring.size() - 1) % ring.size();
+      if (ring.size() > 3 && !ring[i].conic && !ring[prev].conic &&
+          outgoing[{ring[i].a.x, ring[i].a.y}].size() == 1) {
+        const Vec2 a = ring[prev].a, b = ring[i].a, c = ring_end(ring, i);
+        if (orient2d(a, b, c) == 0 && dot(b - a, c - b) > 0.0) continue;
+      }
+      simple.push_back(ring[i]);
+    }
+    // Dropping is decided against the original neighbours; consecutive drops
+    // are fine because each dropped vertex lies on the line through its
+    // neighbours and all of them on one straight run.
+    loops.push_back(std::move(simple));
+  }
+  std::vector<Ring> out;
+  for (const Ring& loop : loops) {
+    for (Ring& sub : split_at_repeated_vertices(loop)) {
+      const bool has_conic = std::any_of(sub.begin(), sub.end(), [](const Piece& p) { return p.conic; });
+      if (sub.size() < 2 || (sub.size() == 2 && !has_conic)) continue;
+      if (ring_area(sub) == 0.0) continue;
+      out.push_back(std::move(sub));
+    }
+  }
+  return out;
+}
+
+}  // namespace curvetext::detail
