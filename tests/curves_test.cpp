@@ -23,7 +23,7 @@ double polyline_chord_area(const Segment& conic, int steps) {
     prev = p;
   }
   area += cross(prev, conic.p[0]);
-  return -0.5 * area;  // right of p0->p2 positive, as documented
+  return -0.5 * area;  // the arc's loop turns opposite to this polyline's orientation
 }
 
 TEST(Conic, AreaRatioMatchesIntegration) {

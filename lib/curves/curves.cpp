@@ -71,8 +71,8 @@ double conic_area_ratio(double w) {
 
 double conic_chord_area(const Segment& conic) {
   const double triangle = 0.5 * cross(conic.p[1] - conic.p[0], conic.p[2] - conic.p[0]);
-  // Control point right of p0->p2 makes `triangle` negative; the documented
-  // sign is positive for that case.
+  // The loop p0 -> chord -> p2 -> arc -> p0 turns the opposite way to the
+  // control triangle p0 -> control -> p2.
   return -conic_area_ratio(conic.weight) * triangle;
 }
 

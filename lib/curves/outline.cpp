@@ -113,9 +113,9 @@ static double green_integral(const Segment& s) {
     case Segment::Kind::Line:
       return 0.5 * cross(s.p[0], s.p[1]);
     case Segment::Kind::Conic:
-      // Chord term plus the exact area between the arc and its chord; the
-      // region right of p0->p2 counts positive in conic_chord_area, which is
-      // the negative of its contribution to a counter-clockwise contour.
+      // Chord term plus the arc's contribution relative to its chord, which
+      // is the negative of conic_chord_area's loop (that loop runs back along
+      // the arc, the contour runs forward along it).
       return 0.5 * cross(s.p[0], s.p[2]) - conic_chord_area(s);
     case Segment::Kind::Cubic: {
       // x(t) y'(t) - y(t) x'(t) is a polynomial of degree 5: three-point

@@ -17,7 +17,8 @@ Vec2 evaluate(const Segment& s, double t);
 std::pair<Segment, Segment> split(const Segment& s, double t);
 
 // Signed area between a conic and its chord, positive when the curve bulges to
-// the right of p0->p2 (the side of a counter-clockwise outline's exterior).
+// the left of p0->p2 (control point on the left, y up): the signed area of the
+// loop "along the chord from p0 to p2, then back along the arc".
 // Equals (2/3) * triangle area for weight 1.
 double conic_chord_area(const Segment& conic);
 
