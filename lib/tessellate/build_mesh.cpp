@@ -416,17 +416,7 @@ bool separate_hulls(std::vector<Ring>& rings) {
 // --- Nesting -------------------------------------------------------------------------
 
 Where point_in_ring(const Ring& ring, Vec2 p) {
-  int winding = 0;
-  for (std::size_t i = 0; i < ring.size(); ++i) {
-    const Vec2 a = ring[i].a, b = ring_end(ring, i);
-    if (point_on_segment(a, b, p)) return Where::Boundary;
-    if (a.y <= p.y) {
-      if (b.y > p.y && orient2d(a, b, p) > 0) ++winding;
-    } else if (b.y <= p.y && orient2d(a, b, p) < 0) {
-      --winding;
-    }
-  }
-  return winding != 0 ? Where::Inside : Where::Outside;
+  return point_in_polygon(ring.size(), [&](std::size_t i) { return std::pair{ring[i].a, ring_end(ring, i)}; }, p);
 }
 
 namespace {

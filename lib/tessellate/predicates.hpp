@@ -4,6 +4,9 @@
 // determinant for any finite double input (no overflow assumed).
 #pragma once
 
+#include <cstddef>
+#include <utility>
+
 #include "curvetext/geometry.hpp"
 
 namespace curvetext::detail {
@@ -37,6 +40,25 @@ bool segments_cross_properly(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
 
 // True when the closed segments [a, b] and [c, d] share any point.
 bool segments_intersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
+
+// Nonzero winding of a closed polygon around p, or Boundary when p lies on it.
+// `edge(i)` returns the i-th directed edge as {start, end}, i < count. Exact:
+// only orient2d and point_on_segment decide.
+template <class EdgeAt>
+Where point_in_polygon(std::size_t count, EdgeAt edge, Vec2 p) {
+  int winding = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    const auto [a, b] = edge(i);
+    if (point_on_segment(a, b, p)) return Where::Boundary;
+    if (a.y <= p.y) {
+      if (b.y > p.y && orient2d(a, b, p) > 0) ++winding;
+    } else if (b.y <= p.y && orient2d(a, b, p) < 0) {
+      --winding;
+    }
+  }
+  return winding != 0 ? Where::Inside : Where::Outside;
+}
+
 
 // Exact sign of a double sum given as non-overlapping-free terms: used by
 // orient2d's slow path and exposed for tests.

@@ -89,17 +89,8 @@ double loop_area(const std::vector<Vec2>& loop) {
 
 // Nonzero winding of a polygon loop around p, or Boundary when p is on it.
 Where point_in_loop(const std::vector<Vec2>& loop, Vec2 p) {
-  int winding = 0;
-  for (std::size_t i = 0; i < loop.size(); ++i) {
-    const Vec2 a = loop[i], b = loop[next_index(i, loop.size())];
-    if (point_on_segment(a, b, p)) return Where::Boundary;
-    if (a.y <= p.y) {
-      if (b.y > p.y && orient2d(a, b, p) > 0) ++winding;
-    } else if (b.y <= p.y && orient2d(a, b, p) < 0) {
-      --winding;
-    }
-  }
-  return winding != 0 ? Where::Inside : Where::Outside;
+  return point_in_polygon(
+      loop.size(), [&](std::size_t i) { return std::pair{loop[i], loop[next_index(i, loop.size())]}; }, p);
 }
 
 // Whether the clockwise loop `hole` lies inside the counter-clockwise loop
