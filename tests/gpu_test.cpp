@@ -397,21 +397,7 @@ TEST(Text, GlyphBatchMatchesFreeTypeReference) {
   renderer.draw(batch, placement, DrawOptions{});
   const test::Coverage got = test::coverage_from_black_on_white(renderer.read_pixels());
 
-  // The same glyphs as one outline, at the same pen positions.
-  Outline all;
-  double pen_x = 0, pen_y = 0;
-  for (const ShapedGlyph& g : line.glyphs) {
-    const Vec2 origin{pen_x + g.x_offset, pen_y + g.y_offset};
-    const Outline glyph = font.glyph_outline(g.glyph_id);
-    for (Contour c : glyph.contours()) {
-      for (Segment& seg : c.segments)
-        for (Vec2& p : seg.p) p = p + origin;
-      all.contours().push_back(c);
-    }
-    pen_x += g.x_advance;
-    pen_y += g.y_advance;
-  }
-  const test::Coverage want = test::freetype_reference(all, placement, width, height, 8);
+  const test::Coverage want = test::freetype_reference(test::line_outline(font, line), placement, width, height, 8);
   const test::CoverageStats s = test::compare(got, want);
   std::printf("text 24px: edge mean %.4f, max %.4f, ink ratio %.4f over %zu edge pixels\n", s.edge_mean_abs,
               s.max_abs, s.ink_ratio, s.edge_pixels);
