@@ -6,16 +6,19 @@ set -euo pipefail
 packages=(
   # toolchain
   build-essential cmake pkg-config
-  # fonts and text
-  libfreetype-dev libharfbuzz-dev
+  # fonts and text: outlines, shaping, bidi, line breaking, fallback
+  libfreetype-dev libharfbuzz-dev libfribidi-dev libunibreak-dev libfontconfig-dev
   # headless GL: EGL + GLES2, Mesa's llvmpipe on machines without a GPU
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
   # images
   libpng-dev
   # tests and benchmarks
   googletest libgtest-dev libbenchmark-dev
+  # the incumbent layout engine the benchmarks compare with; Unicode's conformance data
+  libpango1.0-dev unicode-data
   # fonts: the default font (DejaVu Sans) and the test corpus
-  fonts-dejavu-core fonts-noto-core fonts-urw-base35 fonts-inter-variable
+  fonts-dejavu-core fonts-dejavu-extra fonts-noto-core fonts-noto-cjk fonts-urw-base35
+  fonts-inter-variable
 )
 
 missing=()
