@@ -2,8 +2,21 @@
 // section 7): curvetext loads a glyph's outline and builds its GPU-ready mesh
 // (size independent, once per glyph); an atlas renderer loads the glyph with
 // FreeType and renders a 32 px AA bitmap (once per glyph *and size*).
-// Prints per-glyph medians, the ratio, and GPU bytes per glyph next to atlas
-// cell bytes. Run: build/bench/glyph_prep_bench
+//
+// Two tables, both timed the same way (every glyph timed in each of N rounds,
+// its fastest time kept, then the median over glyphs):
+//   - Latin glyphs (the cmap's glyphs for U+0020..U+024F) of DejaVu Sans, Noto
+//     Sans and Nimbus Roman: the measure of the "under 5 us per Latin glyph"
+//     target;
+//   - every glyph of the same three fonts, plus the first 5,000 glyphs of Noto
+//     Sans CJK (face 0 of the .ttc).
+// Next to each: mean triangles and GPU bytes per glyph, and the mean atlas
+// cell bytes of the same glyphs at 16, 32, 64 and 128 px, computed from the
+// bitmaps FreeType really renders (width x rows, 8 bits per pixel).
+//
+// Run: build/bench/glyph_prep_bench            (Google Benchmark entries, then the tables)
+//      build/bench/glyph_prep_bench --tables-only
+//      build/bench/glyph_prep_bench --rounds=N  (default 5)
 #include <benchmark/benchmark.h>
 
 #include <ft2build.h>
@@ -12,6 +25,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -25,12 +41,18 @@ namespace {
 struct FontCase {
   const char* name;
   const char* path;
+  int face_index = 0;
+  unsigned max_glyphs = 0;  // 0: every glyph
+  bool latin = true;        // part of the Latin table
 };
 const FontCase kFonts[] = {
     {"DejaVuSans", "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"},
     {"NotoSans", "/usr/share/fonts/truetype/noto/NotoSans-Regular.ttf"},
     {"NimbusRoman", "/usr/share/fonts/opentype/urw-base35/NimbusRoman-Regular.otf"},
+    {"NotoSansCJK", "/usr/share/fonts/opentype/noto/NotoSansCJK-Regular.ttc", 0, 5000, false},
 };
+constexpr int kAtlasSizes[] = {16, 32, 64, 128};
+constexpr int kAtlasSizeCount = sizeof(kAtlasSizes) / sizeof(kAtlasSizes[0]);
 
 // Latin glyphs: those the cmap gives for U+0020..U+024F.
 std::vector<unsigned> latin_glyphs(const curvetext::Font& font) {
@@ -42,6 +64,14 @@ std::vector<unsigned> latin_glyphs(const curvetext::Font& font) {
   return ids;
 }
 
+std::vector<unsigned> all_glyphs(const curvetext::Font& font, unsigned max_glyphs) {
+  unsigned n = font.glyph_count();
+  if (max_glyphs != 0) n = std::min(n, max_glyphs);
+  std::vector<unsigned> ids(n);
+  for (unsigned g = 0; g < n; ++g) ids[g] = g;
+  return ids;
+}
+
 double median(std::vector<double> v) {
   if (v.empty()) return 0;
   std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
@@ -49,24 +79,45 @@ double median(std::vector<double> v) {
 }
 
 struct PrepResult {
+  std::size_t glyphs = 0, empty = 0, mesh_faster = 0, ft_errors = 0;
   double mesh_us_median = 0, ft_us_median = 0;
   double mean_triangles = 0, mean_gpu_bytes = 0;
-  std::size_t glyphs = 0;
+  double atlas_bytes[kAtlasSizeCount] = {};         // mean width x rows, 1 byte per pixel
+  double atlas_bytes_padded[kAtlasSizeCount] = {};  // the same with 1 px of padding on each side
+  double seconds = 0;                               // wall time of the measurement
 };
 
-// Times every glyph `rounds` times and keeps each glyph's fastest time, so
-// the median is of per-glyph costs without scheduler noise.
+struct FtFace {
+  FT_Library lib = nullptr;
+  FT_Face face = nullptr;
+  FtFace(const char* path, int face_index) {
+    if (FT_Init_FreeType(&lib) != 0 || FT_New_Face(lib, path, face_index, &face) != 0) {
+      std::fprintf(stderr, "glyph_prep_bench: FreeType cannot open %s (face %d)\n", path, face_index);
+      std::exit(1);
+    }
+  }
+  ~FtFace() {
+    FT_Done_Face(face);
+    FT_Done_FreeType(lib);
+  }
+  FtFace(const FtFace&) = delete;
+  FtFace& operator=(const FtFace&) = delete;
+};
+
+// Times every glyph `rounds` times and keeps each glyph's fastest time, so the
+// median is of per-glyph costs without scheduler noise. The mesh side is what
+// the glyph cache pays on a miss: outline load + build_mesh + gpu::pack_mesh,
+// with the cubic tolerance of the 32 px level of detail. The FreeType side is
+// what an atlas renderer pays: FT_Load_Glyph + FT_Render_Glyph (AA, 32 px).
 PrepResult measure(const FontCase& fc, const std::vector<unsigned>& glyphs, int rounds) {
   using clock = std::chrono::steady_clock;
-  curvetext::Font font = curvetext::Font::open(fc.path);
+  const auto start = clock::now();
+  curvetext::Font font = curvetext::Font::open(fc.path, fc.face_index);
   const double upem = font.metrics().units_per_em;
   const double tolerance = curvetext::cubic_tolerance_for_lod(curvetext::lod_for_scale(32.0 / upem, upem), upem);
 
-  FT_Library lib;
-  FT_Init_FreeType(&lib);
-  FT_Face face;
-  FT_New_Face(lib, fc.path, 0, &face);
-  FT_Set_Pixel_Sizes(face, 0, 32);
+  FtFace ft(fc.path, fc.face_index);
+  FT_Set_Pixel_Sizes(ft.face, 0, 32);
 
   std::vector<double> mesh_us(glyphs.size(), 1e300), ft_us(glyphs.size(), 1e300);
   PrepResult r;
@@ -82,33 +133,82 @@ PrepResult measure(const FontCase& fc, const std::vector<unsigned>& glyphs, int 
       curvetext::gpu::pack_mesh(mesh, packed);
       benchmark::DoNotOptimize(packed.data());
       auto t1 = clock::now();
-      FT_Load_Glyph(face, glyphs[i], FT_LOAD_DEFAULT);
-      FT_Render_Glyph(face->glyph, FT_RENDER_MODE_NORMAL);
-      benchmark::DoNotOptimize(face->glyph->bitmap.buffer);
+      const FT_Error load_error = FT_Load_Glyph(ft.face, glyphs[i], FT_LOAD_DEFAULT);
+      const FT_Error render_error = load_error ? load_error : FT_Render_Glyph(ft.face->glyph, FT_RENDER_MODE_NORMAL);
+      benchmark::DoNotOptimize(ft.face->glyph->bitmap.buffer);
       auto t2 = clock::now();
       mesh_us[i] = std::min(mesh_us[i], std::chrono::duration<double, std::micro>(t1 - t0).count());
       ft_us[i] = std::min(ft_us[i], std::chrono::duration<double, std::micro>(t2 - t1).count());
       if (round == 0) {
+        if (render_error) ++r.ft_errors;
+        if (outline.empty()) ++r.empty;
         triangles += static_cast<double>(mesh.triangles.size() + mesh.curves.size());
         bytes += static_cast<double>(packed.size() * sizeof(curvetext::gpu::Vertex));
       }
     }
   }
-  FT_Done_Face(face);
-  FT_Done_FreeType(lib);
+  for (std::size_t i = 0; i < glyphs.size(); ++i)
+    if (mesh_us[i] < ft_us[i]) ++r.mesh_faster;
+
+  // Atlas cells: the bitmaps FreeType renders for the same glyphs (not timed).
+  for (int s = 0; s < kAtlasSizeCount; ++s) {
+    FT_Set_Pixel_Sizes(ft.face, 0, static_cast<FT_UInt>(kAtlasSizes[s]));
+    double raw = 0, padded = 0;
+    for (unsigned g : glyphs) {
+      if (FT_Load_Glyph(ft.face, g, FT_LOAD_DEFAULT) != 0 ||
+          FT_Render_Glyph(ft.face->glyph, FT_RENDER_MODE_NORMAL) != 0)
+        continue;
+      const double w = ft.face->glyph->bitmap.width, h = ft.face->glyph->bitmap.rows;
+      raw += w * h;
+      if (w > 0 && h > 0) padded += (w + 2) * (h + 2);
+    }
+    r.atlas_bytes[s] = raw / static_cast<double>(glyphs.size());
+    r.atlas_bytes_padded[s] = padded / static_cast<double>(glyphs.size());
+  }
+
   r.mesh_us_median = median(mesh_us);
   r.ft_us_median = median(ft_us);
   r.mean_triangles = triangles / static_cast<double>(glyphs.size());
   r.mean_gpu_bytes = bytes / static_cast<double>(glyphs.size());
+  r.seconds = std::chrono::duration<double>(clock::now() - start).count();
   return r;
 }
 
-// Google Benchmark entries for the same work, for its usual statistics.
+void print_header() {
+  std::printf("%-12s %6s %5s %9s %10s %6s %7s %9s %9s | %7s %7s %7s %7s\n", "font", "glyphs", "empty", "mesh us",
+              "FT32 us", "ratio", "faster", "triangles", "GPU bytes", "atl16", "atl32", "atl64", "atl128");
+}
+
+void print_row(const char* name, const PrepResult& r) {
+  std::printf("%-12s %6zu %5zu %9.2f %10.2f %6.3f %6.1f%% %9.1f %9.0f | %7.0f %7.0f %7.0f %7.0f\n", name, r.glyphs,
+              r.empty, r.mesh_us_median, r.ft_us_median, r.ft_us_median / r.mesh_us_median,
+              100.0 * static_cast<double>(r.mesh_faster) / static_cast<double>(r.glyphs), r.mean_triangles,
+              r.mean_gpu_bytes, r.atlas_bytes[0], r.atlas_bytes[1], r.atlas_bytes[2], r.atlas_bytes[3]);
+}
+
+void print_notes(const std::vector<std::pair<const FontCase*, PrepResult>>& rows) {
+  std::size_t faster = 0, total = 0;
+  for (const auto& [fc, r] : rows) {
+    faster += r.mesh_faster;
+    total += r.glyphs;
+  }
+  std::printf("mesh faster than FreeType 32 px on %zu of %zu glyphs (%.1f%%)\n", faster, total,
+              total ? 100.0 * static_cast<double>(faster) / static_cast<double>(total) : 0.0);
+  std::printf("atlas cells with 1 px padding per side (mean bytes, 16/32/64/128 px):");
+  for (const auto& [fc, r] : rows)
+    std::printf(" %s %.0f/%.0f/%.0f/%.0f;", fc->name, r.atlas_bytes_padded[0], r.atlas_bytes_padded[1],
+                r.atlas_bytes_padded[2], r.atlas_bytes_padded[3]);
+  std::printf("\n");
+  for (const auto& [fc, r] : rows)
+    if (r.ft_errors) std::printf("note: FreeType failed to load or render %zu glyphs of %s\n", r.ft_errors, fc->name);
+}
+
+// Google Benchmark entries for the same work (Latin glyphs), for its usual statistics.
 void BM_CurvetextMesh(benchmark::State& state, const FontCase* fc) {
-  curvetext::Font font = curvetext::Font::open(fc->path);
+  curvetext::Font font = curvetext::Font::open(fc->path, fc->face_index);
   const std::vector<unsigned> glyphs = latin_glyphs(font);
   const double upem = font.metrics().units_per_em;
-  const double tolerance = curvetext::cubic_tolerance_for_lod(5, upem);
+  const double tolerance = curvetext::cubic_tolerance_for_lod(curvetext::lod_for_scale(32.0 / upem, upem), upem);
   std::vector<curvetext::gpu::Vertex> packed;
   std::size_t i = 0;
   for (auto _ : state) {
@@ -121,44 +221,86 @@ void BM_CurvetextMesh(benchmark::State& state, const FontCase* fc) {
 }
 
 void BM_FreeTypeBitmap32(benchmark::State& state, const FontCase* fc) {
-  curvetext::Font font = curvetext::Font::open(fc->path);
+  curvetext::Font font = curvetext::Font::open(fc->path, fc->face_index);
   const std::vector<unsigned> glyphs = latin_glyphs(font);
-  FT_Library lib;
-  FT_Init_FreeType(&lib);
-  FT_Face face;
-  FT_New_Face(lib, fc->path, 0, &face);
-  FT_Set_Pixel_Sizes(face, 0, 32);
+  FtFace ft(fc->path, fc->face_index);
+  FT_Set_Pixel_Sizes(ft.face, 0, 32);
   std::size_t i = 0;
   for (auto _ : state) {
-    FT_Load_Glyph(face, glyphs[i++ % glyphs.size()], FT_LOAD_DEFAULT);
-    FT_Render_Glyph(face->glyph, FT_RENDER_MODE_NORMAL);
-    benchmark::DoNotOptimize(face->glyph->bitmap.buffer);
+    FT_Load_Glyph(ft.face, glyphs[i++ % glyphs.size()], FT_LOAD_DEFAULT);
+    FT_Render_Glyph(ft.face->glyph, FT_RENDER_MODE_NORMAL);
+    benchmark::DoNotOptimize(ft.face->glyph->bitmap.buffer);
   }
   state.SetItemsProcessed(state.iterations());
-  FT_Done_Face(face);
-  FT_Done_FreeType(lib);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  for (const FontCase& fc : kFonts) {
-    benchmark::RegisterBenchmark((std::string("curvetext_mesh/") + fc.name).c_str(), BM_CurvetextMesh, &fc);
-    benchmark::RegisterBenchmark((std::string("freetype_bitmap32/") + fc.name).c_str(), BM_FreeTypeBitmap32, &fc);
+  bool tables_only = false;
+  int rounds = 5;
+  std::vector<char*> args;
+  for (int i = 0; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--tables-only") == 0) {
+      tables_only = true;
+    } else if (std::strncmp(argv[i], "--rounds=", 9) == 0) {
+      rounds = std::max(1, std::atoi(argv[i] + 9));
+    } else {
+      args.push_back(argv[i]);
+    }
   }
-  benchmark::Initialize(&argc, argv);
-  benchmark::RunSpecifiedBenchmarks();
+  std::vector<const FontCase*> fonts;
+  for (const FontCase& fc : kFonts) {
+    if (std::filesystem::exists(fc.path)) {
+      fonts.push_back(&fc);
+    } else {
+      std::printf("skipped %s: %s not installed\n", fc.name, fc.path);
+    }
+  }
 
-  std::printf("\nGlyph preparation, Latin glyphs (U+0020..U+024F), fastest of 5 rounds per glyph, median over glyphs\n");
-  std::printf("%-12s %6s %12s %14s %8s %10s %10s | atlas cell bytes (8-bit): 16px %d, 32px %d, 64px %d, 128px %d\n",
-              "font", "glyphs", "mesh us", "FT 32px us", "ratio", "triangles", "GPU bytes", 16 * 16, 32 * 32,
-              64 * 64, 128 * 128);
-  for (const FontCase& fc : kFonts) {
-    curvetext::Font font = curvetext::Font::open(fc.path);
-    const PrepResult r = measure(fc, latin_glyphs(font), 5);
-    std::printf("%-12s %6zu %12.2f %14.2f %8.2f %10.1f %10.0f\n", fc.name, r.glyphs, r.mesh_us_median,
-                r.ft_us_median, r.ft_us_median / r.mesh_us_median, r.mean_triangles, r.mean_gpu_bytes);
+  if (!tables_only) {
+    for (const FontCase* fc : fonts) {
+      if (!fc->latin) continue;
+      benchmark::RegisterBenchmark((std::string("curvetext_mesh/") + fc->name).c_str(), BM_CurvetextMesh, fc);
+      benchmark::RegisterBenchmark((std::string("freetype_bitmap32/") + fc->name).c_str(), BM_FreeTypeBitmap32, fc);
+    }
+    int bench_argc = static_cast<int>(args.size());
+    benchmark::Initialize(&bench_argc, args.data());
+    benchmark::RunSpecifiedBenchmarks();
   }
-  std::printf("ratio = FreeType time / curvetext time (above 1: curvetext prepares a glyph faster)\n");
+
+  std::printf("\nmesh = outline load + build_mesh + gpu::pack_mesh (cubic tolerance of the 32 px level of detail);\n"
+              "FT32 = FT_Load_Glyph + FT_Render_Glyph, AA, 32 px. Fastest of %d rounds per glyph, median over glyphs;\n"
+              "ratio = FT32 / mesh (>= 1: the mesh is prepared at least as fast); faster = share of glyphs whose\n"
+              "mesh is faster than their bitmap; triangles, GPU bytes (%zu-byte vertices) and atlas cells\n"
+              "(atlN: mean FreeType bitmap width x rows at N px, 1 byte per pixel, no padding) are means over all\n"
+              "glyphs of the row, empty ones included.\n",
+              rounds, sizeof(curvetext::gpu::Vertex));
+
+  std::printf("\nLatin glyphs (U+0020..U+024F)  [target: ratio >= 1.0 and mesh < 5 us]\n");
+  print_header();
+  std::vector<std::pair<const FontCase*, PrepResult>> latin_rows;
+  for (const FontCase* fc : fonts) {
+    if (!fc->latin) continue;
+    curvetext::Font font = curvetext::Font::open(fc->path, fc->face_index);
+    latin_rows.emplace_back(fc, measure(*fc, latin_glyphs(font), rounds));
+    print_row(fc->name, latin_rows.back().second);
+    std::fflush(stdout);
+  }
+  print_notes(latin_rows);
+
+  std::printf("\nAll glyphs (Noto Sans CJK: face 0, first 5,000 glyphs)  [target: ratio >= 1.0]\n");
+  print_header();
+  std::vector<std::pair<const FontCase*, PrepResult>> all_rows;
+  double seconds = 0;
+  for (const FontCase* fc : fonts) {
+    curvetext::Font font = curvetext::Font::open(fc->path, fc->face_index);
+    all_rows.emplace_back(fc, measure(*fc, all_glyphs(font, fc->max_glyphs), rounds));
+    print_row(fc->name, all_rows.back().second);
+    seconds += all_rows.back().second.seconds;
+    std::fflush(stdout);
+  }
+  print_notes(all_rows);
+  std::printf("(all-glyphs table measured in %.1f s)\n", seconds);
   return 0;
 }

@@ -18,7 +18,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 #include "gpu/vertex_format.hpp"
@@ -50,6 +49,45 @@ struct Corner {
   int count_out = 0;
 };
 
+// A short list of indices without heap allocation: the line and curve lists
+// of one triangle have a small fixed bound (3 edges + 2 lines per vertex).
+struct IndexList {
+  static constexpr std::size_t kCapacity = 16;
+  std::array<int, kCapacity> items{};
+  std::size_t count = 0;
+  std::size_t size() const { return count; }
+  bool empty() const { return count == 0; }
+  int operator[](std::size_t k) const { return items[k]; }
+  const int* begin() const { return items.data(); }
+  const int* end() const { return items.data() + count; }
+  bool contains(int v) const { return std::find(begin(), end(), v) != end(); }
+  void push_back(int v) {
+    if (count < kCapacity) items[count++] = v;
+  }
+};
+
+// Per-vertex lists in compressed rows: the values of vertex v are
+// values[start[v] .. start[v + 1]), in the order they were added.
+template <class T>
+struct VertexRows {
+  std::vector<std::uint32_t> start;
+  std::vector<T> values;
+  // `add(emit)` must call emit(vertex, value) for every entry, identically on
+  // both calls (one to count, one to fill).
+  template <class Producer>
+  void build(std::size_t vertex_count, Producer add) {
+    start.assign(vertex_count + 2, 0);
+    add([&](std::uint32_t v, const T&) { ++start[v + 2]; });
+    for (std::size_t v = 2; v < start.size(); ++v) start[v] += start[v - 1];
+    values.resize(start.back());
+    add([&](std::uint32_t v, const T& value) { values[start[v + 1]++] = value; });
+    start.pop_back();
+  }
+  const T* begin(std::uint32_t v) const { return values.data() + start[v]; }
+  const T* end(std::uint32_t v) const { return values.data() + start[v + 1]; }
+  std::size_t size(std::uint32_t v) const { return start[v + 1] - start[v]; }
+};
+
 // An edge of the outline along which a fringe quad is built: a boundary line,
 // a leg of a convex curve's hull, or the chord of a concave curve.
 struct FringeEdge {
@@ -64,12 +102,15 @@ class Packer {
   Packer(const Mesh& mesh, std::vector<Vertex>& out) : mesh_(mesh), out_(out) {}
 
   void run() {
+    out_.reserve(out_.size() + 3 * mesh_.triangles.size() + 15 * mesh_.curves.size() +
+                 6 * mesh_.boundary_lines.size());
     prepare_lines();
     prepare_curve_edges();
     for (const auto& tri : mesh_.triangles) {
       interior(tri);
       remember_boundary_triangle(tri);
     }
+    group_curve_neighbours();
     for (std::size_t i = 0; i < mesh_.curves.size(); ++i) curve(i);
     collect_fringe_edges();
     for (const FringeEdge& e : edges_) fringe(e);
@@ -84,6 +125,8 @@ class Packer {
   };
 
   void prepare_lines() {
+    const std::size_t n = mesh_.points.size();
+    corners_.assign(n, Corner{});
     lines_.reserve(mesh_.boundary_lines.size());
     for (std::size_t i = 0; i < mesh_.boundary_lines.size(); ++i) {
       const auto& bl = mesh_.boundary_lines[i];
@@ -91,7 +134,6 @@ class Packer {
       const double len = distance(a, b);
       LineFn f{a, len > 0 ? left_normal(b - a) / len : Vec2{}};
       lines_.push_back(f);
-      if (len > 0) line_index_[key(bl[0], bl[1])] = static_cast<int>(i);
       Corner& ca = corners_[bl[0]];
       ca.out = static_cast<int>(i);
       ++ca.count_out;
@@ -99,35 +141,82 @@ class Packer {
       cb.in = static_cast<int>(i);
       ++cb.count_in;
     }
+    lines_from_.build(n, [&](auto emit) {
+      for (std::size_t i = 0; i < mesh_.boundary_lines.size(); ++i) {
+        if (lines_[i].n == Vec2{}) continue;  // zero length: not an edge of anything
+        emit(mesh_.boundary_lines[i][0], static_cast<int>(i));
+      }
+    });
+    boundary_triangle_.assign(mesh_.boundary_lines.size(), {});
+    has_boundary_triangle_.assign(mesh_.boundary_lines.size(), 0);
+  }
+
+  // The boundary line a->b or, failing that, b->a (the latest added of
+  // several equal ones), or -1.
+  int line_between(std::uint32_t a, std::uint32_t b) const {
+    for (std::uint32_t from : {a, b}) {
+      const std::uint32_t to = from == a ? b : a;
+      int found = -1;
+      for (const int* it = lines_from_.begin(from); it != lines_from_.end(from); ++it) {
+        if (mesh_.boundary_lines[static_cast<std::size_t>(*it)][1] == to) found = *it;
+      }
+      if (found >= 0) return found;
+    }
+    return -1;
+  }
+
+  // The curve hull edge between a and b (the latest added), or null.
+  const CurveEdge* curve_edge_between(std::uint32_t a, std::uint32_t b) const {
+    const std::uint32_t lo = std::min(a, b), hi = std::max(a, b);
+    const CurveEdge* found = nullptr;
+    for (const auto* it = curve_edges_.begin(lo); it != curve_edges_.end(lo); ++it) {
+      if (it->first == hi) found = &it->second;
+    }
+    return found;
   }
 
   // The hull edge each curved triangle shares with the interior mesh: the
   // chord of a convex curve, the legs of a concave one.
   void prepare_curve_edges() {
-    for (std::size_t i = 0; i < mesh_.curves.size(); ++i) {
-      const CurvedTriangle& ct = mesh_.curves[i];
-      const int ci = static_cast<int>(i);
-      for (std::uint32_t v : {ct.p0, ct.control, ct.p2}) curves_at_[v].push_back(ci);
-      if (ct.convex) {
-        curve_edge_[undirected_key(ct.p0, ct.p2)] = {ci, kChord};
-      } else {
-        curve_edge_[undirected_key(ct.p0, ct.control)] = {ci, kLegFromP0};
-        curve_edge_[undirected_key(ct.control, ct.p2)] = {ci, kLegToP2};
+    const std::size_t n = mesh_.points.size();
+    barys_.resize(mesh_.curves.size());
+    bary_ok_.resize(mesh_.curves.size());
+    for (std::size_t i = 0; i < mesh_.curves.size(); ++i) bary_ok_[i] = compute_bary(mesh_.curves[i], barys_[i]);
+    curves_at_.build(n, [&](auto emit) {
+      for (std::size_t i = 0; i < mesh_.curves.size(); ++i) {
+        const CurvedTriangle& ct = mesh_.curves[i];
+        for (std::uint32_t v : {ct.p0, ct.control, ct.p2}) emit(v, static_cast<int>(i));
       }
-    }
+    });
+    curve_edges_.build(n, [&](auto emit) {
+      auto add = [&](std::uint32_t a, std::uint32_t b, CurveEdge ce) {
+        emit(std::min(a, b), std::pair<std::uint32_t, CurveEdge>{std::max(a, b), ce});
+      };
+      for (std::size_t i = 0; i < mesh_.curves.size(); ++i) {
+        const CurvedTriangle& ct = mesh_.curves[i];
+        const int ci = static_cast<int>(i);
+        if (ct.convex) {
+          add(ct.p0, ct.p2, {ci, kChord});
+        } else {
+          add(ct.p0, ct.control, {ci, kLegFromP0});
+          add(ct.control, ct.p2, {ci, kLegToP2});
+        }
+      }
+    });
+    has_neighbour_.assign(mesh_.curves.size(), 0);
+    neighbour_lines_.clear();
   }
 
-  static std::uint64_t undirected_key(std::uint32_t a, std::uint32_t b) { return key(std::min(a, b), std::max(a, b)); }
-
-  static std::uint64_t key(std::uint32_t a, std::uint32_t b) {
-    return (static_cast<std::uint64_t>(a) << 32) | b;
+  // Per curve, in order, the lines of the interior triangles across its edges.
+  void group_curve_neighbours() {
+    neighbour_rows_.build(mesh_.curves.size(), [&](auto emit) {
+      for (const auto& [ci, li] : neighbour_lines_) emit(static_cast<std::uint32_t>(ci), li);
+    });
   }
 
   // The line that makes a convex corner with `line` at vertex v, if any.
   int convex_partner(int line, std::uint32_t v) const {
-    auto it = corners_.find(v);
-    if (it == corners_.end()) return -1;
-    const Corner& c = it->second;
+    const Corner& c = corners_[v];
     if (c.count_in != 1 || c.count_out != 1) return -1;  // touching loops: ambiguous
     const auto& in = mesh_.boundary_lines[static_cast<std::size_t>(c.in)];
     const auto& out = mesh_.boundary_lines[static_cast<std::size_t>(c.out)];
@@ -188,7 +277,7 @@ class Packer {
   }
 
   // Fills the two a_fade slots with `lines` (at most two; others ignored).
-  void set_fade(Vertex& v, Vec2 p, Vec2 offset, const std::vector<int>& lines) const {
+  void set_fade(Vertex& v, Vec2 p, Vec2 offset, const IndexList& lines) const {
     for (std::size_t k = 0; k < 2 && k < lines.size(); ++k) {
       const LineFn& f = lines_[static_cast<std::size_t>(lines[k])];
       v.fade[k] = static_cast<float>(f(p));
@@ -199,25 +288,24 @@ class Packer {
   void remember_boundary_triangle(const std::array<std::uint32_t, 3>& tri) {
     for (int e = 0; e < 3; ++e) {
       const std::uint32_t a = tri[static_cast<std::size_t>(e)], b = tri[static_cast<std::size_t>((e + 1) % 3)];
-      auto it = line_index_.find(key(a, b));
-      if (it == line_index_.end()) it = line_index_.find(key(b, a));
-      if (it != line_index_.end()) boundary_triangle_[it->second] = tri;
+      const int line = line_between(a, b);
+      if (line < 0) continue;
+      boundary_triangle_[static_cast<std::size_t>(line)] = tri;
+      has_boundary_triangle_[static_cast<std::size_t>(line)] = 1;
     }
   }
 
   // The boundary lines an interior triangle fades by, in priority order:
   // its own boundary edges, then lines through its vertices (when safe).
-  std::vector<int> interior_lines(const std::array<std::uint32_t, 3>& tri) const {
+  IndexList interior_lines(const std::array<std::uint32_t, 3>& tri) const {
     const std::array<Vec2, 3> p{pt(tri[0]), pt(tri[1]), pt(tri[2])};
-    std::vector<int> lines;
+    IndexList lines;
     auto add = [&](int line) {
-      if (line >= 0 && std::find(lines.begin(), lines.end(), line) == lines.end()) lines.push_back(line);
+      if (line >= 0 && !lines.contains(line)) lines.push_back(line);
     };
     for (int e = 0; e < 3; ++e) {
       const std::uint32_t a = tri[static_cast<std::size_t>(e)], b = tri[static_cast<std::size_t>((e + 1) % 3)];
-      auto it = line_index_.find(key(a, b));
-      if (it == line_index_.end()) it = line_index_.find(key(b, a));
-      if (it != line_index_.end()) add(it->second);
+      add(line_between(a, b));
     }
     // Boundary lines through a vertex of this triangle: a thin or shallow
     // triangle that touches a line only at a vertex still holds pixel centres
@@ -226,9 +314,7 @@ class Packer {
     // contain the whole triangle are used, so a line never fades pixels away
     // from its own segment.
     for (int e = 0; e < 3; ++e) {
-      auto it = corners_.find(tri[static_cast<std::size_t>(e)]);
-      if (it == corners_.end()) continue;
-      const Corner& c = it->second;
+      const Corner& c = corners_[tri[static_cast<std::size_t>(e)]];
       if (c.count_in != 1 || c.count_out != 1) continue;
       if (safe_for(c.in, p)) add(c.in);
       if (safe_for(c.out, p)) add(c.out);
@@ -242,7 +328,7 @@ class Packer {
   bool touching_edge(int ci, const std::array<Vec2, 3>& p, CurveEdge& out) const {
     const CurvedTriangle& ct = mesh_.curves[static_cast<std::size_t>(ci)];
     Bary g;
-    if (!bary(ct, g)) return false;
+    if (!bary(ci, g)) return false;
     // Barycentrics are relative to the hull, so a fixed tolerance suits.
     const double eps = 1e-9;
     auto all_outside = [&](auto coord) {
@@ -279,7 +365,7 @@ class Packer {
 
   void interior(const std::array<std::uint32_t, 3>& tri) {
     const std::array<Vec2, 3> p{pt(tri[0]), pt(tri[1]), pt(tri[2])};
-    const std::vector<int> lines = interior_lines(tri);
+    const IndexList lines = interior_lines(tri);
     // Curved triangles across an edge of this one: the curve can come closer
     // than a pixel to this triangle's pixel centres (near the curve's ends,
     // and anywhere along flat curves), so full AA fades by it too.
@@ -292,12 +378,11 @@ class Packer {
     };
     for (int e = 0; e < 3; ++e) {
       const std::uint32_t a = tri[static_cast<std::size_t>(e)], b = tri[static_cast<std::size_t>((e + 1) % 3)];
-      auto it = curve_edge_.find(undirected_key(a, b));
-      if (it == curve_edge_.end()) continue;
-      Bary g;
-      if (!bary(mesh_.curves[static_cast<std::size_t>(it->second.curve)], g)) continue;
-      curve_neighbours_[it->second.curve].push_back(lines);
-      if (curve_count < 2 && !has(it->second.curve)) near_curves[static_cast<std::size_t>(curve_count++)] = it->second;
+      const CurveEdge* ce = curve_edge_between(a, b);
+      if (!ce || !bary_ok_[static_cast<std::size_t>(ce->curve)]) continue;
+      has_neighbour_[static_cast<std::size_t>(ce->curve)] = 1;
+      for (int li : lines) neighbour_lines_.emplace_back(ce->curve, li);
+      if (curve_count < 2 && !has(ce->curve)) near_curves[static_cast<std::size_t>(curve_count++)] = *ce;
     }
     // Curves that touch this triangle only at a vertex, as lines through a
     // vertex (interior_lines): at small sizes triangles are smaller than a
@@ -308,12 +393,13 @@ class Packer {
     // Of several, the nearest to the triangle's centroid (distance to the
     // hull's edge on the triangle's side) come first: they are the likeliest
     // to cross the pixels centred in it.
-    std::vector<std::pair<double, CurveEdge>> touching;
+    std::vector<std::pair<double, CurveEdge>>& touching = touching_scratch_;
+    touching.clear();
     const Vec2 centroid = (p[0] + p[1] + p[2]) / 3.0;
     for (int e = 0; e < 3; ++e) {
-      auto it = curves_at_.find(tri[static_cast<std::size_t>(e)]);
-      if (it == curves_at_.end()) continue;
-      for (int ci : it->second) {
+      const std::uint32_t vertex = tri[static_cast<std::size_t>(e)];
+      for (const int* it = curves_at_.begin(vertex); it != curves_at_.end(vertex); ++it) {
+        const int ci = *it;
         CurveEdge ce;
         if (has(ci) || !touching_edge(ci, p, ce)) continue;
         bool seen = false;
@@ -331,7 +417,7 @@ class Packer {
     // second curve), then two in a_fade. Shared boundary edges come first.
     const std::size_t coef_slots = curve_count == 2 ? 2 : 4;
     std::array<int, 4> slots{-1, -1, -1, -1};
-    std::vector<int> fade;
+    IndexList fade;
     for (std::size_t k = 0; k < lines.size(); ++k) {
       if (k < coef_slots) slots[k] = lines[k];
       else fade.push_back(lines[k]);
@@ -354,19 +440,19 @@ class Packer {
   // triangles across its chord or legs whose half-plane and slab hold the
   // whole control triangle (so they bound the shape near the curve, e.g. the
   // other side of a serif thinner than a pixel).
-  std::vector<int> curve_fade_lines(std::size_t ci) const {
-    std::vector<int> out;
+  IndexList curve_fade_lines(std::size_t ci) const {
+    IndexList out;
     const CurvedTriangle& ct = mesh_.curves[ci];
     const std::array<Vec2, 3> hull{pt(ct.p0), pt(ct.control), pt(ct.p2)};
     auto add = [&](int li) {
-      if (li >= 0 && out.size() < 2 && std::find(out.begin(), out.end(), li) == out.end()) out.push_back(li);
+      if (li >= 0 && out.size() < 2 && !out.contains(li)) out.push_back(li);
     };
     // First the lines making a convex corner with the curve at its ends: the
     // corner pixel is covered by the intersection of both sides.
     for (const auto& [end, other] : {std::pair{ct.p0, ct.p2}, std::pair{ct.p2, ct.p0}}) {
-      auto c = corners_.find(end);
-      if (c == corners_.end() || c->second.count_in != 1 || c->second.count_out != 1) continue;
-      for (int li : {c->second.in, c->second.out}) {
+      const Corner& c = corners_[end];
+      if (c.count_in != 1 || c.count_out != 1) continue;
+      for (int li : {c.in, c.out}) {
         if (!in_half_plane(li, hull)) continue;
         // The line's far end must be on the curve's filled side of its
         // tangent (the leg) at `end`: otherwise the corner is reflex.
@@ -379,11 +465,9 @@ class Packer {
         if ((side_far * side_other > 0) == filled_towards_other) add(li);
       }
     }
-    auto it = curve_neighbours_.find(static_cast<int>(ci));
-    if (it == curve_neighbours_.end()) return out;
-    for (const std::vector<int>& lines : it->second)
-      for (int li : lines)
-        if (safe_for(li, hull)) add(li);
+    const auto c = static_cast<std::uint32_t>(ci);
+    for (const int* li = neighbour_rows_.begin(c); li != neighbour_rows_.end(c); ++li)
+      if (safe_for(*li, hull)) add(*li);
     return out;
   }
 
@@ -404,7 +488,7 @@ class Packer {
     auto tau = [&](const CurveEdge& ce, float& t1, float& t2, float& w) {
       const CurvedTriangle& ct = mesh_.curves[static_cast<std::size_t>(ce.curve)];
       Bary g;
-      bary(ct, g);
+      bary(ce.curve, g);
       t1 = static_cast<float>(g.tau1(x));
       t2 = static_cast<float>(g.tau2(x));
       w = static_cast<float>(ct.weight);
@@ -430,7 +514,13 @@ class Packer {
     Vec2 grad2() const { return Vec2{-(b - a).y, (b - a).x} / area2; }
   };
 
-  bool bary(const CurvedTriangle& ct, Bary& out) const {
+  // Computed once per curve (compute_bary) and looked up.
+  bool bary(int ci, Bary& out) const {
+    out = barys_[static_cast<std::size_t>(ci)];
+    return bary_ok_[static_cast<std::size_t>(ci)] != 0;
+  }
+
+  bool compute_bary(const CurvedTriangle& ct, Bary& out) const {
     out = Bary{pt(ct.p0), pt(ct.control), pt(ct.p2)};
     out.area2 = cross(out.b - out.a, out.c - out.a);
     const double scale = dot(out.b - out.a, out.b - out.a) + dot(out.c - out.a, out.c - out.a);
@@ -442,8 +532,8 @@ class Packer {
   // of a lens of two curves). After all interior().
   bool solid_beyond_chord(const CurvedTriangle& ct) const {
     if (!ct.convex) return false;
-    auto it = curve_edge_.find(undirected_key(ct.p0, ct.p2));
-    return it != curve_edge_.end() && curve_neighbours_.count(it->second.curve) > 0;
+    const CurveEdge* ce = curve_edge_between(ct.p0, ct.p2);
+    return ce && has_neighbour_[static_cast<std::size_t>(ce->curve)];
   }
 
   Vertex curve_vertex(const CurvedTriangle& ct, const Bary& g, Vec2 p, Vec2 offset) const {
@@ -461,7 +551,7 @@ class Packer {
   void curve(std::size_t i) {
     const CurvedTriangle& ct = mesh_.curves[i];
     Bary g;
-    if (!bary(ct, g)) return;  // a flat hull has no area to draw
+    if (!bary(static_cast<int>(i), g)) return;  // a flat hull has no area to draw
     // Exact hull barycentrics (not recomputed) so the corners are crisp.
     Vertex v0 = curve_vertex(ct, g, g.a, Vec2{});
     Vertex v1 = curve_vertex(ct, g, g.b, Vec2{});
@@ -469,7 +559,7 @@ class Packer {
     v0.coef[0] = 0.0f; v0.coef[1] = 0.0f;
     v1.coef[0] = 1.0f; v1.coef[1] = 0.0f;
     v2.coef[0] = 0.0f; v2.coef[1] = 1.0f;
-    const std::vector<int> fade = curve_fade_lines(i);
+    const IndexList fade = curve_fade_lines(i);
     set_fade(v0, g.a, Vec2{}, fade);
     set_fade(v1, g.b, Vec2{}, fade);
     set_fade(v2, g.c, Vec2{}, fade);
@@ -497,8 +587,8 @@ class Packer {
     for (std::size_t i = 0; i < mesh_.curves.size(); ++i) {
       const CurvedTriangle& ct = mesh_.curves[i];
       Bary g;
-      if (!bary(ct, g)) continue;
       const int ci = static_cast<int>(i);
+      if (!bary(ci, g)) continue;
       if (ct.convex) {
         // Outside the shape lies beyond the hull's legs.
         edges_.push_back(FringeEdge{ct.p0, ct.control, outward_normal(g.a, g.b, g.c), -1, ci});
@@ -508,9 +598,10 @@ class Packer {
         edges_.push_back(FringeEdge{ct.p0, ct.p2, outward_normal(g.a, g.c, g.b), -1, ci});
       }
     }
+    incident_.assign(mesh_.points.size(), Incident{});
     for (std::size_t i = 0; i < edges_.size(); ++i) {
-      incident_[edges_[i].a].push_back(static_cast<int>(i));
-      incident_[edges_[i].b].push_back(static_cast<int>(i));
+      incident_[edges_[i].a].add(static_cast<int>(i));
+      incident_[edges_[i].b].add(static_cast<int>(i));
     }
   }
 
@@ -519,10 +610,10 @@ class Packer {
   // fringes use the same offset vertex. Falls back to the edge's own normal
   // where the join is ambiguous or too sharp.
   Vec2 offset_at(const FringeEdge& e, std::uint32_t v) const {
-    auto it = incident_.find(v);
-    if (it == incident_.end() || it->second.size() != 2) return e.outward;
-    const FringeEdge& e0 = edges_[static_cast<std::size_t>(it->second[0])];
-    const FringeEdge& e1 = edges_[static_cast<std::size_t>(it->second[1])];
+    const Incident& inc = incident_[v];
+    if (inc.count != 2) return e.outward;
+    const FringeEdge& e0 = edges_[static_cast<std::size_t>(inc.first[0])];
+    const FringeEdge& e1 = edges_[static_cast<std::size_t>(inc.first[1])];
     const Vec2 o0 = e0.outward, o1 = e1.outward;
     const Vec2 sum{o0.x + o1.x, o0.y + o1.y};  // symmetric: both edges compute the same bits
     const double denom = 1.0 + (o0.x * o1.x + o0.y * o1.y);
@@ -541,9 +632,10 @@ class Packer {
         std::pair{a, Vec2{}}, std::pair{b, Vec2{}}, std::pair{b, ob},
         std::pair{a, Vec2{}}, std::pair{b, ob},     std::pair{a, oa}};
     if (e.line >= 0) {
-      std::vector<int> lines{e.line};
+      IndexList lines;
+      lines.push_back(e.line);
       auto add = [&](int line) {
-        if (line >= 0 && std::find(lines.begin(), lines.end(), line) == lines.end()) lines.push_back(line);
+        if (line >= 0 && !lines.contains(line)) lines.push_back(line);
       };
       add(convex_partner(e.line, e.a));
       add(convex_partner(e.line, e.b));
@@ -551,13 +643,13 @@ class Packer {
       // whose centres fall in this fringe also overlap the opposite side of
       // the feature, so the fringe fades by the lines the interior triangle
       // behind it uses as well (all of them contain that triangle).
-      auto behind = boundary_triangle_.find(e.line);
-      if (behind != boundary_triangle_.end()) {
-        for (int li : interior_lines(behind->second)) add(li);
+      const auto line = static_cast<std::size_t>(e.line);
+      if (has_boundary_triangle_[line]) {
+        for (int li : interior_lines(boundary_triangle_[line])) add(li);
       }
       // Three moving slots in a_coef (c3 has no derivative), two in a_fade.
       std::array<int, 4> slots{-1, -1, -1, -1};
-      std::vector<int> fade;
+      IndexList fade;
       for (std::size_t k = 0; k < lines.size(); ++k) {
         if (k < 3) slots[k] = lines[k];
         else fade.push_back(lines[k]);
@@ -571,8 +663,8 @@ class Packer {
     } else {
       const CurvedTriangle& ct = mesh_.curves[static_cast<std::size_t>(e.curve)];
       Bary g;
-      if (!bary(ct, g)) return;
-      const std::vector<int> fade = curve_fade_lines(static_cast<std::size_t>(e.curve));
+      if (!bary(e.curve, g)) return;
+      const IndexList fade = curve_fade_lines(static_cast<std::size_t>(e.curve));
       for (const auto& [p, o] : corners) {
         Vertex v = curve_vertex(ct, g, p, o);
         set_fade(v, p, o, fade);
@@ -583,18 +675,35 @@ class Packer {
 
   const Mesh& mesh_;
   std::vector<Vertex>& out_;
+  // Fringe edges at a vertex: how many, and the first two.
+  struct Incident {
+    int count = 0;
+    std::array<int, 2> first{-1, -1};
+    void add(int edge) {
+      if (count < 2) first[static_cast<std::size_t>(count)] = edge;
+      ++count;
+    }
+  };
+
   std::vector<LineFn> lines_;
-  std::unordered_map<std::uint64_t, int> line_index_;
-  std::unordered_map<std::uint32_t, Corner> corners_;
-  std::unordered_map<std::uint64_t, CurveEdge> curve_edge_;
-  // The curves whose hull has each point as a vertex.
-  std::unordered_map<std::uint32_t, std::vector<int>> curves_at_;
-  // Per curve, the line lists of the interior triangles sharing an edge with it.
-  std::unordered_map<int, std::vector<std::vector<int>>> curve_neighbours_;
+  std::vector<Corner> corners_;            // per point
+  VertexRows<int> lines_from_;             // per point: boundary lines starting there
+  // Per lower vertex of a curve hull edge: (upper vertex, edge).
+  VertexRows<std::pair<std::uint32_t, CurveEdge>> curve_edges_;
+  VertexRows<int> curves_at_;              // per point: curves whose hull has it as a vertex
+  std::vector<Bary> barys_;                // per curve
+  std::vector<char> bary_ok_;              // per curve: hull not degenerate
+  // The lines of the interior triangles across each curve's edges, as
+  // (curve, line) in the order met, then grouped per curve.
+  std::vector<std::pair<int, int>> neighbour_lines_;
+  VertexRows<int> neighbour_rows_;
+  std::vector<char> has_neighbour_;        // per curve: an interior triangle across its edge
   // The interior triangle each boundary line is an edge of.
-  std::unordered_map<int, std::array<std::uint32_t, 3>> boundary_triangle_;
+  std::vector<std::array<std::uint32_t, 3>> boundary_triangle_;
+  std::vector<char> has_boundary_triangle_;
   std::vector<FringeEdge> edges_;
-  std::unordered_map<std::uint32_t, std::vector<int>> incident_;
+  std::vector<Incident> incident_;         // per point
+  std::vector<std::pair<double, CurveEdge>> touching_scratch_;
 };
 
 }  // namespace

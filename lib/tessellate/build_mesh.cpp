@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <map>
 #include <set>
 #include <utility>
@@ -128,8 +129,26 @@ bool all_collinear(const Ring& ring) {
 // vertex already on the stack, the pieces since that vertex form a closed
 // loop: cut it off. What remains at the end starts and ends at ring[0].a.
 
+namespace {
+
+// True when some position occurs twice among `count` points given by `at`.
+template <class PointAt>
+bool has_repeated_position(std::size_t count, PointAt at) {
+  std::vector<std::pair<double, double>> sorted(count);
+  for (std::size_t i = 0; i < count; ++i) sorted[i] = {at(i).x, at(i).y};
+  std::sort(sorted.begin(), sorted.end());
+  return std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
+}
+
+}  // namespace
+
 std::vector<Ring> split_at_repeated_vertices(const Ring& ring) {
   std::vector<Ring> loops;
+  // The usual ring passes through each vertex once: nothing to split.
+  if (!has_repeated_position(ring.size(), [&](std::size_t i) { return ring[i].a; })) {
+    loops.push_back(ring);
+    return loops;
+  }
   Ring path;
   path.reserve(ring.size());
   std::map<std::pair<double, double>, std::size_t> position;  // vertex -> index in path
@@ -306,7 +325,67 @@ bool align_tangent_legs(Ring& ring) {
 
 }  // namespace
 
+namespace {
+
+// Filtered orientation sign: +1 / -1 when certain (orient2d's error bound),
+// 0 when exactly collinear because c is a or b, 2 when undecided.
+int certain_side(Vec2 a, Vec2 b, Vec2 c) {
+  if (c == a || c == b) return 0;
+  const double detleft = (a.x - c.x) * (b.y - c.y);
+  const double detright = (a.y - c.y) * (b.x - c.x);
+  const double det = detleft - detright;
+  constexpr double kEps = 0x1p-53;
+  constexpr double kCcwErrBoundA = (3.0 + 16.0 * kEps) * kEps;
+  const double errbound = kCcwErrBoundA * (std::fabs(detleft) + std::fabs(detright));
+  if (det > errbound) return 1;
+  if (-det > errbound) return -1;
+  return 2;
+}
+
+// True when the line through edge (a, b) of hull `own` (whose other vertex
+// `opposite` is strictly on one side) has every point of `other` strictly on
+// the other side or equal to a or b: then the hulls share no point but common
+// vertices (hulls_overlap would say false). Only certain signs count.
+bool separates(Vec2 a, Vec2 b, int inner, const Vec2* other, int n) {
+  for (int k = 0; k < n; ++k) {
+    const int side = certain_side(a, b, other[k]);
+    if (side == 2 || side == inner) return false;
+  }
+  return true;
+}
+
+// A quick, conservative "no" for hulls_overlap: a separating line along an
+// edge of either hull, decided with filtered signs only. False means "not
+// known", and the exact test decides.
+bool hulls_clearly_apart(const Vec2* p, int np, const Vec2* q, int nq) {
+  auto by_edges_of = [](const Vec2* t, int nt, const Vec2* other, int no) {
+    if (nt == 2) {
+      // A segment's own line separates when the other hull is strictly on one
+      // side of it (shared end points aside).
+      int side = 0;
+      for (int k = 0; k < no; ++k) {
+        const int s = certain_side(t[0], t[1], other[k]);
+        if (s == 2) return false;
+        if (s == 0) continue;
+        if (side != 0 && s != side) return false;
+        side = s;
+      }
+      return side != 0;
+    }
+    const int o = certain_side(t[0], t[1], t[2]);
+    if (o != 1 && o != -1) return false;
+    for (int k = 0; k < 3; ++k) {
+      if (separates(t[k], t[(k + 1) % 3], o, other, no)) return true;
+    }
+    return false;
+  };
+  return by_edges_of(p, np, q, nq) || by_edges_of(q, nq, p, np);
+}
+
+}  // namespace
+
 bool hulls_overlap(const Vec2* p, int np, const Vec2* q, int nq) {
+  if (hulls_clearly_apart(p, np, q, nq)) return false;
   auto is_vertex_of = [](Vec2 v, const Vec2* hull, int n) {
     for (int k = 0; k < n; ++k) {
       if (hull[k] == v) return true;
@@ -546,13 +625,59 @@ std::vector<Vec2> remove_folds(const std::vector<Vec2>& loop) {
   return current;
 }
 
-struct PointIndex {
-  std::map<std::pair<double, double>, std::uint32_t> index;
+// Position -> vertex index, in order of first use: an open-addressing hash
+// table on the coordinates' bits (positions are canonical, see canonical()).
+class PointIndex {
+ public:
   std::vector<Vec2> points;
+
+  explicit PointIndex(std::size_t expected) {
+    std::size_t capacity = 16;
+    while (capacity < 2 * expected + 16) capacity *= 2;
+    slots_.assign(capacity, kEmpty);
+    points.reserve(expected);
+  }
+
   std::uint32_t operator()(Vec2 p) {
-    auto [it, inserted] = index.try_emplace({p.x, p.y}, static_cast<std::uint32_t>(points.size()));
-    if (inserted) points.push_back(p);
-    return it->second;
+    if (2 * (points.size() + 1) > slots_.size()) grow();
+    std::size_t slot = hash(p) & (slots_.size() - 1);
+    while (slots_[slot] != kEmpty) {
+      if (points[slots_[slot]] == p) return slots_[slot];
+      slot = (slot + 1) & (slots_.size() - 1);
+    }
+    slots_[slot] = static_cast<std::uint32_t>(points.size());
+    points.push_back(p);
+    return slots_[slot];
+  }
+
+ private:
+  static constexpr std::uint32_t kEmpty = 0xffffffffu;
+  std::vector<std::uint32_t> slots_;
+
+  static std::size_t hash(Vec2 p) {
+    p = detail::canonical(p);  // -0.0 == +0.0 must hash alike
+    std::uint64_t x, y;
+    std::memcpy(&x, &p.x, sizeof x);
+    std::memcpy(&y, &p.y, sizeof y);
+    // Font coordinates are short binary numbers whose low mantissa bits are
+    // zero: mix all bits (murmur3's finaliser) so they reach the low bits.
+    std::uint64_t h = x ^ ((y << 29) | (y >> 35)) ^ 0x9e3779b97f4a7c15ull;
+    h ^= h >> 33;
+    h *= 0xff51afd7ed558ccdull;
+    h ^= h >> 33;
+    h *= 0xc4ceb9fe1a85ec53ull;
+    h ^= h >> 33;
+    return static_cast<std::size_t>(h);
+  }
+
+  void grow() {
+    std::vector<std::uint32_t> old(slots_.size() * 2, kEmpty);
+    old.swap(slots_);
+    for (std::uint32_t i = 0; i < points.size(); ++i) {
+      std::size_t slot = hash(points[i]) & (slots_.size() - 1);
+      while (slots_[slot] != kEmpty) slot = (slot + 1) & (slots_.size() - 1);
+      slots_[slot] = i;
+    }
   }
 };
 
@@ -577,8 +702,14 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
   std::vector<Region> regions = nest_rings(std::move(rings));
 
   Mesh mesh;
-  PointIndex index;
-  std::set<EdgeKey> constrained;
+  std::size_t piece_count = 0;
+  for (const Region& region : regions) {
+    piece_count += region.outer.size();
+    for (const Ring& hole : region.holes) piece_count += hole.size();
+  }
+  PointIndex index(2 * piece_count);
+  std::vector<EdgeKey> constrained;  // outline edges: never flipped (sorted below)
+  constrained.reserve(2 * piece_count);
   std::vector<std::array<Vec2, 3>> triangle_points;
   for (const Region& region : regions) {
     auto polygonise = [&](const Ring& ring) {
@@ -591,7 +722,7 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
         const std::uint32_t ia = index(a), ib = index(b);
         if (!p.conic) {
           mesh.boundary_lines.push_back({ia, ib});
-          constrained.insert(edge_key(ia, ib));
+          constrained.push_back(edge_key(ia, ib));
           continue;
         }
         // Filled side is on the left: a control point on the right of the
@@ -601,11 +732,11 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
         const std::uint32_t ic = index(p.control);
         mesh.curves.push_back({ia, ic, ib, p.weight, convex});
         if (convex) {
-          constrained.insert(edge_key(ia, ib));
+          constrained.push_back(edge_key(ia, ib));
         } else {
           loop.push_back(p.control);
-          constrained.insert(edge_key(ia, ic));
-          constrained.insert(edge_key(ic, ib));
+          constrained.push_back(edge_key(ia, ic));
+          constrained.push_back(edge_key(ic, ib));
         }
       }
       return remove_folds(loop);
@@ -621,6 +752,8 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
   }
   mesh.triangles.reserve(triangle_points.size());
   for (const auto& t : triangle_points) mesh.triangles.push_back({index(t[0]), index(t[1]), index(t[2])});
+  std::sort(constrained.begin(), constrained.end());
+  constrained.erase(std::unique(constrained.begin(), constrained.end()), constrained.end());
   delaunay_flips(index.points, mesh.triangles, constrained);
   mesh.points = std::move(index.points);
   return mesh;

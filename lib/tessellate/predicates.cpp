@@ -46,28 +46,31 @@ int exact_sign_of_sum(const double* terms, int count) {
   return 0;
 }
 
-int orient2d(Vec2 a, Vec2 b, Vec2 c) {
-  const double detleft = (a.x - c.x) * (b.y - c.y);
-  const double detright = (a.y - c.y) * (b.x - c.x);
-  const double det = detleft - detright;
-  // Shewchuk's filter (Adaptive Precision Floating-Point Arithmetic, 1997):
-  // with eps = 2^-53, |det - exact| <= ccwerrboundA * (|detleft| + |detright|)
-  // where ccwerrboundA = (3 + 16 eps) eps. Outside that band the double sign
-  // is exact.
-  constexpr double kEps = std::numeric_limits<double>::epsilon() / 2.0;
-  constexpr double kCcwErrBoundA = (3.0 + 16.0 * kEps) * kEps;
-  const double errbound = kCcwErrBoundA * (std::fabs(detleft) + std::fabs(detright));
-  if (det > errbound) return 1;
-  if (-det > errbound) return -1;
-
-  // Slow path: each difference is split exactly into value + rounding error,
-  // the products expanded into 16 exact terms, and their sum's sign found
-  // exactly.
+int orient2d_exact(Vec2 a, Vec2 b, Vec2 c) {
+  // Stage B, for the common undecided case of font coordinates (small
+  // integers or short binary fractions, often exactly collinear): when the
+  // four differences and both products are exact (their error terms are
+  // zero), det = fl(detleft - detright) has the exact sign, because one
+  // correctly rounded subtraction keeps the sign and is zero only for equal
+  // operands.
   double acx, acx_e, bcy, bcy_e, acy, acy_e, bcx, bcx_e;
   two_sum(a.x, -c.x, acx, acx_e);
   two_sum(b.y, -c.y, bcy, bcy_e);
   two_sum(a.y, -c.y, acy, acy_e);
   two_sum(b.x, -c.x, bcx, bcx_e);
+  if (acx_e == 0.0 && bcy_e == 0.0 && acy_e == 0.0 && bcx_e == 0.0) {
+    double l, l_e, r, r_e;
+    two_product(acx, bcy, l, l_e);
+    two_product(acy, bcx, r, r_e);
+    if (l_e == 0.0 && r_e == 0.0) {
+      const double det = l - r;
+      return det > 0.0 ? 1 : det < 0.0 ? -1 : 0;
+    }
+  }
+
+  // Slow path: each difference is split exactly into value + rounding error,
+  // the products expanded into 16 exact terms, and their sum's sign found
+  // exactly.
   const double left[2] = {acx, acx_e};
   const double left2[2] = {bcy, bcy_e};
   const double right[2] = {acy, acy_e};

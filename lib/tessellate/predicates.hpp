@@ -11,9 +11,26 @@
 
 namespace curvetext::detail {
 
+// The exact slow path of orient2d, for inputs its filter cannot decide.
+int orient2d_exact(Vec2 a, Vec2 b, Vec2 c);
+
 // Sign of the orientation determinant |a-c b-c|: +1 when a, b, c turn
 // counter-clockwise (c left of a->b, y up), -1 clockwise, 0 collinear. Exact.
-int orient2d(Vec2 a, Vec2 b, Vec2 c);
+// Inline filter (Shewchuk, "Adaptive Precision Floating-Point Arithmetic",
+// 1997): with eps = 2^-53, |det - exact| <= (3 + 16 eps) eps (|detleft| +
+// |detright|); outside that band the double sign is the exact sign. Most
+// calls end here; the rest go to orient2d_exact.
+inline int orient2d(Vec2 a, Vec2 b, Vec2 c) {
+  const double detleft = (a.x - c.x) * (b.y - c.y);
+  const double detright = (a.y - c.y) * (b.x - c.x);
+  const double det = detleft - detright;
+  constexpr double kEps = 0x1p-53;
+  constexpr double kCcwErrBoundA = (3.0 + 16.0 * kEps) * kEps;
+  const double errbound = kCcwErrBoundA * ((detleft < 0 ? -detleft : detleft) + (detright < 0 ? -detright : detright));
+  if (det > errbound) return 1;
+  if (-det > errbound) return -1;
+  return orient2d_exact(a, b, c);
+}
 
 // Twice the signed area of (a, b, c) in plain double arithmetic, for
 // magnitudes only (areas, quality measures); never use its sign for topology.

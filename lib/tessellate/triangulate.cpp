@@ -6,7 +6,6 @@
 #include <numeric>
 #include <utility>
 #include <vector>
-#include <unordered_map>
 
 #include "tessellate/predicates.hpp"
 
@@ -133,9 +132,15 @@ std::vector<PolygonLoops> relink_touching_loops(std::vector<Vec2> outer, std::ve
   for (const auto& hole : holes) add_loop(hole);
   const std::size_t n = pos.size();
 
-  std::map<std::pair<double, double>, std::vector<std::size_t>> copies;
-  for (std::size_t i = 0; i < n; ++i) copies[{pos[i].x, pos[i].y}].push_back(i);
-  const bool touching = std::any_of(copies.begin(), copies.end(), [](const auto& c) { return c.second.size() > 1; });
+  // Loops that share no vertex (the usual case) are returned as they are.
+  std::vector<std::size_t> by_position(n);
+  std::iota(by_position.begin(), by_position.end(), std::size_t{0});
+  auto position_less = [&](std::size_t i, std::size_t j) {
+    return pos[i].x < pos[j].x || (pos[i].x == pos[j].x && (pos[i].y < pos[j].y || (pos[i].y == pos[j].y && i < j)));
+  };
+  std::sort(by_position.begin(), by_position.end(), position_less);
+  bool touching = false;
+  for (std::size_t k = 1; k < n && !touching; ++k) touching = pos[by_position[k]] == pos[by_position[k - 1]];
   if (!touching) {
     std::vector<PolygonLoops> unchanged(1);
     unchanged[0].outer = std::move(outer);
@@ -160,7 +165,14 @@ std::vector<PolygonLoops> relink_touching_loops(std::vector<Vec2> outer, std::ve
   };
   std::vector<Ray> rays;
   std::vector<char> taken;
-  for (const auto& [key, nodes] : copies) {
+  std::vector<std::size_t> nodes;
+  for (std::size_t first = 0; first < n;) {
+    // The nodes at one position, in increasing node order.
+    std::size_t last = first + 1;
+    while (last < n && pos[by_position[last]] == pos[by_position[first]]) ++last;
+    nodes.assign(by_position.begin() + static_cast<std::ptrdiff_t>(first),
+                 by_position.begin() + static_cast<std::ptrdiff_t>(last));
+    first = last;
     if (nodes.size() < 2) continue;
     const Vec2 p = pos[nodes.front()];
     rays.clear();
@@ -343,14 +355,19 @@ bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& t
     const Vec2 before_a = loop[prev[ia]], after_c = loop[next[ic]];
     if (before_a != c && !inside_cone(before_a, a, b, c)) return false;
     if (after_c != a && !inside_cone(b, c, after_c, a)) return false;
-    for (std::size_t p = next[ic]; p != ia; p = next[p]) {
-      const std::size_t q = next[p];
-      if (bridge_blocked_by(a, c, loop[p], loop[q])) return false;
-    }
+    // One walk over the rest of the loop: its edges must not meet the
+    // diagonal, its vertices must not lie in the triangle. The diagonal lies
+    // in the triangle's box, so edges and vertices outside it are skipped
+    // without predicates.
     const Vec2 corners[3] = {a, b, c};
     for (std::size_t p = next[ic]; p != ia; p = next[p]) {
-      const Vec2 pp = loop[p];
-      if (pp.x < min_x || pp.x > max_x || pp.y < min_y || pp.y > max_y) continue;
+      const Vec2 pp = loop[p], pq = loop[next[p]];
+      const bool p_outside_box = pp.x < min_x || pp.x > max_x || pp.y < min_y || pp.y > max_y;
+      if (!(std::max(pp.x, pq.x) < min_x || std::min(pp.x, pq.x) > max_x || std::max(pp.y, pq.y) < min_y ||
+            std::min(pp.y, pq.y) > max_y) &&
+          bridge_blocked_by(a, c, pp, pq))
+        return false;
+      if (p_outside_box) continue;
       int corner = -1;
       for (int k = 0; k < 3; ++k) {
         if (pp == corners[k]) corner = k;
@@ -423,25 +440,92 @@ bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& t
   return clean;
 }
 
-void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std::uint32_t, 3>>& triangles,
-                    const std::set<EdgeKey>& constrained) {
-  struct EdgeFaces {
+namespace {
+
+// Edge (min index, max index) -> the triangles on its two sides, in an
+// open-addressing table (no per-edge allocation). A flipped-away edge keeps
+// its slot with count 0, which reads as "no such edge".
+class EdgeTable {
+ public:
+  struct Faces {
+    std::uint64_t key = kEmpty;
     std::uint32_t face[2] = {0, 0};
     int count = 0;
   };
-  auto pack = [](EdgeKey k) { return (std::uint64_t{k.first} << 32) | k.second; };
-  std::unordered_map<std::uint64_t, EdgeFaces> edges;
-  edges.reserve(triangles.size() * 3);
-  for (std::uint32_t t = 0; t < triangles.size(); ++t) {
-    for (int k = 0; k < 3; ++k) {
-      EdgeFaces& e = edges[pack(edge_key(triangles[t][k], triangles[t][(k + 1) % 3]))];
-      if (e.count < 2) e.face[e.count] = t;
-      ++e.count;
+
+  explicit EdgeTable(std::size_t expected) {
+    std::size_t capacity = 16;
+    while (capacity < 2 * expected + 16) capacity *= 2;
+    slots_.assign(capacity, Faces{});
+  }
+
+  static std::uint64_t pack(EdgeKey k) { return (std::uint64_t{k.first} << 32) | k.second; }
+
+  Faces& at(EdgeKey k) {
+    const std::uint64_t key = pack(k);
+    if (2 * (used_ + 1) > slots_.size()) grow();
+    std::size_t slot = hash(key) & (slots_.size() - 1);
+    while (slots_[slot].key != kEmpty && slots_[slot].key != key) slot = (slot + 1) & (slots_.size() - 1);
+    if (slots_[slot].key == kEmpty) {
+      slots_[slot].key = key;
+      ++used_;
+    }
+    return slots_[slot];
+  }
+
+  // The live entry of edge k (count > 0), or null.
+  Faces* find(EdgeKey k) {
+    const std::uint64_t key = pack(k);
+    std::size_t slot = hash(key) & (slots_.size() - 1);
+    while (slots_[slot].key != kEmpty) {
+      if (slots_[slot].key == key) return slots_[slot].count > 0 ? &slots_[slot] : nullptr;
+      slot = (slot + 1) & (slots_.size() - 1);
+    }
+    return nullptr;
+  }
+
+ private:
+  static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+  std::vector<Faces> slots_;
+  std::size_t used_ = 0;
+
+  static std::size_t hash(std::uint64_t key) {
+    std::uint64_t h = key;  // murmur3's finaliser: every key bit reaches the low bits
+    h ^= h >> 33;
+    h *= 0xff51afd7ed558ccdull;
+    h ^= h >> 33;
+    h *= 0xc4ceb9fe1a85ec53ull;
+    h ^= h >> 33;
+    return static_cast<std::size_t>(h);
+  }
+
+  void grow() {
+    std::vector<Faces> old(slots_.size() * 2, Faces{});
+    old.swap(slots_);
+    for (const Faces& f : old) {
+      if (f.key == kEmpty) continue;
+      std::size_t slot = hash(f.key) & (slots_.size() - 1);
+      while (slots_[slot].key != kEmpty) slot = (slot + 1) & (slots_.size() - 1);
+      slots_[slot] = f;
     }
   }
+};
+
+}  // namespace
+
+void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std::uint32_t, 3>>& triangles,
+                    const std::vector<EdgeKey>& constrained) {
+  EdgeTable edges(3 * triangles.size());
   std::vector<EdgeKey> stack;
-  for (const auto& [key, faces] : edges) {
-    if (faces.count == 2) stack.push_back({static_cast<std::uint32_t>(key >> 32), static_cast<std::uint32_t>(key)});
+  stack.reserve(3 * triangles.size());
+  for (std::uint32_t t = 0; t < triangles.size(); ++t) {
+    for (int k = 0; k < 3; ++k) {
+      const EdgeKey key = edge_key(triangles[t][k], triangles[t][(k + 1) % 3]);
+      EdgeTable::Faces& e = edges.at(key);
+      if (e.count < 2) e.face[e.count] = t;
+      ++e.count;
+      if (e.count == 2) stack.push_back(key);  // candidates in triangle order
+    }
   }
   // Lawson's algorithm terminates with exact predicates; ours are not exact
   // (incircle in long double), so the flip count is capped to guarantee an end.
@@ -459,11 +543,11 @@ void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std:
     return false;
   };
   auto replace_face = [&](EdgeKey key, std::uint32_t from, std::uint32_t to) {
-    auto it = edges.find(pack(key));
-    if (it == edges.end()) return;
+    EdgeTable::Faces* e = edges.find(key);
+    if (!e) return;
     for (int k = 0; k < 2; ++k) {
-      if (it->second.face[k] == from) {
-        it->second.face[k] = to;
+      if (e->face[k] == from) {
+        e->face[k] = to;
         return;
       }
     }
@@ -471,10 +555,10 @@ void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std:
   while (!stack.empty() && flips_left > 0) {
     const EdgeKey key = stack.back();
     stack.pop_back();
-    if (constrained.count(key)) continue;
-    auto it = edges.find(pack(key));
-    if (it == edges.end() || it->second.count != 2) continue;
-    std::uint32_t t1 = it->second.face[0], t2 = it->second.face[1];
+    if (std::binary_search(constrained.begin(), constrained.end(), key)) continue;
+    EdgeTable::Faces* e = edges.find(key);
+    if (!e || e->count != 2) continue;
+    std::uint32_t t1 = e->face[0], t2 = e->face[1];
     std::uint32_t a = key.first, b = key.second;
     if (!has_directed(triangles[t1], a, b)) std::swap(a, b);
     if (!has_directed(triangles[t1], a, b) || !has_directed(triangles[t2], b, a)) continue;
@@ -485,15 +569,14 @@ void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std:
     if (orient2d(pa, pd, pc) <= 0 || orient2d(pd, pb, pc) <= 0) continue;  // quad not strictly convex
     if (incircle(pa, pb, pc, pd) <= 0) continue;
     const EdgeKey cd = edge_key(c, d);
-    if (edges.count(pack(cd))) continue;  // would duplicate an existing edge
+    if (edges.find(cd)) continue;  // would duplicate an existing edge
     triangles[t1] = {a, d, c};
     triangles[t2] = {d, b, c};
-    edges.erase(it);
-    EdgeFaces new_edge;
+    e->count = 0;  // edge a-b is gone
+    EdgeTable::Faces& new_edge = edges.at(cd);  // may move the table: e is not used below
     new_edge.face[0] = t1;
     new_edge.face[1] = t2;
     new_edge.count = 2;
-    edges[pack(cd)] = new_edge;
     replace_face(edge_key(a, d), t2, t1);
     replace_face(edge_key(b, c), t1, t2);
     --flips_left;

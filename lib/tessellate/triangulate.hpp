@@ -52,7 +52,8 @@ inline EdgeKey edge_key(std::uint32_t a, std::uint32_t b) {
 // triangles whose quad is strictly convex is flipped while the opposite vertex
 // lies inside the circumcircle. Edges in `constrained` are never flipped. The
 // number of flips is bounded (see implementation), so it always terminates.
+// `constrained` is sorted and free of duplicates.
 void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std::uint32_t, 3>>& triangles,
-                    const std::set<EdgeKey>& constrained);
+                    const std::vector<EdgeKey>& constrained);
 
 }  // namespace curvetext::detail
