@@ -1,0 +1,169 @@
+// 2D shapes (paper Figures 2 and 5: CAD-like outlines with weights): a shape
+// document is a list of filled shapes, each made of closed contours of
+// rational Bezier pieces, with a fill rule and a colour. Two inputs:
+//  - JSON with NURBS curves (any degree, weights, knot vector) and lines
+//    (docs/shapes/README.md gives the format);
+//  - SVG path data (M L H V Q T C S A Z) and a minimal SVG file reader.
+// Exact where it can be: lines, quadratic NURBS/Beziers (rational or not) and
+// SVG elliptical arcs become exact rational quadratics (DESIGN.md section 3).
+// Polynomial cubics use cubic_to_quadratics (curves.hpp); rational cubics and
+// every degree >= 4 are approximated by conics within the caller's tolerance.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "curvetext/color.hpp"
+#include "curvetext/outline.hpp"
+#include "curvetext/renderer.hpp"
+
+namespace curvetext {
+
+enum class FillRule { NonZero, EvenOdd };
+
+// "nonzero" | "evenodd" (SVG spelling; "even-odd" is accepted too).
+FillRule parse_fill_rule(std::string_view text);
+
+// A rational Bezier piece of degree points.size() - 1 >= 1, in homogeneous
+// form sum(w_i B_i(t) p_i) / sum(w_i B_i(t)). Every weight is > 0.
+struct RationalBezier {
+  std::vector<Vec2> points;
+  std::vector<double> weights;
+  int degree() const { return static_cast<int>(points.size()) - 1; }
+  bool is_polynomial() const;  // all weights equal
+  static RationalBezier line(Vec2 a, Vec2 b);
+  static RationalBezier conic(Vec2 a, Vec2 control, Vec2 b, double weight);
+  static RationalBezier cubic(Vec2 a, Vec2 c1, Vec2 c2, Vec2 b);
+};
+
+Vec2 evaluate(const RationalBezier& curve, double t);
+// De Casteljau in homogeneous coordinates: both halves are exact.
+std::pair<RationalBezier, RationalBezier> split(const RationalBezier& curve, double t);
+
+// A closed contour: pieces[i] ends where pieces[i+1] starts; the last piece
+// is joined to the first by a line when it does not end there.
+struct ShapeContour {
+  std::vector<RationalBezier> pieces;
+};
+
+struct Shape {
+  std::vector<ShapeContour> contours;
+  FillRule fill_rule = FillRule::NonZero;
+  Color color{0, 0, 0, 1};
+};
+
+// Coordinates are y-up (SVG's y-down input is mirrored when read).
+struct ShapeDocument {
+  std::vector<Shape> shapes;
+  // The region to draw, in document units, y-up. Empty: the control box of
+  // every shape.
+  Box view;
+  // Intrinsic image size in pixels (SVG width/height, JSON "size"); 0 when
+  // the document does not say.
+  double width_px = 0.0;
+  double height_px = 0.0;
+};
+
+// --- NURBS ----------------------------------------------------------------------
+// A NURBS curve: degree p >= 1, n + 1 = points.size() >= p + 1 control points,
+// weights (empty = all 1), and n + p + 2 knots, non-decreasing, with interior
+// multiplicity <= p. Clamped or not: the curve is the part over
+// [knots[p], knots[n + 1]].
+struct Nurbs {
+  int degree = 0;
+  std::vector<Vec2> points;
+  std::vector<double> weights;
+  std::vector<double> knots;
+};
+
+// Throws Error(InvalidArgument) naming the problem (bad degree, counts, knot
+// order or multiplicity, NaN/inf/huge values, weights <= 0).
+void validate_nurbs(const Nurbs& curve);
+
+// Exact conversion into rational Bezier pieces of the same degree, one per
+// non-empty knot span of the domain. Each piece's control points are the
+// blossoms (polar values) of the span's end knots: the same points Boehm's
+// knot insertion gives after raising every knot to multiplicity p, computed
+// in homogeneous coordinates (so rational curves stay exact).
+std::vector<RationalBezier> nurbs_to_beziers(const Nurbs& curve);
+
+// Largest absolute coordinate accepted anywhere in shape input (document
+// units). Beyond it double precision leaves too few bits for 1/16 px at any
+// useful zoom, and squared lengths approach overflow.
+inline constexpr double kMaxShapeCoordinate = 1e9;
+// Degree above which NURBS input is refused (the homogeneous de Casteljau and
+// blossoms are O(p^2) per piece; nothing real needs more).
+inline constexpr int kMaxNurbsDegree = 16;
+
+// --- Lines and conics -------------------------------------------------------------
+// Appends lines and conics for `curve`: exact for degree 1 and 2 (conics
+// normalised to end weights 1, w = w1 / sqrt(w0 w2)); polynomial cubics
+// through cubic_to_quadratics(tolerance); rational cubics and degree >= 4 by
+// adaptive subdivision, each piece replaced by the conic with the same end
+// points and end tangents through the piece's midpoint, accepted when the
+// estimated distance (first-order implicit distance at 33 sample points per
+// piece, with a 1.5x safety factor) is <= tolerance.
+// `tolerance` is in document units. Throws Error(Geometry) when that would
+// need more than kMaxConicsPerCurve pieces.
+void append_quadratics(const RationalBezier& curve, double tolerance, std::vector<Segment>& out);
+inline constexpr int kMaxConicsPerCurve = 4096;
+
+// The shape's contours as lines and conics (see append_quadratics).
+Outline shape_outline(const Shape& shape, double tolerance);
+
+// An outline whose NONZERO fill is the shape's fill: the shape's own outline
+// for FillRule::NonZero; for EvenOdd, even_odd_to_nonzero of it.
+Outline fill_outline(const Shape& shape, double tolerance);
+
+// Re-expresses the even-odd fill of an outline of lines and conics as an
+// outline whose nonzero fill is the same region (build_mesh fills nonzero
+// only). Every segment is split where it crosses or touches another (or
+// itself); each piece is then oriented so that the side with odd winding is
+// on its left, and the pieces are chained into closed contours. The boundary
+// of the odd region, oriented this way, has winding 1 inside it and 0
+// elsewhere. Exact in the geometry (pieces of conics are exact sub-conics);
+// the crossing points are computed in double precision (relative error
+// ~1e-12 of the outline's size). Segments lying on top of each other
+// (collinear overlapping lines, identical arcs) are not resolved.
+Outline even_odd_to_nonzero(const Outline& outline);
+
+// --- Input ------------------------------------------------------------------------
+// Errors are Error(InvalidArgument) with "line L, column C" for syntax errors.
+ShapeDocument parse_shape_json(std::string_view text);
+// SVG path data in its own coordinates (no mirroring). Arcs become exact conics.
+std::vector<ShapeContour> parse_svg_path(std::string_view d);
+// Minimal SVG: <svg width height viewBox> and its <path d fill fill-rule>
+// elements (also inside <g>, which is otherwise ignored); a `transform`
+// attribute is refused rather than ignored.
+ShapeDocument parse_svg(std::string_view text);
+// By extension: .json or .svg. Throws Error(Io) when unreadable.
+ShapeDocument read_shape_file(const std::string& path);
+
+// --- Drawing ----------------------------------------------------------------------
+struct ShapeImageOptions {
+  int width = 0;       // 0: from the document (or the view at `scale`)
+  int height = 0;
+  double scale = 0.0;  // pixels per document unit; 0: fit the view into the image
+  Color background{1, 1, 1, 1};
+  AntiAliasing antialiasing = AntiAliasing::Full;
+  CurveMode curve_mode = CurveMode::Exact;
+};
+
+struct ShapeImageLayout {
+  int width = 0;
+  int height = 0;
+  Placement placement;  // document units (y-up) -> pixels
+};
+
+// Throws Error(InvalidArgument) for an empty document, an empty view, a scale
+// that is not positive and finite, or an image side above the limit.
+ShapeImageLayout layout_shape_image(const ShapeDocument& doc, const ShapeImageOptions& options);
+
+// Draws every shape in order (one mesh, one batch, one colour each, blended
+// source-over) with the renderer's GL context current.
+Image render_shape_image(Renderer& renderer, const ShapeDocument& doc, const ShapeImageLayout& layout,
+                         const ShapeImageOptions& options);
+
+}  // namespace curvetext

@@ -1,0 +1,50 @@
+// Input checks shared by the shape readers: every value that reaches the
+// geometry is finite and of a sane magnitude, or the caller gets an Error that
+// names it.
+#pragma once
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "curvetext/error.hpp"
+#include "curvetext/geometry.hpp"
+#include "curvetext/shapes.hpp"
+
+namespace curvetext::shapes_detail {
+
+inline std::string number_text(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+// Throws Error(InvalidArgument) "<what>: coordinate ... is not finite / too large".
+inline void check_coordinate(double v, const std::string& what) {
+  if (!std::isfinite(v))
+    throw Error(ErrorCode::InvalidArgument, what + ": coordinate " + number_text(v) + " is not a finite number");
+  if (std::abs(v) > kMaxShapeCoordinate)
+    throw Error(ErrorCode::InvalidArgument, what + ": coordinate " + number_text(v) + " is larger than " +
+                                                number_text(kMaxShapeCoordinate) + " in magnitude");
+}
+
+inline void check_point(Vec2 p, const std::string& what) {
+  check_coordinate(p.x, what);
+  check_coordinate(p.y, what);
+}
+
+// Weights must be positive (a zero or negative weight makes the curve pass
+// through infinity or leave the control hull); the range keeps the normalised
+// conic weights and the homogeneous coordinates far from overflow.
+inline constexpr double kMinWeight = 1e-9;
+inline constexpr double kMaxWeight = 1e9;
+
+inline void check_weight(double w, const std::string& what) {
+  if (!std::isfinite(w) || w <= 0.0)
+    throw Error(ErrorCode::InvalidArgument, what + ": weight " + number_text(w) + " must be a positive finite number");
+  if (w < kMinWeight || w > kMaxWeight)
+    throw Error(ErrorCode::InvalidArgument, what + ": weight " + number_text(w) + " is outside [" +
+                                                number_text(kMinWeight) + ", " + number_text(kMaxWeight) + "]");
+}
+
+}  // namespace curvetext::shapes_detail

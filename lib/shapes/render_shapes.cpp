@@ -1,0 +1,110 @@
+// Shape documents to images: one mesh and one draw call per shape, in order,
+// blended source-over (the renderer draws one colour per batch).
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "check.hpp"
+#include "curvetext/error.hpp"
+#include "curvetext/mesh.hpp"
+#include "curvetext/shapes.hpp"
+#include "curvetext/tolerances.hpp"
+
+namespace curvetext {
+
+namespace {
+
+// Pixels of the longer side when neither the document nor the caller sizes
+// the image.
+constexpr double kDefaultLongSidePx = 512.0;
+
+Box content_box(const ShapeDocument& doc) {
+  Box box;
+  for (const Shape& s : doc.shapes)
+    for (const ShapeContour& c : s.contours)
+      for (const RationalBezier& b : c.pieces)
+        for (Vec2 p : b.points) box.add(p);
+  return box;
+}
+
+int image_side(double v, const char* what) {
+  if (!std::isfinite(v) || v < 1.0 || v > tolerance::kMaxImageSidePx)
+    throw Error(ErrorCode::InvalidArgument, std::string("the image ") + what + " would be " +
+                                                shapes_detail::number_text(v) + " px; it must be from 1 to " +
+                                                std::to_string(static_cast<int>(tolerance::kMaxImageSidePx)));
+  return static_cast<int>(v);
+}
+
+}  // namespace
+
+ShapeImageLayout layout_shape_image(const ShapeDocument& doc, const ShapeImageOptions& options) {
+  Box view = doc.view;
+  if (view.empty()) view = content_box(doc);
+  if (view.empty()) throw Error(ErrorCode::InvalidArgument, "the shape document draws nothing (no shapes)");
+  double vw = view.max.x - view.min.x, vh = view.max.y - view.min.y;
+  // A view of zero width or height (a single horizontal line) gets the other
+  // side, so that scales stay finite.
+  if (!(vw > 0.0) && !(vh > 0.0)) throw Error(ErrorCode::InvalidArgument, "the shapes have no extent");
+  if (!(vw > 0.0)) vw = vh;
+  if (!(vh > 0.0)) vh = vw;
+
+  if (options.scale != 0.0 && (!std::isfinite(options.scale) || options.scale <= 0.0))
+    throw Error(ErrorCode::InvalidArgument,
+                "scale must be a positive number, got " + shapes_detail::number_text(options.scale));
+  if (options.width < 0 || options.height < 0) throw Error(ErrorCode::InvalidArgument, "image size must be positive");
+
+  double w = options.width, h = options.height, s = options.scale;
+  if (s > 0.0) {
+    if (w == 0) w = std::ceil(vw * s);
+    if (h == 0) h = std::ceil(vh * s);
+  } else {
+    if (w == 0 || h == 0) {
+      if (doc.width_px > 0 && doc.height_px > 0) {
+        w = doc.width_px;
+        h = doc.height_px;
+      } else {
+        const double k = kDefaultLongSidePx / std::max(vw, vh);
+        w = std::ceil(vw * k);
+        h = std::ceil(vh * k);
+      }
+    }
+    s = std::min(w / vw, h / vh);
+  }
+  ShapeImageLayout layout;
+  layout.width = image_side(w, "width");
+  layout.height = image_side(h, "height");
+  // The view centred in the image (SVG's default xMidYMid meet).
+  layout.placement.scale = s;
+  layout.placement.origin_x = 0.5 * (layout.width - s * vw) - s * view.min.x;
+  layout.placement.origin_y = 0.5 * (layout.height - s * vh) + s * view.max.y;
+  if (!std::isfinite(layout.placement.origin_x) || !std::isfinite(layout.placement.origin_y) ||
+      std::abs(layout.placement.origin_x) > 1e12 || std::abs(layout.placement.origin_y) > 1e12)
+    throw Error(ErrorCode::InvalidArgument, "the view is too far from the origin at this scale");
+  return layout;
+}
+
+Image render_shape_image(Renderer& renderer, const ShapeDocument& doc, const ShapeImageLayout& layout,
+                         const ShapeImageOptions& options) {
+  // DESIGN.md section 3: 1/16 px at the scale drawn, in document units.
+  const double tolerance = tolerance::kCubicApproximationPx / layout.placement.scale;
+  // Meshes first: geometry errors surface before anything is drawn.
+  std::vector<Mesh> meshes;
+  for (const Shape& shape : doc.shapes) {
+    MeshOptions mo;
+    mo.cubic_tolerance = tolerance;
+    meshes.push_back(build_mesh(fill_outline(shape, tolerance), mo));
+  }
+  renderer.begin(layout.width, layout.height, options.background);
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    if (meshes[i].empty()) continue;
+    DrawBatch batch = DrawBatch::from_mesh(meshes[i]);
+    DrawOptions draw;
+    draw.color = doc.shapes[i].color;
+    draw.antialiasing = options.antialiasing;
+    draw.curve_mode = options.curve_mode;
+    renderer.draw(batch, layout.placement, draw);
+  }
+  return renderer.read_pixels();
+}
+
+}  // namespace curvetext

@@ -1,0 +1,214 @@
+// Shape documents in JSON (format: docs/shapes/README.md). Unknown keys are
+// errors, so a misspelt "wieghts" is reported instead of silently ignored.
+#include <cmath>
+#include <string>
+
+#include "check.hpp"
+#include "curvetext/error.hpp"
+#include "curvetext/shapes.hpp"
+#include "json.hpp"
+
+namespace curvetext {
+
+namespace {
+
+using json::Value;
+using shapes_detail::check_point;
+using shapes_detail::check_weight;
+
+[[noreturn]] void fail(const Value& v, const std::string& path, const std::string& message) {
+  throw Error(ErrorCode::InvalidArgument, "JSON " + v.where() + ": " + path + ": " + message);
+}
+
+void expect(const Value& v, Value::Type type, const std::string& path) {
+  if (v.type != type)
+    fail(v, path, std::string("expected ") + json::type_name(type) + ", got " + json::type_name(v.type));
+}
+
+void only_keys(const Value& v, std::initializer_list<std::string_view> keys, const std::string& path) {
+  for (const auto& [k, member] : v.object) {
+    bool known = false;
+    for (std::string_view key : keys) known = known || k == key;
+    if (!known) {
+      std::string list;
+      for (std::string_view key : keys) list += (list.empty() ? "" : ", ") + std::string(key);
+      fail(member, path, "unknown key \"" + k + "\" (known: " + list + ")");
+    }
+  }
+}
+
+double number(const Value& v, const std::string& path) {
+  expect(v, Value::Type::Number, path);
+  return v.number;
+}
+
+Vec2 point(const Value& v, const std::string& path) {
+  expect(v, Value::Type::Array, path);
+  if (v.array.size() != 2) fail(v, path, "a point is [x, y], got " + std::to_string(v.array.size()) + " values");
+  const Vec2 p{number(v.array[0], path + "[0]"), number(v.array[1], path + "[1]")};
+  try {
+    check_point(p, path);
+  } catch (const Error& e) {
+    fail(v, path, e.what());
+  }
+  return p;
+}
+
+std::vector<Vec2> points(const Value& v, const std::string& path, std::size_t at_least) {
+  expect(v, Value::Type::Array, path);
+  if (v.array.size() < at_least)
+    fail(v, path, "needs at least " + std::to_string(at_least) + " points, got " + std::to_string(v.array.size()));
+  std::vector<Vec2> out;
+  for (std::size_t i = 0; i < v.array.size(); ++i) out.push_back(point(v.array[i], path + "[" + std::to_string(i) + "]"));
+  return out;
+}
+
+std::vector<double> numbers(const Value& v, const std::string& path) {
+  expect(v, Value::Type::Array, path);
+  std::vector<double> out;
+  for (std::size_t i = 0; i < v.array.size(); ++i) out.push_back(number(v.array[i], path + "[" + std::to_string(i) + "]"));
+  return out;
+}
+
+void read_item(const Value& item, const std::string& path, ShapeContour& contour) {
+  expect(item, Value::Type::Object, path);
+  if (item.object.size() != 1)
+    fail(item, path, "a contour item is one of {\"line\": ...}, {\"bezier\": ...}, {\"nurbs\": ...}");
+  const auto& [kind, body] = item.object.front();
+  const std::string p = path + "." + kind;
+  if (kind == "line") {
+    const std::vector<Vec2> pts = points(body, p, 2);
+    for (std::size_t i = 0; i + 1 < pts.size(); ++i) contour.pieces.push_back(RationalBezier::line(pts[i], pts[i + 1]));
+    return;
+  }
+  if (kind == "bezier") {
+    expect(body, Value::Type::Object, p);
+    only_keys(body, {"points", "weights"}, p);
+    const Value* pts = body.find("points");
+    if (!pts) fail(body, p, "\"points\" is required");
+    RationalBezier b;
+    b.points = points(*pts, p + ".points", 2);
+    if (b.points.size() > static_cast<std::size_t>(kMaxNurbsDegree) + 1)
+      fail(*pts, p + ".points", "degree above " + std::to_string(kMaxNurbsDegree));
+    if (const Value* w = body.find("weights")) {
+      b.weights = numbers(*w, p + ".weights");
+      if (b.weights.size() != b.points.size())
+        fail(*w, p + ".weights", std::to_string(b.points.size()) + " points need as many weights, got " +
+                                     std::to_string(b.weights.size()));
+      for (std::size_t i = 0; i < b.weights.size(); ++i) {
+        try {
+          check_weight(b.weights[i], p + ".weights[" + std::to_string(i) + "]");
+        } catch (const Error& e) {
+          fail(w->array[i], p + ".weights", e.what());
+        }
+      }
+    } else {
+      b.weights.assign(b.points.size(), 1.0);
+    }
+    contour.pieces.push_back(std::move(b));
+    return;
+  }
+  if (kind == "nurbs") {
+    expect(body, Value::Type::Object, p);
+    only_keys(body, {"degree", "points", "weights", "knots"}, p);
+    const Value* deg = body.find("degree");
+    const Value* pts = body.find("points");
+    if (!deg) fail(body, p, "\"degree\" is required");
+    if (!pts) fail(body, p, "\"points\" is required");
+    Nurbs n;
+    const double d = number(*deg, p + ".degree");
+    if (d != std::floor(d) || d < 1 || d > kMaxNurbsDegree)
+      fail(*deg, p + ".degree", "must be a whole number from 1 to " + std::to_string(kMaxNurbsDegree));
+    n.degree = static_cast<int>(d);
+    n.points = points(*pts, p + ".points", 2);
+    if (const Value* w = body.find("weights")) n.weights = numbers(*w, p + ".weights");
+    if (const Value* k = body.find("knots")) {
+      n.knots = numbers(*k, p + ".knots");
+    } else {
+      // Clamped and uniform: 0 (p+1 times), 1, 2, ..., n-p (p+1 times).
+      const int count = static_cast<int>(n.points.size());
+      for (int i = 0; i <= n.degree; ++i) n.knots.push_back(0.0);
+      for (int i = 1; i < count - n.degree; ++i) n.knots.push_back(i);
+      for (int i = 0; i <= n.degree; ++i) n.knots.push_back(std::max(1, count - n.degree));
+    }
+    try {
+      for (RationalBezier& b : nurbs_to_beziers(n)) contour.pieces.push_back(std::move(b));
+    } catch (const Error& e) {
+      fail(body, p, e.what());
+    }
+    return;
+  }
+  fail(item, path, "unknown contour item \"" + kind + "\" (known: line, bezier, nurbs)");
+}
+
+}  // namespace
+
+ShapeDocument parse_shape_json(std::string_view text) {
+  const Value root = json::parse(text);
+  expect(root, Value::Type::Object, "document");
+  only_keys(root, {"size", "view", "shapes"}, "document");
+  ShapeDocument doc;
+  if (const Value* size = root.find("size")) {
+    const std::vector<double> s = numbers(*size, "size");
+    if (s.size() != 2 || !(s[0] >= 1 && s[1] >= 1) || s[0] > 16384 || s[1] > 16384)
+      fail(*size, "size", "must be [width, height] in pixels, each from 1 to 16384");
+    doc.width_px = s[0];
+    doc.height_px = s[1];
+  }
+  if (const Value* view = root.find("view")) {
+    const std::vector<double> v = numbers(*view, "view");
+    if (v.size() != 4) fail(*view, "view", "must be [xmin, ymin, xmax, ymax]");
+    for (double c : v) {
+      try {
+        shapes_detail::check_coordinate(c, "view");
+      } catch (const Error& e) {
+        fail(*view, "view", e.what());
+      }
+    }
+    if (!(v[0] < v[2] && v[1] < v[3])) fail(*view, "view", "needs xmin < xmax and ymin < ymax");
+    doc.view.add({v[0], v[1]});
+    doc.view.add({v[2], v[3]});
+  }
+  const Value* shapes = root.find("shapes");
+  if (!shapes) fail(root, "document", "\"shapes\" is required");
+  expect(*shapes, Value::Type::Array, "shapes");
+  for (std::size_t i = 0; i < shapes->array.size(); ++i) {
+    const Value& sv = shapes->array[i];
+    const std::string sp = "shapes[" + std::to_string(i) + "]";
+    expect(sv, Value::Type::Object, sp);
+    only_keys(sv, {"color", "fill_rule", "contours"}, sp);
+    Shape shape;
+    if (const Value* c = sv.find("color")) {
+      expect(*c, Value::Type::String, sp + ".color");
+      try {
+        shape.color = parse_color(c->string);
+      } catch (const Error& e) {
+        fail(*c, sp + ".color", e.what());
+      }
+    }
+    if (const Value* r = sv.find("fill_rule")) {
+      expect(*r, Value::Type::String, sp + ".fill_rule");
+      try {
+        shape.fill_rule = parse_fill_rule(r->string);
+      } catch (const Error& e) {
+        fail(*r, sp + ".fill_rule", e.what());
+      }
+    }
+    const Value* contours = sv.find("contours");
+    if (!contours) fail(sv, sp, "\"contours\" is required");
+    expect(*contours, Value::Type::Array, sp + ".contours");
+    for (std::size_t j = 0; j < contours->array.size(); ++j) {
+      const Value& cv = contours->array[j];
+      const std::string cp = sp + ".contours[" + std::to_string(j) + "]";
+      expect(cv, Value::Type::Array, cp);
+      ShapeContour contour;
+      for (std::size_t k = 0; k < cv.array.size(); ++k)
+        read_item(cv.array[k], cp + "[" + std::to_string(k) + "]", contour);
+      if (!contour.pieces.empty()) shape.contours.push_back(std::move(contour));
+    }
+    doc.shapes.push_back(std::move(shape));
+  }
+  return doc;
+}
+
+}  // namespace curvetext

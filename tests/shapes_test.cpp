@@ -1,0 +1,688 @@
+// Shapes (issue 4, item 4): JSON and SVG input, NURBS -> Bezier -> conics,
+// even-odd through the nonzero mesher, and rendering against analytic
+// coverage. Units: document units are pixels wherever a bound is in px.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <numbers>
+#include <string>
+
+#include "curvetext/curves.hpp"
+#include "curvetext/error.hpp"
+#include "curvetext/headless.hpp"
+#include "curvetext/mesh.hpp"
+#include "curvetext/renderer.hpp"
+#include "curvetext/shapes.hpp"
+#include "curvetext/tolerances.hpp"
+#include "shapes/json.hpp"
+#include "support/coverage.hpp"
+
+namespace curvetext {
+namespace {
+
+const std::string kFixtures = std::string(CURVETEXT_SOURCE_DIR) + "/tests/fixtures/shapes/";
+
+// --- Tolerances (with units) ----------------------------------------------------
+// Exact conversions (knot insertion, arcs) agree with direct evaluation to
+// rounding: relative to the shape's size.
+constexpr double kExactRelative = 1e-9;
+// DESIGN.md section 3: the drawn outline within 1/16 px of the true one.
+constexpr double kBoundPx = tolerance::kCubicApproximationPx;
+// Dense polylines stand in for curves in the Hausdorff measurement; their
+// chords are at most this far (px) from the curves they sample.
+constexpr double kPolylineSlackPx = 2e-3;
+
+// --- JSON syntax ------------------------------------------------------------------
+
+struct JsonCase {
+  const char* text;
+  const char* error;  // nullptr: must parse; else a part of the message
+};
+
+TEST(Json, SyntaxCases) {
+  const JsonCase cases[] = {
+      {R"({"a": [1, -2.5e3, 0, 0.5, true, false, null, "x\u00e9\n"]})", nullptr},
+      {R"(  [ ]  )", nullptr},
+      {R"({"a": 1e-400})", nullptr},  // underflow to 0 is harmless
+      {R"({"a": 01})", "line 1, column 8: a number may not have leading zeros"},
+      {R"({"a": [1,]})", "line 1, column 10: unexpected ']'"},
+      {R"({"a": 1 "b": 2})", "expected ',' or '}'"},
+      {R"({"a": NaN})", "unexpected 'N'"},
+      {R"({"a": Infinity})", "unexpected 'I'"},
+      {R"({"a": 1e400})", "out of range"},
+      {R"({"a": 1, "a": 2})", "line 1, column 10: duplicate key \"a\""},
+      {"\"tab\there\"", "control character"},
+      {R"("\ud800")", "surrogate"},
+      {R"("\q")", "invalid escape"},
+      {R"({"a": .5})", "unexpected '.'"},
+      {R"({"a": -})", "a digit must follow '-'"},
+      {R"({} x)", "after the end"},
+      {R"({"a": 1)", "expected ',' or '}'"},
+      {"{\"a\":\n  tru}", "line 2, column 3: invalid literal"},
+      {R"({'a': 1})", "expected a string key"},
+      {"", "unexpected end"},
+  };
+  for (const JsonCase& c : cases) {
+    SCOPED_TRACE(c.text);
+    if (!c.error) {
+      EXPECT_NO_THROW(json::parse(c.text));
+      continue;
+    }
+    try {
+      json::parse(c.text);
+      ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ErrorCode::InvalidArgument);
+      EXPECT_NE(std::string(e.what()).find(c.error), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_THROW(json::parse(std::string(1000, '[') + std::string(1000, ']')), Error);  // depth limit, no stack overflow
+  const json::Value v = json::parse(R"({"s": "\ud83d\ude00"})");
+  EXPECT_EQ(v.find("s")->string, "\xF0\x9F\x98\x80");
+}
+
+// --- Shape documents: errors ------------------------------------------------------
+
+std::string with_item(const std::string& item) {
+  return R"({"shapes": [{"contours": [[)" + item + "]]}]}";
+}
+
+TEST(ShapeJson, BadInputGivesClearErrors) {
+  const std::pair<std::string, const char*> cases[] = {
+      {R"([])", "document: expected an object"},
+      {R"({})", "\"shapes\" is required"},
+      {R"({"shapes": [], "colour": 1})", "unknown key \"colour\""},
+      {R"({"shapes": [{"contours": [], "fill_rule": "odd"}]})", "unknown fill rule 'odd'"},
+      {R"({"shapes": [{"contours": [], "color": "#12"}]})", "shapes[0].color"},
+      {R"({"size": [0, 10], "shapes": []})", "size"},
+      {R"({"view": [0, 0, 0, 10], "shapes": []})", "xmin < xmax"},
+      {with_item(R"({"line": [[0, 0]]})"), "at least 2 points"},
+      {with_item(R"({"line": [[0, 0], [1, 2, 3]]})"), "a point is [x, y]"},
+      {with_item(R"({"line": [[0, 0], [1e12, 0]]})"), "larger than"},
+      {with_item(R"({"line": [[0, 0], ["1", 0]]})"), "expected a number"},
+      {with_item(R"({"arc": {}})"), "unknown contour item \"arc\""},
+      {with_item(R"({"line": [[0,0],[1,1]], "nurbs": {}})"), "a contour item is one of"},
+      {with_item(R"({"bezier": {"points": [[0,0],[1,1],[2,0]], "weights": [1, 0, 1]}})"), "must be a positive"},
+      {with_item(R"({"bezier": {"points": [[0,0],[1,1],[2,0]], "weights": [1, -2, 1]}})"), "must be a positive"},
+      {with_item(R"({"bezier": {"points": [[0,0],[1,1],[2,0]], "weights": [1, 1]}})"), "need as many weights"},
+      {with_item(R"({"nurbs": {"degree": 0, "points": [[0,0],[1,1]]}})"), "degree"},
+      {with_item(R"({"nurbs": {"degree": 2.5, "points": [[0,0],[1,1],[2,0]]}})"), "whole number"},
+      {with_item(R"({"nurbs": {"degree": 3, "points": [[0,0],[1,1],[2,0]]}})"), "at least 4 control points"},
+      {with_item(R"({"nurbs": {"degree": 2, "points": [[0,0],[1,1],[2,0]], "knots": [0,0,0,1,1]}})"),
+       "knot vector has 5 values; 3 control points of degree 2 need 6"},
+      {with_item(R"({"nurbs": {"degree": 2, "points": [[0,0],[1,1],[2,0]], "knots": [0,0,1,0,1,1]}})"),
+       "non-decreasing"},
+      {with_item(R"({"nurbs": {"degree": 2, "points": [[0,0],[1,1],[2,0]], "knots": [0,0,0,0,0,0]}})"),
+       "domain"},
+      {with_item(R"({"nurbs": {"degree": 1, "points": [[0,0],[1,1],[2,0],[3,3]], "knots": [0,0,0.5,0.5,1,1]}})"),
+       "multiplicity 2 > degree 1"},
+      {with_item(R"({"nurbs": {"degree": 2, "points": [[0,0],[1,1],[2,0]], "weights": [1, 0, 1]}})"), "weight"},
+      {with_item(R"({"nurbs": {"degree": 2, "points": [[0,0],[1,1],[2,0]], "wieghts": [1, 1, 1]}})"),
+       "unknown key \"wieghts\""},
+  };
+  for (const auto& [text, error] : cases) {
+    SCOPED_TRACE(text);
+    try {
+      parse_shape_json(text);
+      ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ErrorCode::InvalidArgument);
+      EXPECT_NE(std::string(e.what()).find(error), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("line "), std::string::npos) << "no position: " << e.what();
+    }
+  }
+}
+
+TEST(ShapeJson, FixturesLoad) {
+  for (const char* name : {"circle-nurbs.json", "cubic-nurbs.json", "pentagram-evenodd.json", "handle-weights.json"}) {
+    SCOPED_TRACE(name);
+    const ShapeDocument doc = read_shape_file(kFixtures + name);
+    ASSERT_FALSE(doc.shapes.empty());
+    EXPECT_GT(doc.width_px, 0.0);
+    EXPECT_FALSE(shape_outline(doc.shapes[0], 0.01).empty());
+  }
+  const ShapeDocument eo = read_shape_file(kFixtures + "pentagram-evenodd.json");
+  EXPECT_EQ(eo.shapes[0].fill_rule, FillRule::EvenOdd);
+  EXPECT_THROW(read_shape_file(kFixtures + "missing.json"), Error);
+}
+
+// --- SVG path data --------------------------------------------------------------
+
+// Degrees of the pieces, contours separated by '|', and the last end point.
+std::string signature(const std::vector<ShapeContour>& contours) {
+  std::string s;
+  for (const ShapeContour& c : contours) {
+    if (!s.empty()) s += '|';
+    for (const RationalBezier& b : c.pieces) s += static_cast<char>('0' + b.degree());
+  }
+  if (!contours.empty()) {
+    const Vec2 e = contours.back().pieces.back().points.back();
+    char buf[64];
+    std::snprintf(buf, sizeof buf, " (%.6g,%.6g)", e.x, e.y);
+    s += buf;
+  }
+  return s;
+}
+
+TEST(SvgPath, Cases) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"M0 0 L10 0 L10 10 Z", "11 (10,10)"},
+      {"M0 0 10 0 10 10z", "11 (10,10)"},                      // implicit lineto after M
+      {"m1 1 l2 0 0 2 h-2 v-2 z", "1111 (1,1)"},               // relative, implicit repeats
+      {"M0,0C1,2 3,4 5,6S9,10 11,12", "33 (11,12)"},
+      {"M0 0Q1 1 2 0T4 0", "22 (4,0)"},
+      {"M.5.5L1e-3-2", "1 (0.001,-2)"},                         // compact numbers
+      {"M0 0L1E+1 2e0", "1 (10,2)"},
+      {"M0 0A10 10 0 0 1 20 0", "22 (20,0)"},                   // half circle: two 90 degree conics
+      {"M0 0A5 5 0 0 1 20 0", "22 (20,0)"},                     // radii too small: scaled up
+      {"M0 0A0 5 0 0 1 20 0", "1 (20,0)"},                      // zero radius: a line
+      {"M0 0A5 5 0 0 1 0 0", ""},                               // same end point: omitted
+      {"M0 0a10 10 0 0010 10", "2 (10,10)"},                    // compact flags
+      {"M0 0a10 10 0 1010 10", "222 (10,10)"},                  // large arc: 270 degrees, three pieces
+      {"M0 0 L10 0 M20 20 L30 20 L30 30", "1|11 (30,30)"},
+      {"M0 0 L10 0 Z L5 5", "1|1 (5,5)"},                       // after Z: new subpath from the start
+      {"M 0 0", ""},
+  };
+  for (const auto& [d, want] : cases) {
+    SCOPED_TRACE(d);
+    EXPECT_EQ(signature(parse_svg_path(d)), want);
+  }
+  // S reflects the previous cubic's second control point; T the quadratic's.
+  const auto s = parse_svg_path("M0,0C1,2 3,4 5,6S9,10 11,12");
+  EXPECT_EQ(s[0].pieces[1].points[1], (Vec2{7, 8}));
+  const auto t = parse_svg_path("M0 0Q1 1 2 0T4 0");
+  EXPECT_EQ(t[0].pieces[1].points[1], (Vec2{3, -1}));
+  const auto half = parse_svg_path("M0 0A10 10 0 0 1 20 0");
+  EXPECT_NEAR(half[0].pieces[0].weights[1], std::cos(std::numbers::pi / 4), 1e-15);
+}
+
+TEST(SvgPath, Errors) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"L0 0", "must start with M"},
+      {"0 0", "must start with M"},
+      {"M0 0 L1", "expected a number, got the end"},
+      {"M0 0 X1 1", "expected a number, got 'X'"},
+      {"M0 0 L1e999 0", "out of range"},
+      {"M0 0 L2e9 0", "larger than"},
+      {"M0 0 A1 1 0 2 0 1 1", "arc flag"},
+      {"M0 0 Z 1 1", "numbers after Z"},
+      {"M0 0 L--1 0", "expected a number"},
+  };
+  for (const auto& [d, error] : cases) {
+    SCOPED_TRACE(d);
+    try {
+      parse_svg_path(d);
+      ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ErrorCode::InvalidArgument);
+      EXPECT_NE(std::string(e.what()).find(error), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(SvgFile, ReadsPathsFillsAndViewBox) {
+  const ShapeDocument doc = read_shape_file(kFixtures + "star-rules.svg");
+  ASSERT_EQ(doc.shapes.size(), 2u);
+  EXPECT_EQ(doc.shapes[0].fill_rule, FillRule::EvenOdd);  // attribute; colour inherited from <g>
+  EXPECT_NEAR(doc.shapes[0].color.r, 0x1b / 255.0, 1e-6);
+  EXPECT_EQ(doc.shapes[1].fill_rule, FillRule::NonZero);  // from style
+  EXPECT_NEAR(doc.shapes[1].color.r, 0xb2 / 255.0, 1e-6);
+  EXPECT_EQ(doc.width_px, 440);
+  EXPECT_EQ(doc.view.min.y, -220);  // mirrored to y-up
+  EXPECT_EQ(doc.shapes[0].contours[0].pieces[0].points[0], (Vec2{110, -10}));
+
+  const std::pair<const char*, const char*> errors[] = {
+      {"<svg><path d='M0 0 L1 1' transform='rotate(3)'/></svg>", "transform"},
+      {"<svg><rect width='3' height='4'/></svg>", "<rect> is not supported"},
+      {"<html/>", "first element must be <svg>"},
+      {"", "no <svg>"},
+      {"<svg><path d='M0 0 L1 1' fill='url(#g)'/></svg>", "fill"},
+      {"<svg><path d='M0 0 L1 1' fill-rule='odd'/></svg>", "fill rule"},
+      {"<svg viewBox='0 0 -1 4'></svg>", "viewBox"},
+      {"<svg><path d='M0 0 L1 1 Q'/></svg>", "SVG path data"},
+      {"<svg><path d='M0 0 L1 1></svg>", "unterminated"},
+  };
+  for (const auto& [text, error] : errors) {
+    SCOPED_TRACE(text);
+    try {
+      parse_svg(text);
+      ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(error), std::string::npos) << e.what();
+    }
+  }
+  // Paths in <defs> are not drawn; fill="none" draws nothing.
+  const ShapeDocument skip = parse_svg(
+      "<svg><defs><path d='M0 0 L1 1 L0 1'/></defs><path fill='none' d='M0 0 L1 1 L0 1'/>"
+      "<path fill='rgb(255, 0, 0)' d='M0 0 L1 1 L0 1'/></svg>");
+  ASSERT_EQ(skip.shapes.size(), 1u);
+  EXPECT_EQ(skip.shapes[0].color.r, 1.0f);
+}
+
+// The conics of a rotated elliptical arc lie on the exact ellipse.
+TEST(SvgPath, ArcsAreExactConics) {
+  const double cx = 160, cy = 120, rx = 120, ry = 60, phi = std::numbers::pi / 6;
+  const auto contours = parse_svg_path(
+      "M 263.92304845413264 180 A 120 60 30 1 1 56.076951545867359 60 A 120 60 30 1 1 263.92304845413264 180 Z");
+  ASSERT_EQ(contours.size(), 1u);
+  double worst = 0.0;
+  for (const RationalBezier& piece : contours[0].pieces) {
+    ASSERT_EQ(piece.degree(), 2);
+    EXPECT_GE(piece.weights[1], std::cos(std::numbers::pi / 4) - 1e-12);  // pieces of at most 90 degrees
+    for (int i = 0; i <= 100; ++i) {
+      const Vec2 p = evaluate(piece, i / 100.0) - Vec2{cx, cy};
+      const double u = std::cos(phi) * p.x + std::sin(phi) * p.y, v = -std::sin(phi) * p.x + std::cos(phi) * p.y;
+      // |implicit| ~ 2 * (radial offset) / radius
+      worst = std::max(worst, std::abs(std::hypot(u / rx, v / ry) - 1.0));
+    }
+  }
+  std::printf("SVG arc -> conics: largest relative deviation from the ellipse %.2e\n", worst);
+  EXPECT_LE(worst, kExactRelative);
+}
+
+// --- NURBS --------------------------------------------------------------------------
+
+// Direct de Boor evaluation (The NURBS Book, A4.1), independent of the blossom
+// code in lib/shapes.
+Vec2 de_boor(const Nurbs& c, double u) {
+  const int p = c.degree, n = static_cast<int>(c.points.size()) - 1;
+  const std::vector<double>& U = c.knots;
+  int k = p;
+  while (k < n && !(u < U[static_cast<std::size_t>(k) + 1])) ++k;
+  while (k > p && !(U[static_cast<std::size_t>(k)] < U[static_cast<std::size_t>(k) + 1])) --k;
+  struct Hv {
+    double x, y, w;
+  };
+  std::vector<Hv> d(static_cast<std::size_t>(p) + 1);
+  for (int j = 0; j <= p; ++j) {
+    const auto i = static_cast<std::size_t>(j + k - p);
+    const double w = c.weights.empty() ? 1.0 : c.weights[i];
+    d[static_cast<std::size_t>(j)] = {c.points[i].x * w, c.points[i].y * w, w};
+  }
+  for (int r = 1; r <= p; ++r)
+    for (int j = p; j >= r; --j) {
+      const double lo = U[static_cast<std::size_t>(j + k - p)], hi = U[static_cast<std::size_t>(j + 1 + k - r)];
+      const double a = (u - lo) / (hi - lo);
+      Hv& dj = d[static_cast<std::size_t>(j)];
+      const Hv& dm = d[static_cast<std::size_t>(j) - 1];
+      dj = {(1 - a) * dm.x + a * dj.x, (1 - a) * dm.y + a * dj.y, (1 - a) * dm.w + a * dj.w};
+    }
+  return {d[static_cast<std::size_t>(p)].x / d[static_cast<std::size_t>(p)].w,
+          d[static_cast<std::size_t>(p)].y / d[static_cast<std::size_t>(p)].w};
+}
+
+// Largest distance from the Bezier pieces (sampled at their own parameters,
+// mapped linearly to the knot spans) to the de Boor points.
+double bezier_vs_de_boor(const Nurbs& c) {
+  const std::vector<RationalBezier> pieces = nurbs_to_beziers(c);
+  const std::size_t p = static_cast<std::size_t>(c.degree);
+  std::size_t k = 0;
+  double worst = 0.0;
+  for (std::size_t span = p; span + 1 < c.knots.size() - p; ++span) {
+    const double a = c.knots[span], b = c.knots[span + 1];
+    if (!(a < b)) continue;
+    for (int i = 0; i <= 50; ++i) {
+      const double t = i / 50.0;
+      worst = std::max(worst, distance(evaluate(pieces.at(k), t), de_boor(c, a + t * (b - a))));
+    }
+    ++k;
+  }
+  EXPECT_EQ(k, pieces.size());
+  return worst;
+}
+
+double point_segment(Vec2 q, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double l2 = dot(ab, ab);
+  const double t = l2 > 0 ? std::clamp(dot(q - a, ab) / l2, 0.0, 1.0) : 0.0;
+  return distance(q, a + ab * t);
+}
+
+double polyline_distance(Vec2 q, const std::vector<Vec2>& line) {
+  double best = INFINITY;
+  for (std::size_t i = 0; i + 1 < line.size(); ++i) best = std::min(best, point_segment(q, line[i], line[i + 1]));
+  return best;
+}
+
+// Two-sided distance between the NURBS (dense de Boor samples) and its lines
+// and conics (dense samples), in the curve's units (px here).
+double hausdorff_to_approximation(const Nurbs& c, double tolerance, std::size_t* count = nullptr) {
+  std::vector<Segment> segs;
+  for (const RationalBezier& b : nurbs_to_beziers(c)) append_quadratics(b, tolerance, segs);
+  if (count) *count = segs.size();
+  const std::size_t p = static_cast<std::size_t>(c.degree);
+  const double lo = c.knots[p], hi = c.knots[c.points.size()];
+  std::vector<Vec2> truth, approx;
+  for (int i = 0; i <= 6000; ++i) truth.push_back(de_boor(c, lo + (hi - lo) * i / 6000.0));
+  for (const Segment& s : segs)
+    for (int i = 0; i <= 300; ++i) approx.push_back(evaluate(s, i / 300.0));
+  double worst = 0.0;
+  for (Vec2 q : truth) worst = std::max(worst, polyline_distance(q, approx));
+  for (std::size_t i = 0; i < approx.size(); i += 3) worst = std::max(worst, polyline_distance(approx[i], truth));
+  return worst;
+}
+
+TEST(Nurbs, QuadraticCircleIsExact) {
+  const double s = std::numbers::sqrt2 / 2, r = 1000;
+  const Nurbs circle{2,
+                     {{r, 0}, {r, r}, {0, r}, {-r, r}, {-r, 0}, {-r, -r}, {0, -r}, {r, -r}, {r, 0}},
+                     {1, s, 1, s, 1, s, 1, s, 1},
+                     {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1}};
+  const auto pieces = nurbs_to_beziers(circle);
+  ASSERT_EQ(pieces.size(), 4u);
+  double worst = 0.0;
+  for (const RationalBezier& b : pieces) {
+    std::vector<Segment> segs;
+    append_quadratics(b, 1e-3, segs);
+    ASSERT_EQ(segs.size(), 1u);
+    EXPECT_NEAR(segs[0].weight, s, 1e-15);
+    for (int i = 0; i <= 100; ++i) worst = std::max(worst, std::abs(length(evaluate(segs[0], i / 100.0)) - r));
+  }
+  EXPECT_LE(worst, kExactRelative * r);
+  EXPECT_LE(bezier_vs_de_boor(circle), kExactRelative * r);
+}
+
+TEST(Nurbs, UnclampedAndRationalQuadraticsAreExact) {
+  // Uniform unclamped knots: the curve is the part over [u_2, u_5].
+  const Nurbs c{2, {{0, 0}, {100, 200}, {250, 180}, {300, 20}, {420, 90}}, {1, 3, 0.5, 2, 1}, {0, 1, 2, 3, 4, 5, 6, 7}};
+  EXPECT_LE(bezier_vs_de_boor(c), kExactRelative * 420);
+  double worst = 0.0;
+  for (const RationalBezier& b : nurbs_to_beziers(c)) {
+    std::vector<Segment> segs;
+    append_quadratics(b, 1e-3, segs);
+    ASSERT_EQ(segs.size(), 1u);  // degree 2: one exact conic per span, whatever the tolerance
+    for (int i = 0; i <= 20; ++i) {
+      const Vec2 q = evaluate(segs[0], i / 20.0);
+      double best = INFINITY;
+      for (int j = 0; j <= 4000; ++j) best = std::min(best, distance(q, evaluate(b, j / 4000.0)));
+      worst = std::max(worst, best);
+    }
+  }
+  EXPECT_LE(worst, 0.05);  // sampling of the reference at 4000 points, px
+}
+
+TEST(Nurbs, CubicNonUniformWithinTheBound) {
+  // The same curve as tests/fixtures/shapes/cubic-nurbs.json.
+  const Nurbs cubic{3,
+                    {{20, 20}, {40, 180}, {120, 190}, {150, 60}, {220, 20}, {260, 170}, {300, 30}},
+                    {},
+                    {0, 0, 0, 0, 0.1, 0.45, 0.5, 1, 1, 1, 1}};
+  const double exact = bezier_vs_de_boor(cubic);
+  std::size_t count = 0;
+  const double d = hausdorff_to_approximation(cubic, kBoundPx, &count);
+  std::printf("cubic NURBS (non-uniform knots): Bezier pieces vs de Boor %.2e px; %zu conics, Hausdorff %.4f px "
+              "(bound %.4f px)\n", exact, count, d, kBoundPx);
+  EXPECT_LE(exact, kExactRelative * 300);
+  EXPECT_LE(d, kBoundPx + kPolylineSlackPx);
+
+  Nurbs rational = cubic;
+  rational.weights = {1, 2, 0.5, 1, 3, 1, 1};
+  const double dr = hausdorff_to_approximation(rational, kBoundPx, &count);
+  std::printf("rational cubic NURBS: %zu conics, Hausdorff %.4f px\n", count, dr);
+  EXPECT_LE(bezier_vs_de_boor(rational), kExactRelative * 300);
+  EXPECT_LE(dr, kBoundPx + kPolylineSlackPx);
+
+  const Nurbs quintic{5,
+                      {{0, 0}, {60, 240}, {160, -80}, {260, 260}, {330, 10}, {420, 200}, {500, 0}},
+                      {1, 0.7, 1.8, 1, 0.4, 2.5, 1},
+                      {0, 0, 0, 0, 0, 0, 0.3, 1, 1, 1, 1, 1, 1}};
+  const double dq = hausdorff_to_approximation(quintic, kBoundPx, &count);
+  std::printf("rational quintic NURBS: %zu conics, Hausdorff %.4f px\n", count, dq);
+  EXPECT_LE(bezier_vs_de_boor(quintic), kExactRelative * 500);
+  EXPECT_LE(dq, kBoundPx + kPolylineSlackPx);
+  // A tighter tolerance is honoured as well.
+  EXPECT_LE(hausdorff_to_approximation(rational, 0.01), 0.01 + kPolylineSlackPx);
+}
+
+// --- Even-odd -----------------------------------------------------------------------
+
+Outline pentagram(double r, Vec2 c = {0, 0}) {
+  Outline o;
+  for (int k = 0; k < 5; ++k) {
+    const double a = (90 + 144 * k) * std::numbers::pi / 180;
+    const Vec2 p = c + Vec2{r * std::cos(a), r * std::sin(a)};
+    if (k == 0) o.move_to(p);
+    else o.line_to(p);
+  }
+  o.close();
+  return o;
+}
+
+Outline circle(Vec2 c, double r, bool clockwise = false) {
+  const double w = std::numbers::sqrt2 / 2, s = clockwise ? -1 : 1;
+  Outline o;
+  o.move_to(c + Vec2{r, 0});
+  o.conic_to(c + Vec2{r, s * r}, c + Vec2{0, s * r}, w);
+  o.conic_to(c + Vec2{-r, s * r}, c + Vec2{-r, 0}, w);
+  o.conic_to(c + Vec2{-r, -s * r}, c + Vec2{0, -s * r}, w);
+  o.conic_to(c + Vec2{r, -s * r}, c + Vec2{r, 0}, w);
+  o.close();
+  return o;
+}
+
+Outline merged(const Outline& a, const Outline& b) {
+  Outline o = a;
+  for (const Contour& c : b.contours()) o.contours().push_back(c);
+  return o;
+}
+
+// The nonzero area of the converted outline (through the mesher) is the
+// even-odd area, and every loop winds with its odd side on the left.
+void expect_even_odd_area(const Outline& in, double want, const char* name) {
+  const Outline out = even_odd_to_nonzero(in);
+  const double mesh = mesh_area(build_mesh(out));
+  std::printf("even-odd %s: area %.6f (mesh %.6f), analytic %.6f\n", name, out.signed_area(), mesh, want);
+  EXPECT_NEAR(out.signed_area(), want, 1e-9 * want) << name;
+  EXPECT_NEAR(mesh, want, 1e-6 * want) << name;
+}
+
+TEST(EvenOdd, AreasAgainstClosedForms) {
+  const double R = 100, ri = R * std::cos(2 * std::numbers::pi / 5) / std::cos(std::numbers::pi / 5);
+  const double star = 10 * 0.5 * R * ri * std::sin(std::numbers::pi / 5);
+  const double pentagon = 2.5 * ri * ri * std::sin(2 * std::numbers::pi / 5);
+  expect_even_odd_area(pentagram(R), star - pentagon, "pentagram");
+  EXPECT_NEAR(mesh_area(build_mesh(pentagram(R))), star, 1e-6 * star);  // nonzero: the pentagon filled
+
+  // Nested, non-crossing: a ring, whatever the orientations.
+  const double pi = std::numbers::pi;
+  expect_even_odd_area(merged(circle({0, 0}, 50), circle({0, 0}, 20)), pi * (2500 - 400), "ring (same direction)");
+  expect_even_odd_area(merged(circle({0, 0}, 50), circle({5, 3}, 20, true)), pi * (2500 - 400), "ring (opposite)");
+  // Crossing conics: two discs overlapping, the lens is even.
+  const double r = 40, d = 30;
+  const double lens = 2 * r * r * std::acos(d / (2 * r)) - 0.5 * d * std::sqrt(4 * r * r - d * d);
+  expect_even_odd_area(merged(circle({0, 0}, r), circle({d, 0}, r)), 2 * pi * r * r - 2 * lens, "two discs");
+  // A disc crossing a pentagram (line/conic crossings), offset so no crossing is at a vertex: checked
+  // against the mesh of the same outline, as the closed form is long.
+  const Outline mixed = merged(pentagram(R), circle({7, 3}, 45));
+  const Outline mixed_out = even_odd_to_nonzero(mixed);
+  EXPECT_NEAR(mixed_out.signed_area(), mesh_area(build_mesh(mixed_out)), 1e-6 * star);
+}
+
+TEST(EvenOdd, BadInput) {
+  Outline o;
+  o.move_to({0, 0});
+  o.cubic_to({1, 1}, {2, 1}, {3, 0});
+  o.close();
+  EXPECT_THROW(even_odd_to_nonzero(o), Error);
+  EXPECT_TRUE(even_odd_to_nonzero(Outline{}).empty());
+  Outline nan;
+  nan.move_to({0, 0});
+  nan.line_to({std::nan(""), 1});
+  nan.line_to({1, 0});
+  EXPECT_THROW(even_odd_to_nonzero(nan), Error);
+}
+
+// --- Rendering against analytic coverage ------------------------------------------
+
+struct Gpu {
+  HeadlessContext context = HeadlessContext::create();
+  Renderer renderer;
+};
+Gpu& gpu() {
+  static std::unique_ptr<Gpu> instance = std::make_unique<Gpu>();
+  return *instance;
+}
+
+test::Coverage draw(ShapeDocument doc, const ShapeImageLayout& layout) {
+  for (Shape& s : doc.shapes) s.color = Color{0, 0, 0, 1};
+  Gpu& g = gpu();
+  return test::coverage_from_black_on_white(render_shape_image(g.renderer, doc, layout, ShapeImageOptions{}));
+}
+
+// A window on the edge of a circle of radius 1,000 px (a JSON quadratic NURBS):
+// each pixel row's summed coverage is the drawn area in that band; the true
+// area has a closed form, and the difference is the horizontal offset of the
+// edge, converted to a radial offset with the edge's angle (as render_test
+// does for the whole circle).
+TEST(ShapeRender, CircleOfRadius1000WithinASixteenthPixel) {
+  const double r = 1000;
+  const ShapeDocument doc = parse_shape_json(R"({"shapes": [{"contours": [[{"nurbs": {"degree": 2,
+      "points": [[1000,0],[1000,1000],[0,1000],[-1000,1000],[-1000,0],[-1000,-1000],[0,-1000],[1000,-1000],[1000,0]],
+      "weights": [1,0.70710678118654757,1,0.70710678118654757,1,0.70710678118654757,1,0.70710678118654757,1],
+      "knots": [0,0,0,1,1,2,2,3,3,4,4,4]}}]]}]})");
+  ShapeImageLayout layout;
+  layout.width = 160;
+  layout.height = 200;
+  const double cx = -850.3, cy = 450.4;  // circle centre in pixels; rows are 250..450 px above it
+  layout.placement = Placement{1.0, cx, cy};
+  const test::Coverage cov = draw(doc, layout);
+  auto F = [&](double t) { return t * std::sqrt(r * r - t * t) + r * r * std::asin(t / r); };  // 2 * integral of sqrt
+  double worst = 0.0;
+  for (int y = 0; y < layout.height; ++y) {
+    const double t0 = y - cy, t1 = y + 1 - cy;
+    double sum = 0;
+    for (int x = 0; x < layout.width; ++x) sum += cov.at(x, y);
+    const double area = cx + 0.5 * (F(t1) - F(t0));  // from x = 0 to the edge, one pixel high
+    const double mid = 0.5 * (t0 + t1);
+    worst = std::max(worst, std::abs(sum - area) * std::sqrt(r * r - mid * mid) / r);
+  }
+  const test::Coverage ref = test::sampled_reference(
+      [&](double x, double y) { return (x - cx) * (x - cx) + (y - cy) * (y - cy) < r * r; }, 160, 200, 16);
+  const test::CoverageStats s = test::compare(cov, ref);
+  std::printf("circle r=1000 (JSON NURBS): largest radial offset %.4f px (bound %.4f); vs 16x16 sampling: edge "
+              "%.4f, max %.3f\n", worst, kBoundPx, s.edge_mean_abs, s.max_abs);
+  if (worst > kBoundPx) test::write_comparison("shape-circle-1000", cov, ref);
+  EXPECT_GT(s.edge_pixels, 150u);
+  EXPECT_LE(worst, kBoundPx);
+  EXPECT_LE(s.edge_mean_abs, 0.03);
+}
+
+// A rotated ellipse from two SVG arcs (rx 120, ry 60, 30 degrees), drawn at
+// one pixel per SVG unit. Per row: the exact chord length integrated over the
+// row (Simpson, 64 steps) against the summed coverage gives the mean offset of
+// the row's two edges along their normals. Rows within 10% of the top and
+// bottom tangents are skipped (the chord length is not smooth there).
+TEST(ShapeRender, RotatedEllipseFromSvgArcs) {
+  const ShapeDocument doc = read_shape_file(kFixtures + "ellipse-arc.svg");
+  const ShapeImageLayout layout = layout_shape_image(doc, ShapeImageOptions{});
+  ASSERT_EQ(layout.width, 320);
+  ASSERT_EQ(layout.height, 240);
+  const test::Coverage cov = draw(doc, layout);
+  const double cx = 160, cy = 120, a = 120, b = 60, phi = std::numbers::pi / 6;
+  const double c = std::cos(phi), sn = std::sin(phi);
+  const double A = c * c / (a * a) + sn * sn / (b * b);
+  auto roots = [&](double y, double& x1, double& x2) {  // edge x at height y (pixels = SVG units)
+    const double dy = y - cy;
+    const double B = 2 * dy * c * sn * (1 / (a * a) - 1 / (b * b));
+    const double C = dy * dy * (sn * sn / (a * a) + c * c / (b * b)) - 1;
+    const double disc = B * B - 4 * A * C;
+    if (disc <= 0) return false;
+    x1 = cx + (-B - std::sqrt(disc)) / (2 * A);
+    x2 = cx + (-B + std::sqrt(disc)) / (2 * A);
+    return true;
+  };
+  auto normal_x = [&](double x, double y) {  // |n_x| of the ellipse normal at (x, y)
+    const double u = c * (x - cx) + sn * (y - cy), v = -sn * (x - cx) + c * (y - cy);
+    const Vec2 g = Vec2{c, sn} * (u / (a * a)) + Vec2{-sn, c} * (v / (b * b));
+    return std::abs(g.x) / length(g);
+  };
+  const double ymax = std::sqrt(a * a * sn * sn + b * b * c * c);  // half height of the ellipse
+  double worst = 0.0;
+  for (int y = 0; y < layout.height; ++y) {
+    if (std::abs(y + 0.5 - cy) > 0.9 * ymax) continue;
+    double area = 0.0;
+    for (int k = 0; k <= 64; ++k) {
+      double x1 = 0, x2 = 0;
+      roots(y + k / 64.0, x1, x2);
+      area += (k == 0 || k == 64 ? 1 : (k % 2 ? 4 : 2)) * (x2 - x1);
+    }
+    area /= 3 * 64;
+    double sum = 0;
+    for (int x = 0; x < layout.width; ++x) sum += cov.at(x, y);
+    double x1 = 0, x2 = 0;
+    roots(y + 0.5, x1, x2);
+    const double offset = (sum - area) / (1 / normal_x(x1, y + 0.5) + 1 / normal_x(x2, y + 0.5));
+    worst = std::max(worst, std::abs(offset));
+  }
+  const test::Coverage ref = test::sampled_reference(
+      [&](double x, double y) {
+        const double u = c * (x - cx) + sn * (y - cy), v = -sn * (x - cx) + c * (y - cy);
+        return (u * u) / (a * a) + (v * v) / (b * b) < 1;
+      },
+      layout.width, layout.height, 16);
+  const test::CoverageStats s = test::compare(cov, ref);
+  std::printf("rotated ellipse (SVG arcs): largest mean edge offset per row %.4f px (bound %.4f); vs 16x16 "
+              "sampling: edge %.4f, max %.3f, ink %.5f\n", worst, kBoundPx, s.edge_mean_abs, s.max_abs, s.ink_ratio);
+  if (worst > kBoundPx) test::write_comparison("shape-ellipse", cov, ref);
+  EXPECT_LE(worst, kBoundPx);
+  // 16x16 point sampling quantises coverage to 1/256 per sample row crossed.
+  EXPECT_LE(s.edge_mean_abs, 0.03);
+  EXPECT_NEAR(s.ink_ratio, 1.0, 2e-3);
+}
+
+// Even-odd vs nonzero on a self-overlapping star: the centre pentagon is
+// empty for even-odd and filled for nonzero; both against a 16x16 sampled
+// crossing-number reference.
+TEST(ShapeRender, PentagramEvenOddAndNonzero) {
+  for (const char* rule : {"evenodd", "nonzero"}) {
+    SCOPED_TRACE(rule);
+    const ShapeDocument doc = read_shape_file(kFixtures + "pentagram-" + rule + ".json");
+    const ShapeImageLayout layout = layout_shape_image(doc, ShapeImageOptions{});
+    const test::Coverage cov = draw(doc, layout);
+    const Placement& pl = layout.placement;
+    std::vector<Vec2> star;
+    for (const RationalBezier& b : doc.shapes[0].contours[0].pieces)
+      star.push_back({pl.origin_x + pl.scale * b.points[0].x, pl.origin_y - pl.scale * b.points[0].y});
+    const bool even_odd = std::string(rule) == "evenodd";
+    auto inside = [&](double x, double y) {
+      int winding = 0;
+      for (std::size_t i = 0; i < star.size(); ++i) {
+        const Vec2 p = star[i], q = star[(i + 1) % star.size()];
+        if ((p.y <= y) != (q.y <= y)) {
+          const double xi = p.x + (y - p.y) * (q.x - p.x) / (q.y - p.y);
+          if (xi > x) winding += q.y > p.y ? 1 : -1;
+        }
+      }
+      return even_odd ? (winding % 2 != 0) : winding != 0;
+    };
+    const test::Coverage ref = test::sampled_reference(inside, layout.width, layout.height, 16);
+    const test::CoverageStats s = test::compare(cov, ref);
+    const int c = layout.width / 2;
+    std::printf("pentagram %s: centre coverage %.3f, edge %.4f, max %.3f, ink %.5f\n", rule, cov.at(c, c),
+                s.edge_mean_abs, s.max_abs, s.ink_ratio);
+    EXPECT_NEAR(cov.at(c, c), even_odd ? 0.0 : 1.0, 1e-6);
+    EXPECT_NEAR(cov.at(c, c / 4 + 8), 1.0, 1e-6);  // inside the top tip for both rules
+    if (s.edge_mean_abs > 0.03) test::write_comparison(std::string("shape-pentagram-") + rule, cov, ref);
+    EXPECT_LE(s.edge_mean_abs, 0.03);
+    EXPECT_NEAR(s.ink_ratio, 1.0, 5e-3);
+  }
+}
+
+TEST(ShapeRender, LayoutErrors) {
+  EXPECT_THROW(layout_shape_image(ShapeDocument{}, ShapeImageOptions{}), Error);
+  const ShapeDocument doc = read_shape_file(kFixtures + "circle-nurbs.json");
+  ShapeImageOptions o;
+  o.scale = 1e9;
+  EXPECT_THROW(layout_shape_image(doc, o), Error);  // image too large
+  o.scale = -1;
+  EXPECT_THROW(layout_shape_image(doc, o), Error);
+  o.scale = 2;
+  const ShapeImageLayout l = layout_shape_image(doc, o);
+  EXPECT_EQ(l.width, 440);
+}
+
+}  // namespace
+}  // namespace curvetext

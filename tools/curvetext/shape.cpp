@@ -1,0 +1,63 @@
+// curvetext shape: a shape document (NURBS JSON or SVG) to a PNG.
+#include <cmath>
+
+#include "cli.hpp"
+#include "curvetext/error.hpp"
+#include "curvetext/headless.hpp"
+#include "curvetext/image.hpp"
+#include "curvetext/renderer.hpp"
+#include "curvetext/shapes.hpp"
+
+namespace curvetext::cli {
+
+namespace {
+
+// "WxH", both whole numbers of pixels.
+void parse_size(const std::string& text, int& width, int& height) {
+  const std::size_t x = text.find('x');
+  if (x == std::string::npos) throw UsageError{"--size needs WxH, got '" + text + "'"};
+  width = parse_int("--size", std::string_view(text).substr(0, x));
+  height = parse_int("--size", std::string_view(text).substr(x + 1));
+  if (width < 1 || height < 1) throw Error(ErrorCode::InvalidArgument, "--size " + text + ": sides must be at least 1 px");
+}
+
+}  // namespace
+
+int run_shape(const std::vector<std::string>& arguments) {
+  std::optional<std::string> input, output;
+  std::optional<Color> foreground;
+  ShapeImageOptions options;
+
+  Args args(arguments);
+  while (args.next()) {
+    const std::string& a = args.option();
+    if (a == "--input" || a == "-i") input = args.value();
+    else if (a == "-o" || a == "--output") output = args.value();
+    else if (a == "--size") parse_size(args.value(), options.width, options.height);
+    else if (a == "--scale") {
+      options.scale = parse_number(a, args.value());
+      if (!(options.scale > 0.0) || !std::isfinite(options.scale))
+        throw Error(ErrorCode::InvalidArgument, "--scale must be a positive number of pixels per unit");
+    }
+    else if (a == "--aa") options.antialiasing = parse_antialiasing(args.value());
+    else if (a == "--curve") options.curve_mode = parse_curve_mode(args.value());
+    else if (a == "--fg") foreground = parse_color(args.value());
+    else if (a == "--bg") options.background = parse_color(args.value());
+    else throw UsageError{"unknown option " + a};
+  }
+  if (!input) throw UsageError{"--input FILE is required"};
+  if (!output) throw UsageError{"-o OUT.png is required"};
+
+  ShapeDocument doc = read_shape_file(*input);
+  if (foreground)
+    for (Shape& s : doc.shapes) s.color = *foreground;
+  // Everything that can be checked without a GL device is checked first.
+  const ShapeImageLayout layout = layout_shape_image(doc, options);
+  HeadlessContext context = HeadlessContext::create();
+  Renderer renderer;
+  const Image image = render_shape_image(renderer, doc, layout, options);
+  write_png(image, *output);
+  return 0;
+}
+
+}  // namespace curvetext::cli
