@@ -1,0 +1,69 @@
+// Fonts for layout: opening faces by file or by fontconfig family name, and
+// font fallback (a face that covers a character), all cached, so a paragraph
+// of thousands of CJK ideographs costs one fontconfig query per font, not per
+// character.
+//
+// Only faces with outlines (glyf, CFF or CFF2) are used: colour bitmap fonts
+// (CBDT/CBLC like Noto Color Emoji, sbix) cannot be drawn as curve meshes, so
+// fallback skips them and takes an outline face that covers the character;
+// when there is none, the first font's missing glyph (.notdef) is drawn.
+//
+// Not thread-safe: use one collection per thread (fonts handed out are
+// immutable and may be shared).
+#pragma once
+
+#include <cstddef>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "curvetext/font.hpp"
+
+namespace curvetext {
+
+class FontCollection {
+ public:
+  // `default_font`: the file used when a style names no font (empty: the
+  // library's default font, DejaVu Sans).
+  explicit FontCollection(std::string default_font = {});
+  ~FontCollection();
+  FontCollection(const FontCollection&) = delete;
+  FontCollection& operator=(const FontCollection&) = delete;
+
+  // A font file (a path with '/' or an existing file; "file.ttc#2" picks a
+  // face) or a fontconfig pattern ("Noto Sans", "DejaVu Serif:bold"), at the
+  // given variations. Throws Error(FontNotFound) when fontconfig has no match
+  // and the font errors of Font::open / set_variations.
+  std::shared_ptr<const Font> resolve(const std::string& name, const std::vector<Variation>& variations = {});
+  std::shared_ptr<const Font> default_font();
+
+  // An outline face that has a glyph for `c`, from fontconfig (language
+  // `language` preferred, may be empty); nullptr when none. Faces already
+  // handed out are tried first. Variations are applied where the face has
+  // the axes.
+  std::shared_ptr<const Font> fallback(char32_t c, const std::string& language,
+                                       const std::vector<Variation>& variations = {});
+
+  struct Stats {
+    std::size_t fontconfig_queries = 0;
+    std::size_t fallback_hits = 0;  // answered from the cache
+    std::size_t faces = 0;          // faces opened
+  };
+  Stats stats() const { return stats_; }
+
+ private:
+  std::shared_ptr<const Font> open_file(const std::string& path, int index, const std::vector<Variation>& variations,
+                                        bool strict);
+  std::string default_path_;
+  std::map<std::string, std::shared_ptr<const Font>> by_key_;      // path#index|variations -> face
+  std::map<std::string, std::pair<std::string, int>> by_pattern_;  // fontconfig pattern -> file, index
+  std::map<std::string, std::shared_ptr<const Font>> fallback_;    // codepoint|lang|variations -> face or null
+  std::vector<std::shared_ptr<const Font>> fallback_faces_;        // order of first use
+  Stats stats_;
+};
+
+// True when the face has outlines curvetext can draw (glyf, CFF or CFF2).
+bool has_outlines(const Font& font);
+
+}  // namespace curvetext

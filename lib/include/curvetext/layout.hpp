@@ -1,0 +1,175 @@
+// Paragraph layout: UTF-8 text with styled spans -> lines of positioned glyph
+// runs, line metrics, bounds, carets, hit testing and selection rectangles.
+//
+// Pipeline (lib/layout/layout.cpp): paragraphs split at paragraph separators;
+// per paragraph the bidi levels (bidi.hpp), script runs (HarfBuzz's Unicode
+// data; Common and Inherited characters join their neighbours), a font per
+// grapheme cluster (font_collection.hpp: the span's fonts, then fontconfig),
+// then items of one level, script, font and style are shaped once with
+// HarfBuzz with their paragraph context. Lines are filled greedily at UAX #14
+// opportunities (line_break.hpp); a word wider than the line breaks between
+// grapheme clusters. A line is cut out of the shaped items by slicing their
+// glyphs, and re-shaped only at a cut HarfBuzz marks unsafe to break
+// (HB_GLYPH_FLAG_UNSAFE_TO_BREAK). Lines are then reordered visually (L1-L2).
+//
+// Coordinates: pixels, y down; the layout box's top-left is (0, 0); glyph
+// positions are pen positions of the glyph origin on its baseline. Lines
+// advance by A - D + line gap of the tallest font on the line (DESIGN.md
+// section 6), times ParagraphStyle::line_height when set.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "curvetext/bidi.hpp"
+#include "curvetext/color.hpp"
+#include "curvetext/font.hpp"
+#include "curvetext/font_collection.hpp"
+#include "curvetext/shaping.hpp"
+
+namespace curvetext {
+
+struct TextStyle {
+  // Font files or fontconfig family names ("Noto Sans", "DejaVu Serif:bold"),
+  // first choice first; the rest and then fontconfig are the fallback. Empty:
+  // the default font (DejaVu Sans).
+  std::vector<std::string> fonts;
+  double size_px = 16.0;
+  Color color{0, 0, 0, 1};
+  std::vector<Feature> features;
+  std::vector<Variation> variations;
+  std::string language;        // BCP 47; empty: the paragraph's
+  double letter_spacing = 0.0;  // px added after every grapheme cluster
+  double word_spacing = 0.0;    // px added to every space
+  bool underline = false;
+  bool strikethrough = false;
+};
+
+// A style for the UTF-8 byte range [start, end). Later spans win where spans
+// overlap; text outside every span has ParagraphStyle::default_style.
+struct TextSpan {
+  std::size_t start = 0;
+  std::size_t end = 0;
+  TextStyle style;
+};
+
+enum class Align { Left, Right, Center, Justify, Start, End };
+enum class Ellipsis { None, Start, Middle, End };
+
+struct ParagraphStyle {
+  TextStyle default_style;
+  double width = 0.0;  // px; 0: no wrapping (one line per paragraph)
+  Align align = Align::Start;
+  BaseDirection direction = BaseDirection::Auto;
+  std::string language;          // BCP 47: line breaking tailoring and shaping
+  double line_height = 0.0;      // multiple of A - D + gap; 0 is 1
+  double line_height_px = 0.0;   // a fixed line advance in px; wins when > 0
+  double first_line_indent = 0.0;
+  std::vector<double> tab_stops;  // px from the line start, increasing
+  double tab_interval = 0.0;      // px between default stops after the last; 0: 8 spaces
+  int max_lines = 0;              // 0: unlimited
+  Ellipsis ellipsis = Ellipsis::None;  // applies to the last line kept (needs width or max_lines)
+};
+
+struct PositionedGlyph {
+  std::uint32_t id = 0;
+  std::uint32_t cluster = 0;  // UTF-8 byte offset into the paragraph text
+  double x = 0.0;             // px, the glyph origin
+  double y = 0.0;             // px, the glyph origin (baseline + offset)
+  double advance = 0.0;       // px along the line
+};
+
+// Glyphs of one font, direction and style on one line, left to right.
+struct GlyphRun {
+  std::shared_ptr<const Font> font;
+  double size_px = 16.0;
+  bool rtl = false;
+  std::size_t style = 0;  // index into Paragraph::styles()
+  std::size_t start = 0, end = 0;  // UTF-8 byte range of the text (the ellipsis run: empty at the cut)
+  double x = 0.0, width = 0.0;     // px, the run's pen extent
+  std::vector<PositionedGlyph> glyphs;
+};
+
+struct Rect {
+  double x = 0.0, y = 0.0, width = 0.0, height = 0.0;
+};
+
+struct LayoutLine {
+  std::size_t start = 0, end = 0;  // UTF-8 byte range; lines tile the text
+  double top = 0.0;                // px
+  double baseline = 0.0;           // px
+  double ascent = 0.0, descent = 0.0, gap = 0.0;  // px, descent positive below the baseline
+  double height = 0.0;             // the line advance
+  double x = 0.0, width = 0.0;     // px, the content's extent (trailing spaces excluded)
+  int paragraph_level = 0;         // 1 for a right-to-left paragraph
+  bool ellipsized = false;
+  bool hyphenated = false;  // ends at a soft hyphen drawn as a hyphen
+  std::vector<GlyphRun> runs;      // visual order
+};
+
+// A caret at a text position: where a character inserted there would go.
+// At a bidi boundary the two directions disagree: `strong` follows the
+// paragraph direction... precisely, the character after the position (its
+// leading edge), `weak` the character before it (its trailing edge); they
+// are equal elsewhere.
+struct Caret {
+  std::size_t line = 0;
+  double strong_x = 0.0, weak_x = 0.0;
+  bool strong_rtl = false, weak_rtl = false;
+  double top = 0.0, bottom = 0.0;
+};
+
+struct HitResult {
+  std::size_t index = 0;  // UTF-8 offset of the nearest caret position (a grapheme boundary)
+  std::size_t line = 0;
+  bool inside = false;  // the point is over a grapheme of the text
+};
+
+class Paragraph {
+ public:
+  // Throws Error(InvalidText) for invalid UTF-8 (an empty text lays out as one
+  // empty line), Error(InvalidArgument) for bad sizes, widths, spans or styles,
+  // and the font errors of FontCollection.
+  static Paragraph layout(FontCollection& fonts, std::string_view text, const std::vector<TextSpan>& spans,
+                          const ParagraphStyle& style);
+
+  const std::string& text() const { return text_; }
+  const std::vector<LayoutLine>& lines() const { return lines_; }
+  const std::vector<TextStyle>& styles() const { return styles_; }
+  // Union of the lines' boxes (x from 0 to the widest line, or the width).
+  Rect logical_bounds() const;
+  // Union of the glyphs' outline boxes; empty rect when nothing is inked.
+  Rect ink_bounds() const;
+
+  // Clamped to the text and moved back to a grapheme boundary.
+  Caret caret(std::size_t index) const;
+  HitResult hit_test(double x, double y) const;
+  // Rectangles, one per visually contiguous piece, covering [start, end).
+  std::vector<Rect> selection_rects(std::size_t start, std::size_t end) const;
+  // Grapheme boundaries (for caret movement): the previous/next one.
+  std::size_t previous_boundary(std::size_t index) const;
+  std::size_t next_boundary(std::size_t index) const;
+
+  // A grapheme cluster's box on a line, used for hit testing (public for tests).
+  struct ClusterBox {
+    std::size_t start = 0, end = 0;  // UTF-8 range of the grapheme
+    double left = 0.0, right = 0.0;
+    bool rtl = false;
+  };
+  const std::vector<ClusterBox>& boxes(std::size_t line) const { return boxes_[line]; }
+
+ private:
+  friend struct ParagraphBuilder;
+  std::string text_;
+  std::vector<TextStyle> styles_;
+  std::vector<LayoutLine> lines_;
+  std::vector<std::vector<ClusterBox>> boxes_;  // per line, visual order
+  std::vector<std::size_t> boundaries_;         // grapheme starts (bytes), plus text size
+  double width_ = 0.0;
+};
+
+}  // namespace curvetext

@@ -1,0 +1,1093 @@
+// Paragraph layout (see layout.hpp for the pipeline).
+
+#include "curvetext/layout.hpp"
+
+#include <hb.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <new>
+#include <string>
+
+#include "curvetext/error.hpp"
+#include "curvetext/line_break.hpp"
+#include "curvetext/tolerances.hpp"
+#include "font/font_impl.hpp"
+#include "font/utf8.hpp"
+
+namespace curvetext {
+
+namespace {
+
+constexpr double kEpsilon = 1e-6;
+
+bool is_paragraph_separator(char32_t c) {
+  return c == U'\n' || c == U'\r' || c == 0x2029 || c == 0x85 || (c >= 0x1C && c <= 0x1E);
+}
+
+bool is_space(char32_t c) {
+  return hb_unicode_general_category(hb_unicode_funcs_get_default(), c) == HB_UNICODE_GENERAL_CATEGORY_SPACE_SEPARATOR;
+}
+
+bool is_whitespace(char32_t c) { return is_space(c) || c == U'\t' || c == 0x2028 || is_paragraph_separator(c); }
+
+// Characters that need no glyph of their own when choosing a font.
+bool ignorable_for_coverage(char32_t c) {
+  return c < 0x20 || c == 0x7F || c == 0xAD || (c >= 0x200B && c <= 0x200F) || (c >= 0x2028 && c <= 0x202E) ||
+         (c >= 0x2060 && c <= 0x206F) || c == 0xFEFF || (c >= 0xFE00 && c <= 0xFE0F) || (c >= 0xE0000 && c <= 0xE0FFF) ||
+         c == 0x034F;
+}
+
+hb_script_t script_of(char32_t c) { return hb_unicode_script(hb_unicode_funcs_get_default(), c); }
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+void check_finite(double v, double lo, double hi, const char* what) {
+  if (!std::isfinite(v) || v < lo || v > hi)
+    throw Error(ErrorCode::InvalidArgument,
+                std::string(what) + " must be between " + number(lo) + " and " + number(hi) + ", got " + number(v));
+}
+
+void validate_style(const TextStyle& s) {
+  if (!std::isfinite(s.size_px) || s.size_px <= 0.0)
+    throw Error(ErrorCode::InvalidArgument, "size must be a positive number of pixels, got " + number(s.size_px));
+  check_finite(s.size_px, 0.0, tolerance::kMaxPixelsPerEm, "size (px)");
+  check_finite(s.letter_spacing, -1e4, 1e4, "letter spacing (px)");
+  check_finite(s.word_spacing, -1e4, 1e4, "word spacing (px)");
+}
+
+// One shaped glyph, paragraph-relative cluster (code point index), px.
+struct Glyph {
+  std::uint32_t id = 0;
+  std::uint32_t cluster = 0;
+  double advance = 0.0, x_offset = 0.0, y_offset = 0.0;
+  bool unsafe = false;  // HB_GLYPH_FLAG_UNSAFE_TO_BREAK: re-shape if the text is cut before this cluster
+};
+
+struct ResolvedStyle {
+  std::vector<std::shared_ptr<const Font>> chain;
+  hb_language_t language = HB_LANGUAGE_INVALID;
+  std::string language_tag;
+  std::vector<hb_feature_t> features;
+};
+
+struct Item {
+  std::size_t start = 0, end = 0;  // paragraph code points
+  std::uint8_t level = 0;
+  hb_script_t script = HB_SCRIPT_COMMON;
+  std::shared_ptr<const Font> font;
+  std::size_t style = 0;
+  std::vector<Glyph> glyphs;  // HarfBuzz order (visual within the item)
+};
+
+// A piece of a line: a slice of an item, or a synthetic glyph run (ellipsis,
+// hyphen) with start == end.
+struct Piece {
+  std::size_t start = 0, end = 0;
+  std::uint8_t level = 0;
+  std::shared_ptr<const Font> font;
+  std::size_t style = 0;
+  std::vector<Glyph> glyphs;
+  bool synthetic = false;
+};
+
+struct Metrics {
+  double ascent = 0, descent = 0, gap = 0;
+};
+
+Metrics font_metrics(const Font& font, double size_px) {
+  const FontMetrics m = font.metrics();
+  const double s = size_px / m.units_per_em;
+  return {m.ascender * s, -m.descender * s, m.line_gap * s};
+}
+
+}  // namespace
+
+// Does the work of Paragraph::layout; a friend of Paragraph.
+struct ParagraphBuilder {
+  FontCollection& fonts;
+  const ParagraphStyle& pstyle;
+  Paragraph& out;
+  std::u32string cps;               // whole text
+  std::vector<std::size_t> bytes;   // byte offset of each code point, plus the end
+  std::vector<std::size_t> style_of;
+  std::vector<ResolvedStyle> resolved;
+  std::size_t lines_left = std::numeric_limits<std::size_t>::max();
+  bool stop = false;
+
+  // Per paragraph state.
+  std::size_t p0 = 0;  // paragraph start in cps
+  std::u32string para, shaped_text;
+  BidiParagraph bidi;
+  std::vector<bool> grapheme;
+  std::vector<BreakAction> breaks;
+  std::vector<Item> items;
+  std::vector<std::size_t> item_of;
+  std::vector<double> advance;  // px per code point in logical order (incl. spacing)
+  double y = 0.0;
+
+  ParagraphBuilder(FontCollection& f, const ParagraphStyle& s, Paragraph& o) : fonts(f), pstyle(s), out(o) {}
+
+  const TextStyle& style(std::size_t i) const { return out.styles_[i]; }
+
+  void resolve_styles() {
+    resolved.resize(out.styles_.size());
+    for (std::size_t i = 0; i < out.styles_.size(); ++i) {
+      const TextStyle& s = out.styles_[i];
+      ResolvedStyle& r = resolved[i];
+      if (s.fonts.empty()) {
+        auto f = fonts.default_font();
+        if (!s.variations.empty()) f = fonts.resolve(f->path(), s.variations);
+        r.chain.push_back(f);
+      }
+      for (std::size_t k = 0; k < s.fonts.size(); ++k) {
+        // The first font must take the variations; later ones may lack the axes.
+        if (k == 0) {
+          r.chain.push_back(fonts.resolve(s.fonts[k], s.variations));
+        } else {
+          try {
+            r.chain.push_back(fonts.resolve(s.fonts[k], s.variations));
+          } catch (const Error& e) {
+            if (e.code() != ErrorCode::FontInvalid) throw;
+            r.chain.push_back(fonts.resolve(s.fonts[k]));
+          }
+        }
+      }
+      r.language_tag = s.language.empty() ? pstyle.language : s.language;
+      if (!r.language_tag.empty()) {
+        r.language = hb_language_from_string(r.language_tag.c_str(), -1);
+        if (r.language == HB_LANGUAGE_INVALID)
+          throw Error(ErrorCode::InvalidArgument, "bad BCP 47 language tag '" + r.language_tag + "'");
+      }
+      for (const Feature& f : s.features) {
+        if (f.tag.empty() || f.tag.size() > 4) throw Error(ErrorCode::InvalidArgument, "bad feature tag '" + f.tag + "'");
+        r.features.push_back({hb_tag_from_string(f.tag.c_str(), static_cast<int>(f.tag.size())), f.value,
+                              HB_FEATURE_GLOBAL_START, HB_FEATURE_GLOBAL_END});
+      }
+      // Letter spacing would pull ligatures apart: turn them off (as Pango does).
+      if (s.letter_spacing != 0.0)
+        for (const char* tag : {"liga", "clig", "dlig", "hlig"})
+          r.features.push_back({hb_tag_from_string(tag, 4), 0, HB_FEATURE_GLOBAL_START, HB_FEATURE_GLOBAL_END});
+    }
+  }
+
+  // Shapes paragraph code points [a, b) as one run.
+  std::vector<Glyph> shape(std::size_t a, std::size_t b, std::uint8_t level, hb_script_t script, const Font& font,
+                           std::size_t style_index) const {
+    const ResolvedStyle& r = resolved[style_index];
+    detail::HbBufferPtr buffer(hb_buffer_create());
+    hb_buffer_t* buf = buffer.get();
+    hb_buffer_set_direction(buf, level % 2 ? HB_DIRECTION_RTL : HB_DIRECTION_LTR);
+    hb_buffer_set_script(buf, script);
+    if (r.language != HB_LANGUAGE_INVALID) hb_buffer_set_language(buf, r.language);
+    unsigned flags = HB_BUFFER_FLAG_DEFAULT;
+    if (a == 0) flags |= HB_BUFFER_FLAG_BOT;
+    if (b == para.size()) flags |= HB_BUFFER_FLAG_EOT;
+    hb_buffer_set_flags(buf, static_cast<hb_buffer_flags_t>(flags));
+    // The whole paragraph is context (Arabic joining across items), clusters
+    // are paragraph code point indices.
+    hb_buffer_add_utf32(buf, reinterpret_cast<const std::uint32_t*>(shaped_text.data()),
+                        static_cast<int>(shaped_text.size()), static_cast<unsigned>(a), static_cast<int>(b - a));
+    hb_shape(font.impl().hb_font, buf, r.features.data(), static_cast<unsigned>(r.features.size()));
+    if (!hb_buffer_allocation_successful(buf)) throw std::bad_alloc();
+    unsigned n = 0;
+    const hb_glyph_info_t* info = hb_buffer_get_glyph_infos(buf, &n);
+    const hb_glyph_position_t* pos = hb_buffer_get_glyph_positions(buf, &n);
+    const double s = style(style_index).size_px / font.metrics().units_per_em;
+    std::vector<Glyph> glyphs(n);
+    for (unsigned i = 0; i < n; ++i) {
+      glyphs[i].id = info[i].codepoint;
+      glyphs[i].cluster = info[i].cluster;
+      glyphs[i].advance = pos[i].x_advance * s;
+      glyphs[i].x_offset = pos[i].x_offset * s;
+      glyphs[i].y_offset = pos[i].y_offset * s;
+      glyphs[i].unsafe = (hb_glyph_info_get_glyph_flags(&info[i]) & HB_GLYPH_FLAG_UNSAFE_TO_BREAK) != 0;
+    }
+    return glyphs;
+  }
+
+  // Glyphs for a single character string (ellipsis, hyphen) in `font`.
+  std::vector<Glyph> shape_string(const std::u32string& s, const Font& font, std::size_t style_index,
+                                  std::uint8_t level) const {
+    detail::HbBufferPtr buffer(hb_buffer_create());
+    hb_buffer_t* buf = buffer.get();
+    hb_buffer_add_utf32(buf, reinterpret_cast<const std::uint32_t*>(s.data()), static_cast<int>(s.size()), 0,
+                        static_cast<int>(s.size()));
+    hb_buffer_set_direction(buf, level % 2 ? HB_DIRECTION_RTL : HB_DIRECTION_LTR);
+    hb_buffer_guess_segment_properties(buf);
+    hb_shape(font.impl().hb_font, buf, nullptr, 0);
+    unsigned n = 0;
+    const hb_glyph_info_t* info = hb_buffer_get_glyph_infos(buf, &n);
+    const hb_glyph_position_t* pos = hb_buffer_get_glyph_positions(buf, &n);
+    const double sc = style(style_index).size_px / font.metrics().units_per_em;
+    std::vector<Glyph> glyphs(n);
+    for (unsigned i = 0; i < n; ++i)
+      glyphs[i] = {info[i].codepoint, 0, pos[i].x_advance * sc, pos[i].x_offset * sc, pos[i].y_offset * sc, false};
+    return glyphs;
+  }
+
+  bool covers(const Font& font, std::size_t a, std::size_t b) const {
+    for (std::size_t i = a; i < b; ++i)
+      if (!ignorable_for_coverage(para[i]) && font.glyph_for_codepoint(para[i]) == 0) return false;
+    return true;
+  }
+
+  void itemize() {
+    const std::size_t n = para.size();
+    // Script runs: Common and Inherited take the script of the text around them.
+    std::vector<hb_script_t> script(n, HB_SCRIPT_COMMON);
+    hb_script_t last = HB_SCRIPT_COMMON;
+    for (std::size_t i = 0; i < n; ++i) {
+      const hb_script_t s = script_of(para[i]);
+      if (s != HB_SCRIPT_COMMON && s != HB_SCRIPT_INHERITED && s != HB_SCRIPT_UNKNOWN) last = s;
+      script[i] = (s == HB_SCRIPT_COMMON || s == HB_SCRIPT_INHERITED || s == HB_SCRIPT_UNKNOWN) ? last : s;
+    }
+    hb_script_t next = HB_SCRIPT_COMMON;
+    for (std::size_t i = n; i-- > 0;) {
+      if (script[i] != HB_SCRIPT_COMMON) next = script[i];
+      else script[i] = next;
+    }
+    // A font per grapheme cluster.
+    std::vector<const Font*> font_of(n, nullptr);
+    std::vector<std::shared_ptr<const Font>> keep(n);
+    std::shared_ptr<const Font> previous;
+    std::size_t previous_style = static_cast<std::size_t>(-1);
+    for (std::size_t a = 0; a < n;) {
+      std::size_t b = a + 1;
+      while (b < n && !grapheme[b]) ++b;
+      const std::size_t si = style_of[p0 + a];
+      const ResolvedStyle& r = resolved[si];
+      std::shared_ptr<const Font> chosen;
+      const hb_script_t own = script_of(para[a]);
+      const bool neutral = own == HB_SCRIPT_COMMON || own == HB_SCRIPT_INHERITED || ignorable_for_coverage(para[a]);
+      // Spaces, digits and punctuation stay with the font before them when it
+      // has them, so a run of Arabic words is not cut at every space.
+      if (neutral && previous && previous_style == si && covers(*previous, a, b)) chosen = previous;
+      for (std::size_t k = 0; !chosen && k < r.chain.size(); ++k)
+        if (covers(*r.chain[k], a, b)) chosen = r.chain[k];
+      if (!chosen) {
+        std::size_t c = a;
+        while (c + 1 < b && ignorable_for_coverage(para[c])) ++c;
+        auto f = fonts.fallback(para[c], r.language_tag, style(si).variations);
+        chosen = f && covers(*f, a, b) ? f : (f ? f : r.chain.front());
+      }
+      for (std::size_t i = a; i < b; ++i) keep[i] = chosen;
+      previous = chosen;
+      previous_style = si;
+      a = b;
+    }
+    items.clear();
+    item_of.assign(n, 0);
+    for (std::size_t a = 0; a < n;) {
+      std::size_t b = a + 1;
+      while (b < n && bidi.levels[b] == bidi.levels[a] && script[b] == script[a] && keep[b] == keep[a] &&
+             style_of[p0 + b] == style_of[p0 + a])
+        ++b;
+      Item it;
+      it.start = a;
+      it.end = b;
+      it.level = bidi.levels[a];
+      it.script = script[a];
+      it.font = keep[a];
+      it.style = style_of[p0 + a];
+      it.glyphs = shape(a, b, it.level, it.script, *it.font, it.style);
+      for (std::size_t i = a; i < b; ++i) item_of[i] = items.size();
+      items.push_back(std::move(it));
+      a = b;
+    }
+    // Advances per code point (the glyphs of a cluster count on its first
+    // code point), plus letter and word spacing.
+    advance.assign(n, 0.0);
+    for (const Item& it : items)
+      for (const Glyph& g : it.glyphs) advance[g.cluster] += g.advance;
+    for (std::size_t i = 0; i < n; ++i) {
+      const TextStyle& s = style(style_of[p0 + i]);
+      if (s.letter_spacing != 0.0 && (i + 1 == n || grapheme[i + 1])) advance[i] += s.letter_spacing;
+      if (s.word_spacing != 0.0 && is_space(para[i])) advance[i] += s.word_spacing;
+    }
+  }
+
+  double space_width(std::size_t style_index) const {
+    const Font& f = *resolved[style_index].chain.front();
+    const std::uint32_t g = f.glyph_for_codepoint(U' ');
+    const double s = style(style_index).size_px / f.metrics().units_per_em;
+    return g ? hb_font_get_glyph_h_advance(f.impl().hb_font, g) * s : style(style_index).size_px / 3.0;
+  }
+
+  // Pen advance of a tab at pen position x (from the line start).
+  double tab_advance(double x, std::size_t style_index) const {
+    for (double tab_stop : pstyle.tab_stops)
+      if (tab_stop > x + kEpsilon) return tab_stop - x;
+    const double last = pstyle.tab_stops.empty() ? 0.0 : pstyle.tab_stops.back();
+    double interval = pstyle.tab_interval > 0 ? pstyle.tab_interval : 8.0 * space_width(style_index);
+    if (interval <= 0) interval = 1.0;
+    const double k = std::floor((x - last) / interval + kEpsilon) + 1.0;
+    return last + k * interval - x;
+  }
+
+  double hyphen_width(std::size_t i) const {
+    const Item& it = items[item_of[i]];
+    double w = 0;
+    for (const Glyph& g : hyphen_glyphs(it)) w += g.advance;
+    return w;
+  }
+
+  std::vector<Glyph> hyphen_glyphs(const Item& it) const {
+    const std::u32string h = it.font->glyph_for_codepoint(0x2010) ? U"\u2010" : U"-";
+    return shape_string(h, *it.font, it.style, it.level);
+  }
+
+  // Width of [a, b) laid out from pen x0 (tabs depend on it), trailing
+  // whitespace excluded.
+  double range_width(std::size_t a, std::size_t b, double x0 = 0.0) const {
+    double x = x0, visible = x0;
+    for (std::size_t i = a; i < b; ++i) {
+      x += para[i] == U'\t' ? tab_advance(x, style_of[p0 + i]) : advance[i];
+      if (!is_whitespace(para[i])) visible = x;
+    }
+    return visible - x0;
+  }
+
+  std::size_t paragraph_content_end() const {
+    std::size_t e = para.size();
+    if (e > 0 && is_paragraph_separator(para[e - 1])) --e;
+    if (e > 0 && para[e - 1] == U'\r' && para.size() - e == 1) --e;  // CR LF
+    return e;
+  }
+
+  // --- Line assembly -----------------------------------------------------------
+
+  // Glyphs of item `it` for [a, b) (inside the item), sliced or re-shaped.
+  std::vector<Glyph> slice(const Item& it, std::size_t a, std::size_t b, std::uint8_t level) const {
+    if (a == it.start && b == it.end && level == it.level) return it.glyphs;
+    bool safe = level == it.level;
+    for (const Glyph& g : it.glyphs) {
+      if (!g.unsafe) continue;
+      if ((a > it.start && g.cluster == a) || (b < it.end && g.cluster == b)) safe = false;
+    }
+    // Clusters can merge several code points: a cut inside one is not safe.
+    if (safe) {
+      bool start_found = a == it.start, end_found = b == it.end;
+      for (const Glyph& g : it.glyphs) {
+        start_found = start_found || g.cluster == a;
+        end_found = end_found || g.cluster == b;
+      }
+      safe = start_found && end_found;
+    }
+    if (!safe) return shape(a, b, level, it.script, *it.font, it.style);
+    std::vector<Glyph> result;
+    for (const Glyph& g : it.glyphs)
+      if (g.cluster >= a && g.cluster < b) result.push_back(g);
+    return result;
+  }
+
+  // Appends pieces for paragraph code points [a, b) with line levels `lv`
+  // (indexed from `lv_base`).
+  void add_pieces(std::vector<Piece>& pieces, std::size_t a, std::size_t b, const std::vector<std::uint8_t>& lv,
+                  std::size_t lv_base) const {
+    std::size_t i = a;
+    while (i < b) {
+      const Item& it = items[item_of[i]];
+      std::size_t j = i + 1;
+      const std::uint8_t level = lv[i - lv_base];
+      while (j < b && j < it.end && lv[j - lv_base] == level) ++j;
+      Piece p;
+      p.start = i;
+      p.end = j;
+      p.level = level;
+      p.font = it.font;
+      p.style = it.style;
+      p.glyphs = slice(it, i, j, level);
+      pieces.push_back(std::move(p));
+      i = j;
+    }
+  }
+
+  Piece synthetic(std::vector<Glyph> glyphs, const Item& near, std::uint8_t level, std::size_t at) const {
+    Piece p;
+    p.start = p.end = at;
+    p.level = level;
+    p.font = near.font;
+    p.style = near.style;
+    for (Glyph& g : glyphs) g.cluster = static_cast<std::uint32_t>(at);
+    p.glyphs = std::move(glyphs);
+    p.synthetic = true;
+    return p;
+  }
+
+  std::vector<Glyph> ellipsis_glyphs(const Item& near) const {
+    const std::u32string e = near.font->glyph_for_codepoint(0x2026) ? U"\u2026" : U"...";
+    return shape_string(e, *near.font, near.style, static_cast<std::uint8_t>(bidi.paragraph_level));
+  }
+
+  double glyphs_width(const std::vector<Glyph>& g) const {
+    double w = 0;
+    for (const Glyph& x : g) w += x.advance;
+    return w;
+  }
+
+  // Emits one line made of `pieces` (logical order) covering paragraph code
+  // points [a, b) for the line's text range.
+  void emit_line(std::vector<Piece> pieces, std::size_t a, std::size_t b, bool first, bool last_of_paragraph,
+                 bool mandatory, bool ellipsized, bool hyphenated) {
+    LayoutLine line;
+    line.start = out_bytes(a);
+    line.end = out_bytes(b);
+    line.paragraph_level = bidi.paragraph_level;
+    line.ellipsized = ellipsized;
+    line.hyphenated = hyphenated;
+    const bool rtl_para = bidi.paragraph_level % 2 == 1;
+    const double indent = first ? pstyle.first_line_indent : 0.0;
+
+    // Spacing, tabs (logical order, pen from the line start) and the content width.
+    double x = indent, visible = indent;
+    for (Piece& p : pieces) {
+      if (!p.synthetic) {
+        // Add each code point's extra advance (spacing, tabs) to the last
+        // glyph of its cluster in logical order.
+        // Per code point of the piece: its glyphs' advance and the last glyph
+        // of its cluster (one pass, not one per code point).
+        std::vector<double> shaped_of(p.end - p.start, 0.0);
+        std::vector<Glyph*> target_of(p.end - p.start, nullptr);
+        for (Glyph& g : p.glyphs) {
+          if (g.cluster < p.start || g.cluster >= p.end) continue;
+          shaped_of[g.cluster - p.start] += g.advance;
+          target_of[g.cluster - p.start] = &g;
+        }
+        for (std::size_t i = p.start; i < p.end; ++i) {
+          double extra = 0.0;
+          const TextStyle& s = style(style_of[p0 + i]);
+          if (s.letter_spacing != 0.0 && (i + 1 == para.size() || grapheme[i + 1])) extra += s.letter_spacing;
+          if (s.word_spacing != 0.0 && is_space(para[i])) extra += s.word_spacing;
+          double shaped = shaped_of[i - p.start];
+          Glyph* target = target_of[i - p.start];
+          if (para[i] == U'\t' && target) {
+            const double want = tab_advance(x, style_of[p0 + i]);
+            target->advance += want - shaped;
+            shaped = want;
+          } else if (target) {
+            target->advance += extra;
+            shaped += extra;
+          }
+          x += shaped;
+          if (!is_whitespace(para[i])) visible = x;
+        }
+      } else {
+        x += glyphs_width(p.glyphs);
+        visible = x;
+      }
+    }
+    double content = visible - indent;
+    const double box = pstyle.width > 0 ? pstyle.width : 0.0;
+
+    // Justification: stretch the spaces of a full line (not the paragraph's
+    // last line, nor one ended by a mandatory break); letters are never
+    // stretched, so Arabic keeps its joins.
+    if (pstyle.align == Align::Justify && box > 0 && !last_of_paragraph && !mandatory && !ellipsized) {
+      std::size_t last_visible = a;
+      for (std::size_t i = a; i < b; ++i)
+        if (!is_whitespace(para[i])) last_visible = i;
+      std::vector<Glyph*> spaces;
+      for (Piece& p : pieces)
+        for (Glyph& g : p.glyphs)
+          if (!p.synthetic && g.cluster < last_visible && para[g.cluster] == U' ') spaces.push_back(&g);
+      const double extra = box - indent - content;
+      if (!spaces.empty() && extra > 0) {
+        for (Glyph* g : spaces) g->advance += extra / static_cast<double>(spaces.size());
+        content += extra;
+      }
+    }
+
+    // Visual order of the pieces (L2 on their levels).
+    std::vector<std::uint8_t> levels;
+    for (const Piece& p : pieces) levels.push_back(p.level);
+    const std::vector<std::size_t> order = reorder_levels(levels);
+
+    // Metrics: the tallest font on the line (the default style's first font
+    // for an empty line).
+    Metrics m{};
+    bool any = false;
+    for (const Piece& p : pieces) {
+      if (p.glyphs.empty() && !p.synthetic && p.end - p.start == 0) continue;
+      const Metrics f = font_metrics(*p.font, style(p.style).size_px);
+      m.ascent = std::max(m.ascent, f.ascent);
+      m.descent = std::max(m.descent, f.descent);
+      m.gap = std::max(m.gap, f.gap);
+      any = true;
+    }
+    if (!any) {
+      const std::size_t si = a < para.size() ? style_of[p0 + a] : 0;
+      m = font_metrics(*resolved[si].chain.front(), style(si).size_px);
+    }
+    const double natural = m.ascent + m.descent + m.gap;
+    line.ascent = m.ascent;
+    line.descent = m.descent;
+    line.gap = m.gap;
+    line.height = pstyle.line_height_px > 0 ? pstyle.line_height_px
+                                            : natural * (pstyle.line_height > 0 ? pstyle.line_height : 1.0);
+    line.top = y;
+    // Extra leading is shared above and below, as in CSS.
+    line.baseline = y + m.ascent + (line.height - natural) / 2.0;
+    line.width = content;
+    // Provisional x: content starts at the indent on the start side; the
+    // alignment pass (finish) moves it.
+    line.x = rtl_para ? -content - indent : indent;  // relative to the start edge, fixed in finish()
+
+    double pen = 0.0;
+    std::vector<Paragraph::ClusterBox> boxes;
+    for (std::size_t k : order) {
+      const Piece& p = pieces[k];
+      GlyphRun run;
+      run.font = p.font;
+      run.size_px = style(p.style).size_px;
+      run.rtl = p.level % 2 == 1;
+      run.style = p.style;
+      run.start = out_bytes(p.start);
+      run.end = out_bytes(p.end);
+      run.x = pen;
+      // Cluster boxes for hit testing.
+      std::vector<std::pair<std::uint32_t, std::pair<double, double>>> clusters;  // cluster -> [left, right)
+      for (const Glyph& g : p.glyphs) {
+        PositionedGlyph pg;
+        pg.id = g.id;
+        pg.cluster = static_cast<std::uint32_t>(out_bytes(g.cluster));
+        pg.x = pen + g.x_offset;
+        pg.y = line.baseline - g.y_offset;
+        pg.advance = g.advance;
+        run.glyphs.push_back(pg);
+        if (!p.synthetic) {
+          if (!clusters.empty() && clusters.back().first == g.cluster)
+            clusters.back().second.second = pen + g.advance;
+          else
+            clusters.push_back({g.cluster, {pen, pen + g.advance}});
+        }
+        pen += g.advance;
+      }
+      run.width = pen - run.x;
+      if (!p.synthetic) add_boxes(boxes, p, clusters);
+      line.runs.push_back(std::move(run));
+    }
+    // Shift everything so that x = 0 is the line's visual left end; finish()
+    // applies the alignment offset.
+    out.lines_.push_back(std::move(line));
+    out.boxes_.push_back(std::move(boxes));
+    line_indent_.push_back(indent);
+    y += out.lines_.back().height;
+  }
+
+  void add_boxes(std::vector<Paragraph::ClusterBox>& boxes, const Piece& p,
+                 const std::vector<std::pair<std::uint32_t, std::pair<double, double>>>& clusters) const {
+    const bool rtl = p.level % 2 == 1;
+    // Logical extent of each cluster: up to the next cluster start in logical order.
+    std::vector<std::uint32_t> starts;
+    for (const auto& c : clusters) starts.push_back(c.first);
+    std::sort(starts.begin(), starts.end());
+    starts.erase(std::unique(starts.begin(), starts.end()), starts.end());
+    for (const auto& [cluster, span] : clusters) {
+      const auto it = std::upper_bound(starts.begin(), starts.end(), cluster);
+      const std::size_t end = it == starts.end() ? p.end : *it;
+      // Graphemes inside the cluster (a ligature "fi" holds two) share its width.
+      std::vector<std::size_t> gs;
+      for (std::size_t i = cluster; i < end; ++i)
+        if (i == cluster || grapheme[i]) gs.push_back(i);
+      const double w = (span.second - span.first) / static_cast<double>(gs.size());
+      for (std::size_t k = 0; k < gs.size(); ++k) {
+        Paragraph::ClusterBox b;
+        b.start = out_bytes(gs[k]);
+        b.end = out_bytes(k + 1 < gs.size() ? gs[k + 1] : end);
+        const std::size_t slot = rtl ? gs.size() - 1 - k : k;
+        b.left = span.first + w * static_cast<double>(slot);
+        b.right = b.left + w;
+        b.rtl = rtl;
+        boxes.push_back(b);
+      }
+    }
+  }
+
+  std::size_t out_bytes(std::size_t para_index) const { return bytes[p0 + para_index]; }
+
+  std::vector<double> line_indent_;
+
+  // --- Line breaking -----------------------------------------------------------
+
+  void layout_paragraph(std::size_t start, std::size_t end) {
+    p0 = start;
+    para = cps.substr(start, end - start);
+    const std::size_t n = para.size();
+    // HarfBuzz sees tabs as spaces (their width is set per line) and control
+    // characters as zero width spaces, so neither draws a missing glyph.
+    shaped_text = para;
+    for (char32_t& c : shaped_text) {
+      if (c == U'\t') c = U' ';
+      else if (c < 0x20 || c == 0x7F || c == 0x85 || c == 0x2028 || c == 0x2029) c = 0x200B;
+    }
+    bidi = resolve_bidi(para, pstyle.direction);
+    grapheme = grapheme_starts(para);
+    const std::string& lang = resolved[n ? style_of[p0] : 0].language_tag;
+    breaks = line_breaks(para, lang);
+    const std::size_t content_end = paragraph_content_end();
+    if (content_end == 0) {
+      // An empty paragraph is one empty line.
+      items.clear();
+      emit_line({}, 0, n, true, true, true, false, false);
+      consume_line();
+      return;
+    }
+    itemize();
+
+    const bool wrap = pstyle.width > 0;
+    const bool one_line_ellipsis = pstyle.ellipsis != Ellipsis::None && wrap && pstyle.max_lines == 0;
+    std::size_t a = 0;
+    bool first = true;
+    while (a < content_end && !stop) {
+      const double indent = first ? pstyle.first_line_indent : 0.0;
+      const double avail = wrap ? pstyle.width - indent : std::numeric_limits<double>::infinity();
+      // Greedy: the last opportunity where the line still fits.
+      std::size_t best = 0;
+      bool best_mandatory = false;
+      double x = indent, visible = indent;
+      for (std::size_t i = a; i < content_end; ++i) {
+        x += para[i] == U'\t' ? tab_advance(x, style_of[p0 + i]) : advance[i];
+        if (!is_whitespace(para[i])) visible = x;
+        const bool at_end = i + 1 == content_end;
+        const BreakAction action = at_end ? BreakAction::Mandatory : breaks[i];
+        if (action == BreakAction::None) continue;
+        double w = visible - indent;
+        if (para[i] == 0xAD && !at_end) w += hyphen_width(i);
+        if (w <= avail + kEpsilon || best == 0) {
+          if (w <= avail + kEpsilon) {
+            best = i + 1;
+            best_mandatory = action == BreakAction::Mandatory;
+          }
+          if (action == BreakAction::Mandatory) break;
+        }
+        if (w > avail + kEpsilon) break;
+      }
+      if (best == 0) {
+        // Nothing fits: break the first word between grapheme clusters
+        // (overflow-wrap: break-word), at least one cluster per line.
+        std::size_t e = a + 1;
+        while (e < content_end && !grapheme[e]) ++e;
+        best = e;
+        for (std::size_t k = e; k < content_end; ++k) {
+          if (!grapheme[k] && k + 1 < content_end) continue;
+          const std::size_t cand = k + 1 < content_end && grapheme[k] ? k : k + 1;
+          if (cand <= best) continue;
+          if (range_width(a, cand, indent) > avail + kEpsilon) break;
+          best = cand;
+          if (breaks[cand - 1] != BreakAction::None) break;
+        }
+        best_mandatory = breaks[best - 1] == BreakAction::Mandatory;
+      }
+      // Lines left: the last one allowed takes the rest of the paragraph (and
+      // gets the ellipsis).
+      const bool more_after = best < content_end || !last_paragraph_;
+      const bool last_allowed = lines_left == 1 && more_after;
+      if (one_line_ellipsis || last_allowed) {
+        if (pstyle.ellipsis != Ellipsis::None) {
+          ellipsize_line(a, content_end, n, first, avail, !(best < content_end) && last_allowed);
+        } else {
+          emit_simple(a, best, first, best_mandatory, n);
+        }
+        consume_line();
+        if (last_allowed) stop = true;
+        break;
+      }
+      emit_simple(a, best, first, best_mandatory, n);
+      consume_line();
+      first = false;
+      a = best;
+      // Spaces after a mandatory break belong to the next line.
+    }
+  }
+
+  bool last_paragraph_ = false;
+
+  void consume_line() {
+    if (lines_left != std::numeric_limits<std::size_t>::max()) --lines_left;
+    if (lines_left == 0) stop = true;
+  }
+
+  void emit_simple(std::size_t a, std::size_t b, bool first, bool mandatory, std::size_t n) {
+    const std::size_t content_end = paragraph_content_end();
+    const bool last = b >= content_end;
+    const std::size_t text_end = last ? n : b;
+    std::vector<std::uint8_t> lv = line_levels(para, bidi, a, text_end);
+    std::vector<Piece> pieces;
+    add_pieces(pieces, a, b, lv, a);
+    bool hyphen = false;
+    if (!last && b > a && para[b - 1] == 0xAD) {
+      const Item& it = items[item_of[b - 1]];
+      pieces.push_back(synthetic(hyphen_glyphs(it), it, it.level, b));
+      hyphen = true;
+    }
+    emit_line(std::move(pieces), a, text_end, first, last, mandatory || last, false, hyphen);
+  }
+
+  // The last line: the rest of the paragraph [a, e) cut to fit `avail` with
+  // an ellipsis at the start, middle or end. `force` adds an ellipsis even
+  // when the text fits (text after it was dropped).
+  void ellipsize_line(std::size_t a, std::size_t e, std::size_t n, bool first, double avail, bool force) {
+    const std::vector<std::uint8_t> lv = line_levels(para, bidi, a, e);
+    const double full = range_width(a, e);
+    std::vector<Piece> pieces;
+    if (full <= avail + kEpsilon && !force) {
+      add_pieces(pieces, a, e, lv, a);
+      emit_line(std::move(pieces), a, n, first, true, true, false, false);
+      return;
+    }
+    std::vector<std::size_t> bounds;  // grapheme boundaries in [a, e]
+    for (std::size_t i = a; i < e; ++i)
+      if (grapheme[i] || i == a) bounds.push_back(i);
+    bounds.push_back(e);
+    auto width_of = [&](std::size_t s, std::size_t t) { return s >= t ? 0.0 : range_width(s, t); };
+    const Item& near_start = items[item_of[a]];
+    const Item& near_end = items[item_of[e - 1]];
+    const std::uint8_t para_level = static_cast<std::uint8_t>(bidi.paragraph_level);
+    if (pstyle.ellipsis == Ellipsis::End || (force && pstyle.ellipsis != Ellipsis::Start)) {
+      std::vector<Glyph> eg = ellipsis_glyphs(near_end);
+      const double room = avail - glyphs_width(eg);
+      std::size_t keep = a;
+      for (std::size_t k : bounds)
+        if (width_of(a, k) <= room + kEpsilon) keep = k;
+      if (force && full <= room + kEpsilon) keep = e;
+      add_pieces(pieces, a, keep, lv, a);
+      pieces.push_back(synthetic(std::move(eg), keep > a ? items[item_of[keep - 1]] : near_end, para_level, keep));
+    } else if (pstyle.ellipsis == Ellipsis::Start) {
+      std::vector<Glyph> eg = ellipsis_glyphs(near_start);
+      const double room = avail - glyphs_width(eg);
+      std::size_t keep = e;
+      for (std::size_t k = bounds.size(); k-- > 0;)
+        if (width_of(bounds[k], e) <= room + kEpsilon) keep = bounds[k];
+      pieces.push_back(synthetic(std::move(eg), keep < e ? items[item_of[keep]] : near_start, para_level, keep));
+      add_pieces(pieces, keep, e, lv, a);
+    } else {
+      std::vector<Glyph> eg = ellipsis_glyphs(near_start);
+      const double room = avail - glyphs_width(eg);
+      // Grow the head and the tail in turn while both fit.
+      std::size_t h = 0, t = bounds.size() - 1;  // indices into bounds: head [a, bounds[h]), tail [bounds[t], e)
+      bool grew = true, head_turn = true;
+      while (grew && h < t) {
+        grew = false;
+        for (int attempt = 0; attempt < 2 && !grew; ++attempt, head_turn = !head_turn) {
+          const std::size_t nh = head_turn ? h + 1 : h, nt = head_turn ? t : t - 1;
+          if (nh > nt) continue;
+          if (width_of(a, bounds[nh]) + width_of(bounds[nt], e) <= room + kEpsilon) {
+            h = nh;
+            t = nt;
+            grew = true;
+          }
+        }
+      }
+      add_pieces(pieces, a, bounds[h], lv, a);
+      pieces.push_back(synthetic(std::move(eg), near_start, para_level, bounds[h]));
+      add_pieces(pieces, bounds[t], e, lv, a);
+    }
+    emit_line(std::move(pieces), a, n, first, true, true, true, false);
+  }
+
+  // Alignment, once every line is known (without a width the box is the
+  // widest line).
+  void finish() {
+    double box = pstyle.width;
+    if (box <= 0)
+      for (std::size_t k = 0; k < out.lines_.size(); ++k)
+        box = std::max(box, out.lines_[k].width + line_indent_[k]);
+    out.width_ = box;
+    for (std::size_t k = 0; k < out.lines_.size(); ++k) {
+      LayoutLine& line = out.lines_[k];
+      const bool rtl = line.paragraph_level % 2 == 1;
+      const double indent = line_indent_[k];
+      Align align = pstyle.align;
+      if (align == Align::Justify) align = Align::Start;
+      if (align == Align::Start) align = rtl ? Align::Right : Align::Left;
+      if (align == Align::End) align = rtl ? Align::Left : Align::Right;
+      // The glyphs were placed from pen 0 at the visual left; content starts
+      // at 0 for LTR. For RTL, trailing spaces (visually at the left) lie
+      // before the content: find the content's left edge.
+      double content_left = 0.0;
+      if (rtl) {
+        double total = 0.0;
+        for (const GlyphRun& r : line.runs) total = std::max(total, r.x + r.width);
+        content_left = total - line.width;
+      }
+      double left = 0.0;
+      switch (align) {
+        case Align::Left: left = rtl ? 0.0 : indent; break;
+        case Align::Right: left = box - line.width - (rtl ? indent : 0.0); break;
+        case Align::Center: left = (box - line.width) / 2.0; break;
+        default: break;
+      }
+      const double shift = left - content_left;
+      line.x = left;
+      for (GlyphRun& r : line.runs) {
+        r.x += shift;
+        for (PositionedGlyph& g : r.glyphs) g.x += shift;
+      }
+      for (Paragraph::ClusterBox& b : out.boxes_[k]) {
+        b.left += shift;
+        b.right += shift;
+      }
+    }
+  }
+
+  void run(std::string_view text, const std::vector<TextSpan>& spans) {
+    // Code points and their byte offsets.
+    std::size_t off = 0;
+    while (off < text.size()) {
+      char32_t c = 0;
+      detail::Utf8Problem problem;
+      const std::size_t len = detail::decode_utf8_at(text, off, c, problem);
+      if (len == 0)
+        throw Error(ErrorCode::InvalidText,
+                    "invalid UTF-8 at byte " + std::to_string(problem.offset) + ": " + problem.reason);
+      cps.push_back(c);
+      bytes.push_back(off);
+      off += len;
+    }
+    bytes.push_back(text.size());
+    // Styles per code point: later spans win.
+    style_of.assign(cps.size(), 0);
+    for (const TextSpan& span : spans) {
+      if (span.start > span.end || span.end > text.size())
+        throw Error(ErrorCode::InvalidArgument, "span [" + std::to_string(span.start) + ", " +
+                                                    std::to_string(span.end) + ") is outside the text (" +
+                                                    std::to_string(text.size()) + " bytes)");
+      const auto at = [&](std::size_t b) { return std::lower_bound(bytes.begin(), bytes.end(), b); };
+      const auto s = at(span.start), e = at(span.end);
+      if (*s != span.start || *e != span.end)
+        throw Error(ErrorCode::InvalidArgument, "span [" + std::to_string(span.start) + ", " +
+                                                    std::to_string(span.end) + ") cuts a UTF-8 sequence");
+      validate_style(span.style);
+      out.styles_.push_back(span.style);
+      for (auto i = s - bytes.begin(); i < e - bytes.begin(); ++i)
+        style_of[static_cast<std::size_t>(i)] = out.styles_.size() - 1;
+    }
+    resolve_styles();
+    if (pstyle.max_lines > 0) lines_left = static_cast<std::size_t>(pstyle.max_lines);
+
+    // Paragraphs end after a paragraph separator (CR LF counts as one).
+    std::vector<std::pair<std::size_t, std::size_t>> paragraphs;
+    std::size_t start = 0;
+    for (std::size_t i = 0; i < cps.size(); ++i) {
+      if (!is_paragraph_separator(cps[i])) continue;
+      if (cps[i] == U'\r' && i + 1 < cps.size() && cps[i + 1] == U'\n') ++i;
+      paragraphs.push_back({start, i + 1});
+      start = i + 1;
+    }
+    if (start < cps.size() || paragraphs.empty() ||
+        (!cps.empty() && is_paragraph_separator(cps.back())))
+      paragraphs.push_back({start, cps.size()});
+    for (std::size_t k = 0; k < paragraphs.size() && !stop; ++k) {
+      last_paragraph_ = k + 1 == paragraphs.size();
+      layout_paragraph(paragraphs[k].first, paragraphs[k].second);
+    }
+    finish();
+    // Grapheme boundaries over the whole text, for carets.
+    const std::vector<bool> g = grapheme_starts(cps);
+    for (std::size_t i = 0; i < cps.size(); ++i)
+      if (g[i]) out.boundaries_.push_back(bytes[i]);
+    out.boundaries_.push_back(text.size());
+  }
+};
+
+Paragraph Paragraph::layout(FontCollection& fonts, std::string_view text, const std::vector<TextSpan>& spans,
+                            const ParagraphStyle& style) {
+  validate_style(style.default_style);
+  check_finite(style.width, 0.0, tolerance::kMaxImageSidePx * 64.0, "width (px)");
+  check_finite(style.line_height, 0.0, 100.0, "line height (multiple)");
+  check_finite(style.line_height_px, 0.0, 1e6, "line height (px)");
+  check_finite(style.first_line_indent, -1e6, 1e6, "first line indent (px)");
+  check_finite(style.tab_interval, 0.0, 1e6, "tab interval (px)");
+  if (style.max_lines < 0) throw Error(ErrorCode::InvalidArgument, "max lines must be 0 (no limit) or more");
+  for (std::size_t i = 0; i < style.tab_stops.size(); ++i) {
+    check_finite(style.tab_stops[i], 0.0, 1e6, "tab stop (px)");
+    if (i > 0 && style.tab_stops[i] <= style.tab_stops[i - 1])
+      throw Error(ErrorCode::InvalidArgument, "tab stops must increase");
+  }
+  if (text.size() > (1u << 28)) throw Error(ErrorCode::InvalidText, "text too long to lay out");
+  Paragraph p;
+  p.text_ = std::string(text);
+  p.styles_.push_back(style.default_style);
+  ParagraphBuilder builder(fonts, style, p);
+  builder.run(p.text_, spans);
+  return p;
+}
+
+// --- Queries -------------------------------------------------------------------
+
+Rect Paragraph::logical_bounds() const {
+  Rect r;
+  if (lines_.empty()) return r;
+  double left = 0.0, right = width_;
+  for (const LayoutLine& l : lines_) {
+    left = std::min(left, l.x);
+    right = std::max(right, l.x + l.width);
+  }
+  r.x = left;
+  r.y = lines_.front().top;
+  r.width = right - left;
+  r.height = lines_.back().top + lines_.back().height - r.y;
+  return r;
+}
+
+Rect Paragraph::ink_bounds() const {
+  double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
+  for (const LayoutLine& l : lines_)
+    for (const GlyphRun& r : l.runs) {
+      const double s = r.size_px / r.font->metrics().units_per_em;
+      for (const PositionedGlyph& g : r.glyphs) {
+        hb_glyph_extents_t e{};
+        if (!hb_font_get_glyph_extents(r.font->impl().hb_font, g.id, &e) || e.width == 0 || e.height == 0) continue;
+        const double gx0 = g.x + e.x_bearing * s, gx1 = gx0 + e.width * s;
+        const double gy0 = g.y - e.y_bearing * s, gy1 = gy0 - e.height * s;
+        x0 = std::min({x0, gx0, gx1});
+        x1 = std::max({x1, gx0, gx1});
+        y0 = std::min({y0, gy0, gy1});
+        y1 = std::max({y1, gy0, gy1});
+      }
+    }
+  if (x0 > x1) return {};
+  return {x0, y0, x1 - x0, y1 - y0};
+}
+
+std::size_t Paragraph::previous_boundary(std::size_t index) const {
+  index = std::min(index, text_.size());
+  auto it = std::lower_bound(boundaries_.begin(), boundaries_.end(), index);
+  if (it != boundaries_.end() && *it == index) {
+    return it == boundaries_.begin() ? index : *(it - 1);
+  }
+  return it == boundaries_.begin() ? 0 : *(it - 1);
+}
+
+std::size_t Paragraph::next_boundary(std::size_t index) const {
+  auto it = std::upper_bound(boundaries_.begin(), boundaries_.end(), index);
+  return it == boundaries_.end() ? text_.size() : *it;
+}
+
+Caret Paragraph::caret(std::size_t index) const {
+  Caret c;
+  if (lines_.empty()) return c;
+  index = std::min(index, text_.size());
+  // Snap into a grapheme boundary.
+  if (!std::binary_search(boundaries_.begin(), boundaries_.end(), index)) index = previous_boundary(index);
+  std::size_t li = lines_.size() - 1;
+  for (std::size_t k = 0; k < lines_.size(); ++k)
+    if (index >= lines_[k].start && index < lines_[k].end) {
+      li = k;
+      break;
+    }
+  const LayoutLine& line = lines_[li];
+  c.line = li;
+  c.top = line.top;
+  c.bottom = line.top + line.height;
+  const bool rtl_para = line.paragraph_level % 2 == 1;
+  const ClusterBox* after = nullptr;
+  const ClusterBox* before = nullptr;
+  const ClusterBox* last_logical = nullptr;
+  for (const ClusterBox& b : boxes_[li]) {
+    if (b.start == index) after = &b;
+    if (b.end == index) before = &b;
+    if (!last_logical || b.start > last_logical->start) last_logical = &b;
+  }
+  if (!after && !before && last_logical && index >= last_logical->end) before = last_logical;
+  auto leading = [](const ClusterBox& b) { return b.rtl ? b.right : b.left; };
+  auto trailing = [](const ClusterBox& b) { return b.rtl ? b.left : b.right; };
+  if (after) {
+    c.strong_x = leading(*after);
+    c.strong_rtl = after->rtl;
+  } else if (before) {
+    c.strong_x = trailing(*before);
+    c.strong_rtl = before->rtl;
+  } else {
+    c.strong_x = rtl_para ? line.x + line.width : line.x;
+    c.strong_rtl = rtl_para;
+  }
+  if (before) {
+    c.weak_x = trailing(*before);
+    c.weak_rtl = before->rtl;
+  } else {
+    c.weak_x = c.strong_x;
+    c.weak_rtl = c.strong_rtl;
+  }
+  return c;
+}
+
+HitResult Paragraph::hit_test(double x, double y) const {
+  HitResult h;
+  if (lines_.empty()) return h;
+  std::size_t li = lines_.size() - 1;
+  for (std::size_t k = 0; k < lines_.size(); ++k)
+    if (y < lines_[k].top + lines_[k].height) {
+      li = k;
+      break;
+    }
+  h.line = li;
+  const LayoutLine& line = lines_[li];
+  const auto& boxes = boxes_[li];
+  if (boxes.empty()) {
+    h.index = line.start;
+    return h;
+  }
+  const ClusterBox* leftmost = &boxes.front();
+  const ClusterBox* rightmost = &boxes.front();
+  for (const ClusterBox& b : boxes) {
+    if (b.left < leftmost->left) leftmost = &b;
+    if (b.right > rightmost->right) rightmost = &b;
+  }
+  const bool in_y = y >= line.top && y < line.top + line.height;
+  if (x < leftmost->left) {
+    h.index = leftmost->rtl ? leftmost->end : leftmost->start;
+    return h;
+  }
+  if (x >= rightmost->right) {
+    h.index = rightmost->rtl ? rightmost->start : rightmost->end;
+    return h;
+  }
+  for (const ClusterBox& b : boxes) {
+    if (x < b.left || x >= b.right) continue;
+    const bool left_half = x < (b.left + b.right) / 2.0;
+    h.index = (left_half != b.rtl) ? b.start : b.end;
+    h.inside = in_y;
+    return h;
+  }
+  // In a gap between boxes (justified spaces are inside boxes; this is rare).
+  double best = std::numeric_limits<double>::infinity();
+  for (const ClusterBox& b : boxes) {
+    const double d = std::min(std::abs(x - b.left), std::abs(x - b.right));
+    if (d < best) {
+      best = d;
+      h.index = (std::abs(x - b.left) < std::abs(x - b.right)) != b.rtl ? b.start : b.end;
+    }
+  }
+  return h;
+}
+
+std::vector<Rect> Paragraph::selection_rects(std::size_t start, std::size_t end) const {
+  std::vector<Rect> rects;
+  if (start > end) std::swap(start, end);
+  for (std::size_t k = 0; k < lines_.size(); ++k) {
+    const LayoutLine& line = lines_[k];
+    if (line.end <= start || line.start >= end) continue;
+    std::vector<std::pair<double, double>> spans;
+    for (const ClusterBox& b : boxes_[k])
+      if (b.start < end && b.end > start) spans.push_back({b.left, b.right});
+    std::sort(spans.begin(), spans.end());
+    for (const auto& [l, r] : spans) {
+      if (!rects.empty() && rects.back().y == line.top && std::abs(rects.back().x + rects.back().width - l) < 1e-6) {
+        rects.back().width = r - rects.back().x;
+      } else {
+        rects.push_back({l, line.top, r - l, line.height});
+      }
+    }
+  }
+  return rects;
+}
+
+}  // namespace curvetext

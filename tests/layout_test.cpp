@@ -1,0 +1,373 @@
+// Paragraph layout: bidi order, complex scripts, fallback, line breaking,
+// ellipsis, tabs, justification, hit testing, errors. Fonts from Debian's
+// fonts-dejavu-core, fonts-noto-core and fonts-noto-cjk.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "curvetext/error.hpp"
+#include "curvetext/layout.hpp"
+#include "curvetext/line_break.hpp"
+#include "font/utf8.hpp"
+#include "support/fonts.hpp"
+#include "support/layout_support.hpp"
+
+namespace curvetext {
+namespace {
+
+ParagraphStyle style_with(std::vector<std::string> fonts, double size, double width = 0) {
+  ParagraphStyle s;
+  s.default_style.fonts = std::move(fonts);
+  s.default_style.size_px = size;
+  s.width = width;
+  return s;
+}
+
+// Code point index of every byte offset.
+std::vector<std::size_t> cp_index_of_bytes(const std::string& text) {
+  std::vector<std::size_t> idx(text.size() + 1, 0);
+  std::size_t cp = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if ((static_cast<unsigned char>(text[i]) & 0xC0) != 0x80 && i > 0) ++cp;
+    idx[i] = cp;
+  }
+  idx[text.size()] = cp + 1;
+  return idx;
+}
+
+// Glyph clusters of a line, left to right, deduplicated.
+std::vector<std::size_t> visual_clusters(const LayoutLine& line) {
+  std::vector<std::size_t> out;
+  for (const GlyphRun& r : line.runs)
+    for (const PositionedGlyph& g : r.glyphs)
+      if (out.empty() || out.back() != g.cluster) out.push_back(g.cluster);
+  return out;
+}
+
+void expect_increasing_x(const LayoutLine& line) {
+  double last = -1e9;
+  for (const GlyphRun& r : line.runs) {
+    double pen = r.x;
+    for (const PositionedGlyph& g : r.glyphs) {
+      EXPECT_GE(pen, last - 1e-9);
+      last = pen;
+      pen += g.advance;
+    }
+  }
+}
+
+TEST(Layout, MixedDirectionLtrParagraph) {
+  FontCollection fonts;
+  // "abc <Hebrew shalom> 123 def": after Hebrew the digits become Arabic-
+  // numeral-like (W2) and the space between joins the RTL side (N1), so the
+  // RTL stretch is "shalom 123", shown with the digits on its left, still
+  // reading left to right (level 2).
+  const std::string text = "abc \u05E9\u05DC\u05D5\u05DD 123 def";
+  const Paragraph p = Paragraph::layout(fonts, text, {}, style_with({test::kNotoSans, test::kNotoHebrew}, 20));
+  ASSERT_EQ(p.lines().size(), 1u);
+  const LayoutLine& line = p.lines()[0];
+  expect_increasing_x(line);
+  const std::vector<std::size_t> want = {0, 1, 2, 3, 13, 14, 15, 12, 10, 8, 6, 4, 16, 17, 18, 19};
+  EXPECT_EQ(visual_clusters(line), want);
+  bool saw_rtl = false;
+  for (const GlyphRun& r : line.runs)
+    if (r.rtl) {
+      saw_rtl = true;
+      EXPECT_NE(r.font->path().find("Hebrew"), std::string::npos);  // explicit fallback list
+    }
+  EXPECT_TRUE(saw_rtl);
+}
+
+TEST(Layout, MixedDirectionRtlParagraphArabic) {
+  FontCollection fonts;
+  // Arabic paragraph with an English word and a number: the paragraph is RTL
+  // (auto direction), Latin and digits read left to right inside it.
+  const std::string text = "\u0645\u0631\u062D\u0628\u0627 abc 42";
+  ParagraphStyle s = style_with({test::kNotoArabic, test::kNotoSans}, 24, 400);
+  const Paragraph p = Paragraph::layout(fonts, text, {}, s);
+  ASSERT_EQ(p.lines().size(), 1u);
+  const LayoutLine& line = p.lines()[0];
+  EXPECT_EQ(line.paragraph_level, 1);
+  expect_increasing_x(line);
+  // Start alignment of an RTL paragraph is the right edge.
+  EXPECT_NEAR(line.x + line.width, 400.0, 1e-6);
+  // Visually from the left: "abc 42" (the digits follow the Latin, W7), a
+  // space, then the Arabic word (its clusters decreasing).
+  const std::vector<std::size_t> v = visual_clusters(line);
+  ASSERT_GE(v.size(), 8u);
+  const std::vector<std::size_t> head(v.begin(), v.begin() + 6);
+  EXPECT_EQ(head, (std::vector<std::size_t>{11, 12, 13, 14, 15, 16}));
+  const std::vector<std::size_t> tail(v.end() - 3, v.end());
+  EXPECT_GT(tail[0], tail[1]);
+  EXPECT_GT(tail[1], tail[2]);
+  EXPECT_EQ(v.back(), 0u);  // the first Arabic letter is rightmost
+}
+
+TEST(Layout, DevanagariShapesConjuncts) {
+  FontCollection fonts;
+  const std::string text = "\u0928\u092E\u0938\u094D\u0924\u0947 \u0926\u0941\u0928\u093F\u092F\u093E";  // namaste duniya
+  const Paragraph p = Paragraph::layout(fonts, text, {}, style_with({test::kNotoDevanagari}, 24));
+  ASSERT_EQ(p.lines().size(), 1u);
+  std::size_t glyphs = 0;
+  for (const GlyphRun& r : p.lines()[0].runs)
+    for (const PositionedGlyph& g : r.glyphs) {
+      EXPECT_NE(g.id, 0u);
+      ++glyphs;
+    }
+  // 12 code points; the conjunct "st" and the reordered i-matra make fewer glyphs.
+  EXPECT_LT(glyphs, 12u);
+  // The i-matra (U+093F, byte 28) is reordered before its consonant NA (byte
+  // 25): HarfBuzz merges them into NA's cluster, so no glyph has cluster 28.
+  const std::vector<std::size_t> v = visual_clusters(p.lines()[0]);
+  EXPECT_NE(std::find(v.begin(), v.end(), 25u), v.end());
+  EXPECT_EQ(std::find(v.begin(), v.end(), 28u), v.end());
+}
+
+TEST(Layout, ThaiWrapsWithinWidth) {
+  FontCollection fonts;
+  // Thai has no spaces between words; libunibreak 1.1 has no dictionary
+  // (class SA resolves to AL), so long runs break between grapheme clusters.
+  const std::string text =
+      "\u0E20\u0E32\u0E29\u0E32\u0E44\u0E17\u0E22\u0E40\u0E1B\u0E47\u0E19\u0E20\u0E32\u0E29\u0E32\u0E17\u0E35\u0E48"
+      "\u0E2A\u0E27\u0E22\u0E07\u0E32\u0E21 \u0E21\u0E32\u0E01";
+  const Paragraph p = Paragraph::layout(fonts, text, {}, style_with({test::kNotoThai}, 20, 100));
+  ASSERT_GE(p.lines().size(), 2u);
+  for (const LayoutLine& l : p.lines()) {
+    EXPECT_LE(l.width, 100.0 + 1e-6);
+    for (const GlyphRun& r : l.runs)
+      for (const PositionedGlyph& g : r.glyphs) EXPECT_NE(g.id, 0u);
+  }
+  // No line starts with a combining vowel or tone mark.
+  const auto starts = grapheme_starts(detail::decode_utf8(text));
+  const auto idx = cp_index_of_bytes(text);
+  for (const LayoutLine& l : p.lines()) EXPECT_TRUE(starts[idx[l.start]]) << l.start;
+}
+
+TEST(Layout, CjkFallbackThroughFontconfigAndBreaksBetweenIdeographs) {
+  FontCollection fonts;
+  const std::string text = "Kanji: \u6F22\u5B57\u306F\u4E2D\u56FD\u304B\u3089\u6765\u305F\u6587\u5B57\u3067\u3059\u3002";
+  const Paragraph p = Paragraph::layout(fonts, text, {}, style_with({test::kDejaVuSans}, 20, 120));
+  ASSERT_GE(p.lines().size(), 2u);
+  bool cjk = false;
+  for (const LayoutLine& l : p.lines()) {
+    EXPECT_LE(l.width, 120.0 + 1e-6);
+    for (const GlyphRun& r : l.runs) {
+      if (r.font->path().find("CJK") != std::string::npos) cjk = true;
+      for (const PositionedGlyph& g : r.glyphs) EXPECT_NE(g.id, 0u);
+    }
+  }
+  EXPECT_TRUE(cjk) << "ideographs should fall back to Noto Sans CJK";
+  // U+3002 (ideographic full stop, class CL) never starts a line.
+  EXPECT_NE(p.lines().back().start, text.size() - 3);
+  // One fontconfig query serves every ideograph.
+  EXPECT_LE(fonts.stats().fontconfig_queries, 3u);
+}
+
+TEST(Layout, GeometryContractLineAdvance) {
+  FontCollection fonts;
+  const Paragraph p = Paragraph::layout(fonts, "one\ntwo\n\nfour", {}, style_with({test::kDejaVuSans}, 32));
+  ASSERT_EQ(p.lines().size(), 4u);
+  const Font f = Font::open(test::kDejaVuSans);
+  const FontMetrics m = f.metrics();
+  const double s = 32.0 / m.units_per_em;
+  EXPECT_NEAR(p.lines()[0].baseline, m.ascender * s, 1e-9);
+  for (std::size_t k = 1; k < 4; ++k)
+    EXPECT_NEAR(p.lines()[k].baseline - p.lines()[k - 1].baseline, (m.ascender - m.descender + m.line_gap) * s, 1e-9);
+  EXPECT_EQ(p.lines()[1].start, 4u);
+  EXPECT_EQ(p.lines()[2].start, 8u);
+  EXPECT_EQ(p.lines()[2].end, 9u);
+  EXPECT_TRUE(p.lines()[2].runs.empty() || p.lines()[2].runs[0].glyphs.empty());
+}
+
+std::size_t count_glyph(const LayoutLine& l, std::uint32_t id) {
+  std::size_t n = 0;
+  for (const GlyphRun& r : l.runs)
+    for (const PositionedGlyph& g : r.glyphs) n += g.id == id;
+  return n;
+}
+
+TEST(Layout, EllipsisEndStartMiddle) {
+  FontCollection fonts;
+  const Font f = Font::open(test::kDejaVuSans);
+  const std::uint32_t ellipsis = f.glyph_for_codepoint(0x2026);
+  const std::string text = "The quick brown fox jumps over the lazy dog";
+  for (Ellipsis e : {Ellipsis::End, Ellipsis::Start, Ellipsis::Middle}) {
+    ParagraphStyle s = style_with({test::kDejaVuSans}, 20, 150);
+    s.ellipsis = e;
+    const Paragraph p = Paragraph::layout(fonts, text, {}, s);
+    ASSERT_EQ(p.lines().size(), 1u);
+    const LayoutLine& l = p.lines()[0];
+    EXPECT_TRUE(l.ellipsized);
+    EXPECT_LE(l.width, 150.0 + 1e-6);
+    EXPECT_GT(l.width, 110.0);  // filled, not just the ellipsis
+    EXPECT_EQ(count_glyph(l, ellipsis), 1u);
+    const std::vector<std::size_t> v = visual_clusters(l);
+    if (e == Ellipsis::End) {
+      EXPECT_EQ(v.front(), 0u);
+    }
+    if (e == Ellipsis::Start) {
+      EXPECT_EQ(v.back(), text.size() - 1);
+    }
+    if (e == Ellipsis::Middle) {
+      EXPECT_EQ(v.front(), 0u);
+      EXPECT_EQ(v.back(), text.size() - 1);
+    }
+  }
+  // max_lines: two lines, the second ends with an ellipsis.
+  ParagraphStyle s = style_with({test::kDejaVuSans}, 20, 150);
+  s.max_lines = 2;
+  s.ellipsis = Ellipsis::End;
+  const Paragraph p = Paragraph::layout(fonts, text, {}, s);
+  ASSERT_EQ(p.lines().size(), 2u);
+  EXPECT_FALSE(p.lines()[0].ellipsized);
+  EXPECT_TRUE(p.lines()[1].ellipsized);
+  // Without an ellipsis, max_lines just stops.
+  s.ellipsis = Ellipsis::None;
+  EXPECT_EQ(Paragraph::layout(fonts, text, {}, s).lines().size(), 2u);
+}
+
+TEST(Layout, TabStops) {
+  FontCollection fonts;
+  ParagraphStyle s = style_with({test::kDejaVuSans}, 20);
+  s.tab_stops = {100.0, 250.0};
+  s.tab_interval = 50.0;
+  const Paragraph p = Paragraph::layout(fonts, "a\tb\tc\td", {}, s);
+  ASSERT_EQ(p.lines().size(), 1u);
+  std::vector<double> xs;
+  for (const GlyphRun& r : p.lines()[0].runs)
+    for (const PositionedGlyph& g : r.glyphs)
+      if (g.cluster == 2 || g.cluster == 4 || g.cluster == 6) xs.push_back(g.x);
+  ASSERT_EQ(xs.size(), 3u);
+  EXPECT_NEAR(xs[0], 100.0, 1e-9);
+  EXPECT_NEAR(xs[1], 250.0, 1e-9);
+  EXPECT_NEAR(xs[2], 300.0, 1e-9);  // default stops every 50 px after the last
+}
+
+TEST(Layout, JustifyStretchesSpacesOnly) {
+  FontCollection fonts;
+  ParagraphStyle s = style_with({test::kDejaVuSans}, 18, 260);
+  s.align = Align::Justify;
+  const std::string text = "Justified text stretches the spaces between words so that both edges line up, except "
+                           "on the last line.";
+  const Paragraph p = Paragraph::layout(fonts, text, {}, s);
+  ASSERT_GE(p.lines().size(), 3u);
+  const Paragraph plain = Paragraph::layout(fonts, text, {}, style_with({test::kDejaVuSans}, 18, 260));
+  for (std::size_t k = 0; k < p.lines().size(); ++k) {
+    const LayoutLine& l = p.lines()[k];
+    if (k + 1 < p.lines().size()) EXPECT_NEAR(l.x + l.width, 260.0, 1e-6) << k;
+    else EXPECT_LT(l.x + l.width, 259.0);
+    // Letters keep their advances: every non-space glyph has the unjustified advance.
+    const LayoutLine& u = plain.lines()[k];
+    ASSERT_EQ(l.start, u.start);
+    for (std::size_t r = 0; r < l.runs.size() && r < u.runs.size(); ++r)
+      for (std::size_t g = 0; g < l.runs[r].glyphs.size(); ++g)
+        if (text[l.runs[r].glyphs[g].cluster] != ' ') {
+          EXPECT_DOUBLE_EQ(l.runs[r].glyphs[g].advance, u.runs[r].glyphs[g].advance);
+        }
+  }
+}
+
+TEST(Layout, SoftHyphenDrawsHyphenWhenUsed) {
+  FontCollection fonts;
+  const std::string text = "extra\u00ADordinarily";
+  const Paragraph p = Paragraph::layout(fonts, text, {}, style_with({test::kDejaVuSans}, 20, 80));
+  ASSERT_GE(p.lines().size(), 2u);
+  EXPECT_TRUE(p.lines()[0].hyphenated);
+  EXPECT_EQ(p.lines()[1].start, 7u);
+  const Font f = Font::open(test::kDejaVuSans);
+  const std::uint32_t hyphen = f.glyph_for_codepoint(0x2010) ? f.glyph_for_codepoint(0x2010) : f.glyph_for_codepoint('-');
+  EXPECT_EQ(count_glyph(p.lines()[0], hyphen), 1u);
+  // Unused soft hyphens draw nothing visible.
+  const Paragraph wide = Paragraph::layout(fonts, text, {}, style_with({test::kDejaVuSans}, 20, 0));
+  ASSERT_EQ(wide.lines().size(), 1u);
+  EXPECT_EQ(count_glyph(wide.lines()[0], hyphen), 0u);
+}
+
+TEST(Layout, SpansStylesAndSpacing) {
+  FontCollection fonts;
+  const std::string text = "small BIG small";
+  TextStyle big;
+  big.fonts = {test::kDejaVuSans};
+  big.size_px = 40;
+  big.letter_spacing = 5;
+  ParagraphStyle s = style_with({test::kDejaVuSans}, 16);
+  const Paragraph p = Paragraph::layout(fonts, text, {{6, 9, big}}, s);
+  ASSERT_EQ(p.lines().size(), 1u);
+  // The line is as tall as its tallest font.
+  const FontMetrics m = Font::open(test::kDejaVuSans).metrics();
+  EXPECT_NEAR(p.lines()[0].ascent, m.ascender * 40.0 / m.units_per_em, 1e-9);
+  std::size_t big_runs = 0;
+  for (const GlyphRun& r : p.lines()[0].runs) big_runs += r.size_px == 40.0;
+  EXPECT_EQ(big_runs, 1u);
+}
+
+TEST(Layout, HitTestingAndCarets) {
+  FontCollection fonts;
+  const std::string text = "Hello e\u0301t\u00E9 world";  // e + combining acute is one grapheme
+  const Paragraph p = Paragraph::layout(fonts, text, {}, style_with({test::kDejaVuSans}, 20));
+  // Caret positions increase along an LTR line and map back through hit testing.
+  double last = -1;
+  for (std::size_t i = 0; i <= text.size(); i = p.next_boundary(i)) {
+    const Caret c = p.caret(i);
+    EXPECT_GT(c.strong_x, last) << i;
+    last = c.strong_x;
+    EXPECT_EQ(p.hit_test(c.strong_x + 0.01, 5).index, i) << i;
+    if (i == text.size()) break;
+  }
+  // No caret position inside the grapheme "e + U+0301" (bytes 6..9).
+  EXPECT_EQ(p.next_boundary(6), 9u);
+  EXPECT_EQ(p.caret(7).strong_x, p.caret(6).strong_x);
+  // Selection of "llo" is one rectangle as wide as the three letters.
+  const auto rects = p.selection_rects(2, 5);
+  ASSERT_EQ(rects.size(), 1u);
+  EXPECT_NEAR(rects[0].x, p.caret(2).strong_x, 1e-9);
+  EXPECT_NEAR(rects[0].x + rects[0].width, p.caret(5).strong_x, 1e-9);
+}
+
+TEST(Layout, CaretsAtBidiBoundaries) {
+  FontCollection fonts;
+  const std::string text = "abc \u05D0\u05D1\u05D2 def";  // aleph bet gimel at bytes 4..10
+  const Paragraph p = Paragraph::layout(fonts, text, {}, style_with({test::kDejaVuSans}, 20));
+  // At byte 4 (after "abc ", before the Hebrew): the weak caret is after the
+  // space, the strong one at the Hebrew word's leading (right) edge.
+  const Caret c = p.caret(4);
+  EXPECT_FALSE(c.weak_rtl);
+  EXPECT_TRUE(c.strong_rtl);
+  EXPECT_GT(c.strong_x, c.weak_x + 5.0);
+  // Selecting the space and the first Hebrew letter gives two rectangles.
+  EXPECT_EQ(p.selection_rects(3, 6).size(), 2u);
+  // Hitting the right half of the first Hebrew letter gives its start.
+  const Caret a = p.caret(4);
+  EXPECT_EQ(p.hit_test(a.strong_x - 0.5, 5).index, 4u);
+}
+
+TEST(Layout, BadInput) {
+  FontCollection fonts;
+  const ParagraphStyle s = style_with({test::kDejaVuSans}, 20);
+  EXPECT_THROW(Paragraph::layout(fonts, "bad \xC3\x28", {}, s), Error);
+  ParagraphStyle w = s;
+  w.width = -5;
+  EXPECT_THROW(Paragraph::layout(fonts, "x", {}, w), Error);
+  w.width = std::nan("");
+  EXPECT_THROW(Paragraph::layout(fonts, "x", {}, w), Error);
+  TextSpan cut{1, 2, s.default_style};
+  EXPECT_THROW(Paragraph::layout(fonts, "\u00E9x", {cut}, s), Error);  // inside a 2-byte sequence
+  TextSpan outside{0, 99, s.default_style};
+  EXPECT_THROW(Paragraph::layout(fonts, "x", {outside}, s), Error);
+  ParagraphStyle missing = style_with({"/nonexistent/font.ttf"}, 20);
+  try {
+    Paragraph::layout(fonts, "x", {}, missing);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::FontNotFound);
+  }
+  // Regional indicators (a flag) do not crash libunibreak 1.1.
+  EXPECT_NO_THROW(Paragraph::layout(fonts, "flag \U0001F1E9\U0001F1EA ok", {}, s));
+  // Empty text is one empty line.
+  EXPECT_EQ(Paragraph::layout(fonts, "", {}, s).lines().size(), 1u);
+}
+
+}  // namespace
+}  // namespace curvetext

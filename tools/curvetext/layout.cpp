@@ -1,0 +1,273 @@
+// curvetext layout: a paragraph's lines and positioned glyphs as JSON; and the
+// paragraph options and markup shared with `render`.
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "curvetext/default_font.hpp"
+#include "curvetext/error.hpp"
+#include "layout_options.hpp"
+
+#ifndef CURVETEXT_BUILD_FONT_DIR
+#define CURVETEXT_BUILD_FONT_DIR ""
+#endif
+
+namespace curvetext::cli {
+
+namespace {
+
+Align parse_align(const std::string& s) {
+  if (s == "left") return Align::Left;
+  if (s == "right") return Align::Right;
+  if (s == "center" || s == "centre") return Align::Center;
+  if (s == "justify") return Align::Justify;
+  if (s == "start") return Align::Start;
+  if (s == "end") return Align::End;
+  throw UsageError{"--align needs left, right, center, justify, start or end, got '" + s + "'"};
+}
+
+Ellipsis parse_ellipsis(const std::string& s) {
+  if (s == "none") return Ellipsis::None;
+  if (s == "start") return Ellipsis::Start;
+  if (s == "middle") return Ellipsis::Middle;
+  if (s == "end") return Ellipsis::End;
+  throw UsageError{"--ellipsis needs none, start, middle or end, got '" + s + "'"};
+}
+
+BaseDirection parse_direction(const std::string& s) {
+  if (s == "auto") return BaseDirection::Auto;
+  if (s == "ltr") return BaseDirection::Ltr;
+  if (s == "rtl") return BaseDirection::Rtl;
+  throw UsageError{"--direction needs auto, ltr or rtl, got '" + s + "'"};
+}
+
+double positive_or_zero(std::string_view option, std::string_view text) {
+  const double v = parse_number(option, text);
+  if (!std::isfinite(v) || v < 0.0) throw UsageError{std::string(option) + " must be 0 or more, got '" + std::string(text) + "'"};
+  return v;
+}
+
+std::string read_text_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(ErrorCode::Io, "cannot read text file " + path);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  std::string text = ss.str();
+  if (!text.empty() && text.back() == '\n') text.pop_back();
+  if (!text.empty() && text.back() == '\r') text.pop_back();
+  return text;
+}
+
+void json_string(std::string& out, const std::string& s) {
+  out += '"';
+  for (unsigned char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += static_cast<char>(c);
+    } else if (c < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", c);
+      out += buf;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  out += '"';
+}
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3f", v);
+  std::string s(buf);
+  // Trim trailing zeros: "12.500" -> "12.5", "3.000" -> "3".
+  while (!s.empty() && s.back() == '0') s.pop_back();
+  if (!s.empty() && s.back() == '.') s.pop_back();
+  if (s == "-0") s = "0";
+  return s;
+}
+
+}  // namespace
+
+bool LayoutCli::parse(Args& args) {
+  const std::string& a = args.option();
+  if (a == "--font") fonts.push_back(args.value());
+  else if (a == "--width") style.width = positive_or_zero(a, args.value());
+  else if (a == "--align") style.align = parse_align(args.value());
+  else if (a == "--line-height") {
+    // "1.5" is a multiple of the natural line height, "24px" a fixed advance.
+    std::string v = args.value();
+    if (v.size() > 2 && v.substr(v.size() - 2) == "px")
+      style.line_height_px = positive_or_zero(a, v.substr(0, v.size() - 2));
+    else
+      style.line_height = positive_or_zero(a, v);
+    if (style.line_height > 100.0) throw UsageError{"--line-height multiple must be at most 100"};
+  } else if (a == "--max-lines") {
+    style.max_lines = parse_int(a, args.value());
+    if (style.max_lines < 0) throw UsageError{"--max-lines must be 0 or more"};
+  } else if (a == "--ellipsis") style.ellipsis = parse_ellipsis(args.value());
+  else if (a == "--direction") style.direction = parse_direction(args.value());
+  else if (a == "--language") style.language = args.value();
+  else if (a == "--indent") style.first_line_indent = parse_number(a, args.value());
+  else if (a == "--tab-stops") {
+    std::stringstream ss(args.value());
+    std::string item;
+    while (std::getline(ss, item, ',')) style.tab_stops.push_back(positive_or_zero(a, item));
+  } else if (a == "--markup") markup = true;
+  else return false;
+  if (a != "--font" || fonts.size() > 1) used = true;
+  return true;
+}
+
+std::string parse_markup(const std::string& markup, const TextStyle& base, std::vector<TextSpan>& spans) {
+  std::string text;
+  struct Open {
+    std::string tag;
+    std::size_t start;
+    TextStyle style;
+  };
+  std::vector<Open> stack;
+  auto current = [&]() -> const TextStyle& { return stack.empty() ? base : stack.back().style; };
+  std::size_t i = 0;
+  while (i < markup.size()) {
+    const char c = markup[i];
+    if (c == '&') {
+      const std::size_t semi = markup.find(';', i);
+      const std::string entity = semi == std::string::npos ? "" : markup.substr(i, semi - i + 1);
+      if (entity == "&lt;") text += '<';
+      else if (entity == "&gt;") text += '>';
+      else if (entity == "&amp;") text += '&';
+      else throw Error(ErrorCode::InvalidArgument, "markup: unknown entity at byte " + std::to_string(i) + " (use &lt; &gt; &amp;)");
+      i = semi + 1;
+      continue;
+    }
+    if (c != '<') {
+      text += c;
+      ++i;
+      continue;
+    }
+    const std::size_t close = markup.find('>', i);
+    if (close == std::string::npos) throw Error(ErrorCode::InvalidArgument, "markup: unclosed '<' at byte " + std::to_string(i));
+    const std::string tag = markup.substr(i + 1, close - i - 1);
+    i = close + 1;
+    if (!tag.empty() && tag[0] == '/') {
+      const std::string name = tag.substr(1);
+      if (stack.empty() || stack.back().tag != name)
+        throw Error(ErrorCode::InvalidArgument, "markup: </" + name + "> does not close the open tag");
+      spans.push_back({stack.back().start, text.size(), stack.back().style});
+      stack.pop_back();
+      continue;
+    }
+    const std::size_t eq = tag.find('=');
+    const std::string name = tag.substr(0, eq);
+    const std::string value = eq == std::string::npos ? "" : tag.substr(eq + 1);
+    TextStyle s = current();
+    // Bold and italic ask fontconfig for the same family with that style.
+    auto restyle = [&](const char* what) {
+      const std::string family = s.fonts.empty() ? "DejaVu Sans" : s.fonts.front();
+      std::string fam = family;
+      if (family.find('/') != std::string::npos) {
+        try {
+          fam = Font::open(family).family_name();
+        } catch (const Error&) {
+        }
+      }
+      s.fonts.insert(s.fonts.begin(), fam + ":" + what);
+    };
+    if (name == "b") restyle("bold");
+    else if (name == "i") restyle("italic");
+    else if (name == "u") s.underline = true;
+    else if (name == "s") s.strikethrough = true;
+    else if (name == "color") s.color = parse_color(value);
+    else if (name == "size") {
+      s.size_px = parse_number("<size>", value);
+      if (!(s.size_px > 0)) throw Error(ErrorCode::InvalidArgument, "markup: <size=...> must be positive");
+    } else if (name == "font") s.fonts.insert(s.fonts.begin(), value);
+    else throw Error(ErrorCode::InvalidArgument, "markup: unknown tag <" + tag + "> (b, i, u, s, color=, size=, font=)");
+    stack.push_back({name, text.size(), s});
+  }
+  if (!stack.empty()) throw Error(ErrorCode::InvalidArgument, "markup: <" + stack.back().tag + "> is not closed");
+  return text;
+}
+
+Paragraph layout_from_cli(FontCollection& fonts, const LayoutCli& options, const FontChoice& font_choice,
+                          double size_px, const std::vector<Feature>& features, const std::string& text) {
+  ParagraphStyle style = options.style;
+  style.default_style.size_px = size_px;
+  style.default_style.features = features;
+  for (const std::string& f : options.fonts)
+    style.default_style.fonts.push_back(font_choice.face_index && &f == &options.fonts.front()
+                                            ? f + "#" + std::to_string(font_choice.face_index)
+                                            : f);
+  if (style.default_style.fonts.empty()) style.default_style.fonts.push_back(default_font_path(CURVETEXT_BUILD_FONT_DIR));
+  if (font_choice.variations) style.default_style.variations = parse_variations(*font_choice.variations);
+  std::vector<TextSpan> spans;
+  std::string plain = text;
+  if (options.markup) plain = parse_markup(text, style.default_style, spans);
+  return Paragraph::layout(fonts, plain, spans, style);
+}
+
+int run_layout(const std::vector<std::string>& arguments) {
+  FontChoice font_choice;
+  LayoutCli options;
+  std::optional<std::string> text, text_file, features;
+  std::optional<double> size;
+  bool json = false;
+  Args args(arguments);
+  while (args.next()) {
+    const std::string& a = args.option();
+    if (options.parse(args)) continue;
+    if (font_choice.parse(args)) continue;
+    if (a == "--size") size = parse_number(a, args.value());
+    else if (a == "--text") text = args.value();
+    else if (a == "--text-file") text_file = args.value();
+    else if (a == "--features") features = args.value();
+    else if (a == "--json") json = true;
+    else throw UsageError{"unknown option " + a};
+  }
+  if (!size) throw UsageError{"--size is required"};
+  if (text.has_value() == text_file.has_value()) throw UsageError{"give exactly one of --text and --text-file"};
+  if (!json) throw UsageError{"layout prints JSON only: add --json"};
+  if (text_file) text = read_text_file(*text_file);
+  FontCollection fonts(default_font_path(CURVETEXT_BUILD_FONT_DIR));
+  const Paragraph p =
+      layout_from_cli(fonts, options, font_choice, *size, features ? parse_features(*features) : std::vector<Feature>{},
+                      *text);
+  std::string out = "{\"text_bytes\":" + std::to_string(p.text().size());
+  const Rect logical = p.logical_bounds();
+  const Rect ink = p.ink_bounds();
+  out += ",\"logical\":[" + num(logical.x) + "," + num(logical.y) + "," + num(logical.width) + "," + num(logical.height) + "]";
+  out += ",\"ink\":[" + num(ink.x) + "," + num(ink.y) + "," + num(ink.width) + "," + num(ink.height) + "]";
+  out += ",\"lines\":[";
+  for (std::size_t k = 0; k < p.lines().size(); ++k) {
+    const LayoutLine& l = p.lines()[k];
+    if (k) out += ",";
+    out += "{\"start\":" + std::to_string(l.start) + ",\"end\":" + std::to_string(l.end) + ",\"baseline\":" +
+           num(l.baseline) + ",\"top\":" + num(l.top) + ",\"height\":" + num(l.height) + ",\"x\":" + num(l.x) +
+           ",\"width\":" + num(l.width);
+    if (l.ellipsized) out += ",\"ellipsized\":true";
+    if (l.hyphenated) out += ",\"hyphenated\":true";
+    out += ",\"runs\":[";
+    for (std::size_t r = 0; r < l.runs.size(); ++r) {
+      const GlyphRun& run = l.runs[r];
+      if (r) out += ",";
+      out += "{\"font\":";
+      json_string(out, run.font->path());
+      if (run.font->face_index()) out += ",\"face_index\":" + std::to_string(run.font->face_index());
+      out += ",\"size\":" + num(run.size_px) + ",\"direction\":\"" + (run.rtl ? "rtl" : "ltr") + "\",\"glyphs\":[";
+      for (std::size_t g = 0; g < run.glyphs.size(); ++g) {
+        const PositionedGlyph& pg = run.glyphs[g];
+        if (g) out += ",";
+        out += "{\"id\":" + std::to_string(pg.id) + ",\"cluster\":" + std::to_string(pg.cluster) + ",\"x\":" +
+               num(pg.x) + ",\"y\":" + num(pg.y) + "}";
+      }
+      out += "]}";
+    }
+    out += "]}";
+  }
+  out += "]}\n";
+  std::fputs(out.c_str(), stdout);
+  return 0;
+}
+
+}  // namespace curvetext::cli
