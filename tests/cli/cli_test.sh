@@ -112,5 +112,64 @@ expect_error "unwritable output" 1 "nodir" -- render --size 20 --text hi -o "$tm
 # No GL device: libglvnd finds no EGL vendor library.
 __EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent expect_error "no EGL display" 1 "EGL" -- render --size 20 --text hi -o "$tmp/out.png"
 
+# --- shape: NURBS JSON and SVG input --------------------------------------------
+shapes="$(dirname "$0")/../fixtures/shapes"
+if timeout 120 "$CURVETEXT" shape --input "$shapes/pentagram-evenodd.json" -o "$tmp/star.png" 2>"$tmp/stderr" &&
+   [ "$(png_size "$tmp/star.png")" = "240 240" ]; then
+  ok "shape: even-odd pentagram (JSON)"
+else
+  bad "shape: even-odd pentagram: $(cat "$tmp/stderr")"
+fi
+if timeout 120 "$CURVETEXT" shape --input "$shapes/ellipse-arc.svg" --size 100x50 --aa none -o "$tmp/ellipse.png" \
+     2>"$tmp/stderr" && [ "$(png_size "$tmp/ellipse.png")" = "100 50" ]; then
+  ok "shape: SVG arcs with --size"
+else
+  bad "shape: SVG arcs with --size: $(cat "$tmp/stderr")"
+fi
+printf '{"shapes": [{"contours": [[{"nurbs": {"degree": 2, "points": [[0,0],[1,1],[2,0]], "knots": [0,1,0,0,1,1]}}]]}]}' >"$tmp/knots.json"
+printf '{"shapes": [{"contours": [[{"bezier": {"points": [[0,0],[1,1],[2,0]], "weights": [1,-1,1]}}]]}]}' >"$tmp/weight.json"
+printf '{"shapes": [{"contours": [[{"line": [[0,0],[1e300,0],[1,1]]}]]}]}' >"$tmp/huge.json"
+printf '{"shapes": [\n  {"contours": [[{"line": [[0,0],[1,0]]}]],}\n]}' >"$tmp/syntax.json"
+printf '<svg><path d="M0 0 L10 0 L nan 5 Z"/></svg>' >"$tmp/nan.svg"
+printf '<svg><path d="M0 0 A5 5 0 0 1 1e999 0 Z"/></svg>' >"$tmp/inf.svg"
+printf 'M0 0 L1 1' >"$tmp/shape.txt"
+expect_error "shape: bad knot vector" 1 "non-decreasing" -- shape --input "$tmp/knots.json" -o "$tmp/out.png"
+expect_error "shape: negative weight" 1 "weight" -- shape --input "$tmp/weight.json" -o "$tmp/out.png"
+expect_error "shape: huge coordinate" 1 "larger than" -- shape --input "$tmp/huge.json" -o "$tmp/out.png"
+expect_error "shape: JSON syntax" 1 "line 2, column" -- shape --input "$tmp/syntax.json" -o "$tmp/out.png"
+expect_error "shape: NaN in SVG path" 1 "expected a number" -- shape --input "$tmp/nan.svg" -o "$tmp/out.png"
+expect_error "shape: inf in SVG arc" 1 "out of range" -- shape --input "$tmp/inf.svg" -o "$tmp/out.png"
+expect_error "shape: unknown extension" 1 ".json or .svg" -- shape --input "$tmp/shape.txt" -o "$tmp/out.png"
+expect_error "shape: missing file" 1 "nonexistent.svg" -- shape --input "$tmp/nonexistent.svg" -o "$tmp/out.png"
+expect_error "shape: bad size" 2 "--size" -- shape --input "$shapes/ellipse-arc.svg" --size 100 -o "$tmp/out.png"
+expect_error "shape: image too large" 1 "image" -- shape --input "$shapes/ellipse-arc.svg" --scale 1000 -o "$tmp/out.png"
+expect_error "shape: no input" 2 "--input" -- shape -o "$tmp/out.png"
+
+# --- paragraph layout (render --width ..., layout --json) -------------------------
+if timeout 60 "$CURVETEXT" layout --size 20 --width 150 --text "Hello world, a paragraph that wraps" --json >"$tmp/layout.json" 2>"$tmp/stderr" &&
+   python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); l=d["lines"]; assert len(l)>=2 and l[0]["start"]==0 and l[-1]["end"]==35 and l[1]["baseline"]>l[0]["baseline"] and l[0]["runs"][0]["glyphs"][0]["cluster"]==0' "$tmp/layout.json"; then
+  ok "layout --json wraps"
+else
+  bad "layout --json: $(cat "$tmp/stderr")"
+fi
+if timeout 60 "$CURVETEXT" render --size 20 --width 150 --align center --markup --text "Hello <b>bold</b> <color=red>world</color> wraps here" -o "$tmp/para.png" 2>"$tmp/stderr" &&
+   [ "$(png_size "$tmp/para.png" | cut -d' ' -f1)" = "182" ]; then
+  ok "render --width (image width = width + 2 margins)"
+else
+  bad "render --width: $(cat "$tmp/stderr") $(png_size "$tmp/para.png" 2>/dev/null)"
+fi
+expect_error "layout: negative width" 2 "--width" -- layout --size 20 --width -3 --text hi --json
+expect_error "layout: width not a number" 2 "--width" -- layout --size 20 --width wide --text hi --json
+expect_error "layout: bad align" 2 "--align" -- layout --size 20 --align sideways --text hi --json
+expect_error "layout: bad ellipsis" 2 "--ellipsis" -- layout --size 20 --ellipsis both --text hi --json
+expect_error "layout: bad direction" 2 "--direction" -- layout --size 20 --direction up --text hi --json
+expect_error "layout: negative max lines" 2 "--max-lines" -- layout --size 20 --max-lines -1 --text hi --json
+expect_error "layout: no --json" 2 "json" -- layout --size 20 --text hi
+expect_error "layout: invalid UTF-8" 1 "UTF-8" -- layout --size 20 --text-file "$tmp/badutf8.txt" --json
+expect_error "layout: missing fallback font" 1 "nonexistent" -- layout --size 20 --font "$tmp/nonexistent.ttf" --text hi --json
+expect_error "render: bad markup" 1 "markup" -- render --size 20 --width 100 --markup --text "<b>open" -o "$tmp/out.png"
+expect_error "render: size NaN with width" 1 "size" -- render --size nan --width 100 --text hi -o "$tmp/out.png"
+expect_error "render: paragraph image too large" 1 "image" -- render --size 20 --width 100000 --text hi -o "$tmp/out.png"
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -49,5 +49,7 @@ struct FontChoice {
 int run_render(const std::vector<std::string>& args);
 int run_check(const std::vector<std::string>& args);
 int run_mesh(const std::vector<std::string>& args);
+int run_layout(const std::vector<std::string>& args);
+int run_shape(const std::vector<std::string>& args);
 
 }  // namespace curvetext::cli

@@ -16,10 +16,19 @@ constexpr const char* kUsage =
     "                        -o OUT.png [--margin PX] [--aa none|curves|full] [--curve exact|paper]\n"
     "                        [--variations wght=700,...] [--features \"kern,-liga\"]\n"
     "                        [--fg COLOR] [--bg COLOR]\n"
+    "       render paragraph options: --width PX --align left|right|center|justify|start|end\n"
+    "                        --line-height X|Npx --max-lines N --ellipsis none|start|middle|end\n"
+    "                        --direction auto|ltr|rtl --language BCP47 --indent PX --tab-stops PX,...\n"
+    "                        --font repeated (fallback order) --markup (<b> <i> <u> <s> <color=C>\n"
+    "                        <size=PX> <font=NAME>, &lt; &gt; &amp;)\n"
+    "       curvetext layout [--font FILE]... --size PX [--width PX] (--text UTF8 | --text-file FILE)\n"
+    "                        [paragraph options] --json\n"
     "       curvetext check  [--font FILE] [--face-index N] [--variations ...] [--size PX]\n"
     "                        [--max-glyphs N] [--json]\n"
     "       curvetext mesh   [--font FILE] [--face-index N] [--variations ...] (--glyph ID | --char C)\n"
     "                        -o MESH.svg\n"
+    "       curvetext shape  --input FILE(.json|.svg) -o OUT.png [--size WxH] [--scale PX_PER_UNIT]\n"
+    "                        [--aa none|curves|full] [--curve exact|paper] [--fg COLOR] [--bg COLOR]\n"
     "       curvetext --help | --version\n"
     "COLOR is #rgb, #rrggbb, #rrggbbaa or black, white, red, green, blue, transparent.\n"
     "Without --font the default font (DejaVu Sans) is used.\n";
@@ -44,6 +53,8 @@ int main(int argc, char** argv) {
     if (command == "render") return run_render(rest);
     if (command == "check") return run_check(rest);
     if (command == "mesh") return run_mesh(rest);
+    if (command == "layout") return run_layout(rest);
+    if (command == "shape") return run_shape(rest);
     throw UsageError{"unknown command '" + command + "'"};
   } catch (const UsageError& e) {
     std::fprintf(stderr, "curvetext: %s\n%s", e.message.c_str(), kUsage);

@@ -3,11 +3,18 @@
 #include <sstream>
 
 #include "cli.hpp"
+#include "curvetext/default_font.hpp"
 #include "curvetext/error.hpp"
 #include "curvetext/headless.hpp"
 #include "curvetext/image.hpp"
 #include "curvetext/renderer.hpp"
+#include "curvetext/paragraph_image.hpp"
 #include "curvetext/text_image.hpp"
+#include "layout_options.hpp"
+
+#ifndef CURVETEXT_BUILD_FONT_DIR
+#define CURVETEXT_BUILD_FONT_DIR ""
+#endif
 
 namespace curvetext::cli {
 
@@ -32,10 +39,12 @@ int run_render(const std::vector<std::string>& arguments) {
   std::optional<std::string> text, text_file, output, features;
   std::optional<double> size;
   TextImageOptions options;
+  LayoutCli paragraph;
 
   Args args(arguments);
   while (args.next()) {
     const std::string& a = args.option();
+    if (paragraph.parse(args)) continue;
     if (font_choice.parse(args)) continue;
     if (a == "--size") size = parse_number(a, args.value());
     else if (a == "--text") text = args.value();
@@ -55,6 +64,29 @@ int run_render(const std::vector<std::string>& arguments) {
   options.size_px = *size;
   if (text_file) text = read_text_file(*text_file);
   if (features) options.shaping.features = parse_features(*features);
+
+  if (paragraph.fonts.size() == 1) font_choice.path = paragraph.fonts.front();
+
+  if (paragraph.used) {
+    // Paragraph layout (--width, --align, fallback fonts, markup, ...): lines
+    // advance by A - D + line gap; drawn through the same renderer.
+    FontCollection fonts(default_font_path(CURVETEXT_BUILD_FONT_DIR));
+    if (text->empty()) throw Error(ErrorCode::InvalidText, "the text is empty");
+    // --fg colours text outside markup colour spans.
+    paragraph.style.default_style.color = options.foreground;
+    const Paragraph p = layout_from_cli(fonts, paragraph, font_choice, options.size_px, options.shaping.features, *text);
+    ParagraphImageOptions image_options;
+    image_options.margin_px = options.margin_px;
+    image_options.background = options.background;
+    image_options.antialiasing = options.antialiasing;
+    image_options.curve_mode = options.curve_mode;
+    paragraph_image_size(p, image_options);  // size errors before needing a GL device
+    HeadlessContext context = HeadlessContext::create();
+    Renderer renderer;
+    GlyphCache cache;
+    write_png(render_paragraph_image(renderer, cache, p, image_options), *output);
+    return 0;
+  }
 
   const Font font = font_choice.open();
   // Everything that can be checked without a GL device is checked first.
