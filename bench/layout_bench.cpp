@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -158,6 +159,13 @@ int main(int argc, char** argv) {
   curvetext::FontCollection fonts;
   PangoSetup pango;
   std::size_t sink = 0;
+  // --profile N: N rounds of curvetext only (for callgrind / perf).
+  if (argc > 2 && std::strcmp(argv[1], "--profile") == 0) {
+    for (int k = std::atoi(argv[2]); k > 0; --k)
+      for (const std::string& t : texts) sink += curvetext::Paragraph::layout(fonts, t, {}, style()).lines().size();
+    std::printf("[%zu]\n", sink);
+    return 0;
+  }
   const double ours = paragraphs_per_second(
       texts, [&](const std::string& t) { sink += curvetext::Paragraph::layout(fonts, t, {}, style()).lines().size(); });
   const double theirs = paragraphs_per_second(texts, [&](const std::string& t) {
