@@ -19,6 +19,8 @@ packages=(
   # fonts: the default font (DejaVu Sans) and the test corpus
   fonts-dejavu-core fonts-dejavu-extra fonts-noto-core fonts-noto-cjk fonts-urw-base35
   fonts-inter-variable
+  # a colour bitmap (CBDT) emoji face: layout must skip it in fallback
+  fonts-noto-color-emoji
 )
 
 missing=()

@@ -45,6 +45,27 @@ BidiParagraph resolve_bidi(std::u32string_view paragraph, BaseDirection directio
     result.paragraph_level = direction == BaseDirection::Rtl ? 1 : 0;
     return result;
   }
+  // Fast path: a paragraph that is not forced right-to-left and has no
+  // R, AL, AN or explicit embedding/isolate is all at level 0 (P2-P3 give
+  // level 0; W7 turns EN into L after sos L; neutrals between L and sos/eos L
+  // resolve to L). Most text is like this, and FriBiDi's full pass is a large
+  // part of laying out a Latin paragraph.
+  if (direction != BaseDirection::Rtl) {
+    bool simple = true;
+    for (const char32_t c : paragraph) {
+      if (c < 0x80) continue;  // ASCII is L, EN, ES, ET, CS, B, S, WS, ON or BN
+      const FriBidiCharType t = fribidi_get_bidi_type(static_cast<FriBidiChar>(c));
+      if (FRIBIDI_IS_RTL(t) || t == FRIBIDI_TYPE_AN || FRIBIDI_IS_EXPLICIT(t) || FRIBIDI_IS_ISOLATE(t)) {
+        simple = false;
+        break;
+      }
+    }
+    if (simple) {
+      result.paragraph_level = 0;
+      result.levels.assign(paragraph.size(), 0);
+      return result;
+    }
+  }
   const std::vector<FriBidiCharType> types = bidi_types(paragraph);
   std::vector<FriBidiBracketType> brackets(paragraph.size());
   fribidi_get_bracket_types(reinterpret_cast<const FriBidiChar*>(paragraph.data()), n, types.data(), brackets.data());
@@ -77,6 +98,10 @@ std::vector<std::uint8_t> line_levels(std::u32string_view paragraph, const BidiP
   start = std::min(start, end);
   std::vector<std::uint8_t> levels(bidi.levels.begin() + static_cast<std::ptrdiff_t>(start),
                                    bidi.levels.begin() + static_cast<std::ptrdiff_t>(end));
+  // L1 only moves characters to the paragraph level: nothing to do when the
+  // paragraph and every level on the line are 0.
+  if (bidi.paragraph_level == 0 && std::all_of(levels.begin(), levels.end(), [](std::uint8_t l) { return l == 0; }))
+    return levels;
   const std::vector<FriBidiCharType> types = bidi_types(paragraph.substr(start, end - start));
   const auto para = static_cast<std::uint8_t>(bidi.paragraph_level);
   // L1, scanning backwards: `trailing` is true while every character since

@@ -111,6 +111,27 @@ std::shared_ptr<const Font> FontCollection::resolve(const std::string& name, con
   return open_file(found->second.first, found->second.second, variations, true);
 }
 
+bool FontCollection::has_glyph(const Font& font, char32_t c) {
+  if (c > 0xFFFF) return font.glyph_for_codepoint(c) != 0;
+  // The same face is asked about many characters in a row: skip the map.
+  if (&font != last_font_) {
+    last_coverage_ = &coverage_[&font];  // element addresses survive rehashing
+    last_font_ = &font;
+  }
+  Coverage& cov = *last_coverage_;
+  if (cov.known.empty()) {
+    cov.known.assign(0x10000 / 64, 0);
+    cov.has.assign(0x10000 / 64, 0);
+  }
+  const std::size_t word = c / 64;
+  const std::uint64_t bit = std::uint64_t{1} << (c % 64);
+  if (!(cov.known[word] & bit)) {
+    cov.known[word] |= bit;
+    if (font.glyph_for_codepoint(c) != 0) cov.has[word] |= bit;
+  }
+  return (cov.has[word] & bit) != 0;
+}
+
 std::shared_ptr<const Font> FontCollection::fallback(char32_t c, const std::string& language,
                                                      const std::vector<Variation>& variations) {
   const std::string key = std::to_string(static_cast<unsigned long>(c)) + "|" + language + "|" + variations_key(variations);

@@ -27,11 +27,22 @@ bool is_paragraph_separator(char32_t c) {
   return c == U'\n' || c == U'\r' || c == 0x2029 || c == 0x85 || (c >= 0x1C && c <= 0x1E);
 }
 
-bool is_space(char32_t c) {
-  return hb_unicode_general_category(hb_unicode_funcs_get_default(), c) == HB_UNICODE_GENERAL_CATEGORY_SPACE_SEPARATOR;
+hb_unicode_funcs_t* unicode_funcs() {
+  static hb_unicode_funcs_t* const funcs = hb_unicode_funcs_get_default();
+  return funcs;
 }
 
-bool is_whitespace(char32_t c) { return is_space(c) || c == U'\t' || c == 0x2028 || is_paragraph_separator(c); }
+// The character tests below run several times per character; ASCII, most of
+// the text in many paragraphs, is answered without a Unicode table lookup.
+bool is_space(char32_t c) {
+  if (c < 0x80) return c == U' ';
+  return hb_unicode_general_category(unicode_funcs(), c) == HB_UNICODE_GENERAL_CATEGORY_SPACE_SEPARATOR;
+}
+
+bool is_whitespace(char32_t c) {
+  if (c < 0x80) return c == U' ' || c == U'\t' || c == U'\n' || c == U'\r' || (c >= 0x1C && c <= 0x1E);
+  return is_space(c) || c == 0x2028 || is_paragraph_separator(c);
+}
 
 // Characters that need no glyph of their own when choosing a font.
 bool ignorable_for_coverage(char32_t c) {
@@ -40,7 +51,10 @@ bool ignorable_for_coverage(char32_t c) {
          c == 0x034F;
 }
 
-hb_script_t script_of(char32_t c) { return hb_unicode_script(hb_unicode_funcs_get_default(), c); }
+hb_script_t script_of(char32_t c) {
+  if (c < 0x80) return ((c | 0x20) >= U'a' && (c | 0x20) <= U'z') ? HB_SCRIPT_LATIN : HB_SCRIPT_COMMON;
+  return hb_unicode_script(unicode_funcs(), c);
+}
 
 std::string number(double v) {
   char buf[32];
@@ -234,7 +248,7 @@ struct ParagraphBuilder {
 
   bool covers(const Font& font, std::size_t a, std::size_t b) const {
     for (std::size_t i = a; i < b; ++i)
-      if (!ignorable_for_coverage(para[i]) && font.glyph_for_codepoint(para[i]) == 0) return false;
+      if (!ignorable_for_coverage(para[i]) && !fonts.has_glyph(font, para[i])) return false;
     return true;
   }
 
@@ -254,8 +268,9 @@ struct ParagraphBuilder {
       else script[i] = next;
     }
     // A font per grapheme cluster.
-    std::vector<const Font*> font_of(n, nullptr);
-    std::vector<std::shared_ptr<const Font>> keep(n);
+    // Fonts by index (a few per paragraph), not a shared_ptr per code point.
+    std::vector<std::shared_ptr<const Font>> used;
+    std::vector<std::uint32_t> keep(n, 0);
     std::shared_ptr<const Font> previous;
     std::size_t previous_style = static_cast<std::size_t>(-1);
     for (std::size_t a = 0; a < n;) {
@@ -277,8 +292,11 @@ struct ParagraphBuilder {
         auto f = fonts.fallback(para[c], r.language_tag, style(si).variations);
         chosen = f && covers(*f, a, b) ? f : (f ? f : r.chain.front());
       }
-      for (std::size_t i = a; i < b; ++i) keep[i] = chosen;
-      previous = chosen;
+      std::size_t index = 0;
+      while (index < used.size() && used[index] != chosen) ++index;
+      if (index == used.size()) used.push_back(chosen);
+      for (std::size_t i = a; i < b; ++i) keep[i] = static_cast<std::uint32_t>(index);
+      previous = std::move(chosen);
       previous_style = si;
       a = b;
     }
@@ -294,7 +312,7 @@ struct ParagraphBuilder {
       it.end = b;
       it.level = bidi.levels[a];
       it.script = script[a];
-      it.font = keep[a];
+      it.font = used[keep[a]];
       it.style = style_of[p0 + a];
       it.glyphs = shape(a, b, it.level, it.script, *it.font, it.style);
       for (std::size_t i = a; i < b; ++i) item_of[i] = items.size();
@@ -364,27 +382,51 @@ struct ParagraphBuilder {
   // --- Line assembly -----------------------------------------------------------
 
   // Glyphs of item `it` for [a, b) (inside the item), sliced or re-shaped.
+  // Index of the first glyph (in HarfBuzz order) whose cluster is logically
+  // at or after code point c. HarfBuzz's default cluster level keeps clusters
+  // monotonic: increasing for LTR, decreasing for RTL; so the glyphs of any
+  // code point range are contiguous and found by binary search, not by a
+  // scan of the whole item per line.
+  static std::size_t glyph_bound(const Item& it, std::size_t c) {
+    const auto& g = it.glyphs;
+    if (it.level % 2 == 0)
+      return static_cast<std::size_t>(
+          std::partition_point(g.begin(), g.end(), [c](const Glyph& x) { return x.cluster < c; }) - g.begin());
+    // RTL: glyphs of clusters >= c come first; their end bounds [.., c).
+    return static_cast<std::size_t>(
+        std::partition_point(g.begin(), g.end(), [c](const Glyph& x) { return x.cluster >= c; }) - g.begin());
+  }
+
+  // Is a cut of item `it` before code point c (start < c < end) safe: c starts
+  // a cluster and HarfBuzz did not flag that cluster unsafe to break.
+  static bool safe_cut(const Item& it, std::size_t c) {
+    const std::size_t k = glyph_bound(it, c);
+    const bool rtl = it.level % 2 == 1;
+    // The glyphs of cluster c: from k on (LTR) or just before k (RTL).
+    bool found = false;
+    if (!rtl) {
+      for (std::size_t i = k; i < it.glyphs.size() && it.glyphs[i].cluster == c; ++i) {
+        found = true;
+        if (it.glyphs[i].unsafe) return false;
+      }
+    } else {
+      for (std::size_t i = k; i-- > 0 && it.glyphs[i].cluster == c;) {
+        found = true;
+        if (it.glyphs[i].unsafe) return false;
+      }
+    }
+    return found;  // no glyph starts at c: the cut falls inside a cluster
+  }
+
   std::vector<Glyph> slice(const Item& it, std::size_t a, std::size_t b, std::uint8_t level) const {
     if (a == it.start && b == it.end && level == it.level) return it.glyphs;
-    bool safe = level == it.level;
-    for (const Glyph& g : it.glyphs) {
-      if (!g.unsafe) continue;
-      if ((a > it.start && g.cluster == a) || (b < it.end && g.cluster == b)) safe = false;
-    }
-    // Clusters can merge several code points: a cut inside one is not safe.
-    if (safe) {
-      bool start_found = a == it.start, end_found = b == it.end;
-      for (const Glyph& g : it.glyphs) {
-        start_found = start_found || g.cluster == a;
-        end_found = end_found || g.cluster == b;
-      }
-      safe = start_found && end_found;
-    }
+    const bool safe =
+        level == it.level && (a == it.start || safe_cut(it, a)) && (b == it.end || safe_cut(it, b));
     if (!safe) return shape(a, b, level, it.script, *it.font, it.style);
-    std::vector<Glyph> result;
-    for (const Glyph& g : it.glyphs)
-      if (g.cluster >= a && g.cluster < b) result.push_back(g);
-    return result;
+    std::size_t lo = glyph_bound(it, a), hi = glyph_bound(it, b);
+    if (lo > hi) std::swap(lo, hi);
+    return std::vector<Glyph>(it.glyphs.begin() + static_cast<std::ptrdiff_t>(lo),
+                              it.glyphs.begin() + static_cast<std::ptrdiff_t>(hi));
   }
 
   // Appends pieces for paragraph code points [a, b) with line levels `lv`
@@ -553,6 +595,8 @@ struct ParagraphBuilder {
       run.x = pen;
       // Cluster boxes for hit testing.
       std::vector<std::pair<std::uint32_t, std::pair<double, double>>> clusters;  // cluster -> [left, right)
+      clusters.reserve(p.glyphs.size());
+      run.glyphs.reserve(p.glyphs.size());
       for (const Glyph& g : p.glyphs) {
         PositionedGlyph pg;
         pg.id = g.id;
@@ -584,28 +628,31 @@ struct ParagraphBuilder {
   void add_boxes(std::vector<Paragraph::ClusterBox>& boxes, const Piece& p,
                  const std::vector<std::pair<std::uint32_t, std::pair<double, double>>>& clusters) const {
     const bool rtl = p.level % 2 == 1;
-    // Logical extent of each cluster: up to the next cluster start in logical order.
-    std::vector<std::uint32_t> starts;
-    for (const auto& c : clusters) starts.push_back(c.first);
-    std::sort(starts.begin(), starts.end());
-    starts.erase(std::unique(starts.begin(), starts.end()), starts.end());
-    for (const auto& [cluster, span] : clusters) {
-      const auto it = std::upper_bound(starts.begin(), starts.end(), cluster);
-      const std::size_t end = it == starts.end() ? p.end : *it;
+    // Logical extent of each cluster: up to the next cluster start in logical
+    // order, which is the next entry (LTR) or the previous one (RTL) because
+    // HarfBuzz keeps clusters monotonic in the run's direction.
+    boxes.reserve(boxes.size() + clusters.size());
+    for (std::size_t k = 0; k < clusters.size(); ++k) {
+      const auto& [cluster, span] = clusters[k];
+      const std::size_t end = rtl ? (k > 0 ? clusters[k - 1].first : p.end)
+                                  : (k + 1 < clusters.size() ? clusters[k + 1].first : p.end);
       // Graphemes inside the cluster (a ligature "fi" holds two) share its width.
-      std::vector<std::size_t> gs;
-      for (std::size_t i = cluster; i < end; ++i)
-        if (i == cluster || grapheme[i]) gs.push_back(i);
-      const double w = (span.second - span.first) / static_cast<double>(gs.size());
-      for (std::size_t k = 0; k < gs.size(); ++k) {
+      std::size_t count = 1;
+      for (std::size_t i = cluster + 1; i < end; ++i) count += grapheme[i] ? 1 : 0;
+      const double w = (span.second - span.first) / static_cast<double>(count);
+      std::size_t nth = 0;
+      for (std::size_t g = cluster; g < end; ++nth) {
+        std::size_t next = g + 1;
+        while (next < end && !grapheme[next]) ++next;
         Paragraph::ClusterBox b;
-        b.start = out_bytes(gs[k]);
-        b.end = out_bytes(k + 1 < gs.size() ? gs[k + 1] : end);
-        const std::size_t slot = rtl ? gs.size() - 1 - k : k;
+        b.start = out_bytes(g);
+        b.end = out_bytes(next);
+        const std::size_t slot = rtl ? count - 1 - nth : nth;
         b.left = span.first + w * static_cast<double>(slot);
         b.right = b.left + w;
         b.rtl = rtl;
         boxes.push_back(b);
+        g = next;
       }
     }
   }
@@ -840,9 +887,16 @@ struct ParagraphBuilder {
   void run(std::string_view text, const std::vector<TextSpan>& spans) {
     // Code points and their byte offsets.
     std::size_t off = 0;
+    cps.reserve(text.size());
+    bytes.reserve(text.size() + 1);
+    detail::Utf8Problem problem;
     while (off < text.size()) {
-      char32_t c = 0;
-      detail::Utf8Problem problem;
+      char32_t c = static_cast<unsigned char>(text[off]);
+      if (c < 0x80) {  // ASCII without the decoder's bookkeeping
+        cps.push_back(c);
+        bytes.push_back(off++);
+        continue;
+      }
       const std::size_t len = detail::decode_utf8_at(text, off, c, problem);
       if (len == 0)
         throw Error(ErrorCode::InvalidText,

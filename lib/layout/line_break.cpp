@@ -28,6 +28,9 @@ bool is_mark(char32_t c) {
          g == HB_UNICODE_GENERAL_CATEGORY_ENCLOSING_MARK;
 }
 
+// Grapheme_Cluster_Break=Control, approximately: C0/C1 controls and the line
+// and paragraph separators (so a paragraph never starts inside a cluster).
+bool is_control(char32_t c) { return c < 0x20 || (c >= 0x7F && c <= 0x9F) || c == 0x2028 || c == 0x2029; }
 bool is_regional_indicator(char32_t c) { return c >= 0x1F1E6 && c <= 0x1F1FF; }
 bool is_emoji_modifier(char32_t c) { return c >= 0x1F3FB && c <= 0x1F3FF; }
 bool is_variation_selector(char32_t c) {
@@ -95,9 +98,15 @@ std::vector<bool> grapheme_starts(std::u32string_view text) {
     const char32_t a = text[i - 1];
     const char32_t b = text[i];
     ri_run = is_regional_indicator(a) ? ri_run + 1 : 0;
+    // Fast path: below U+0300 nothing extends, joins or is Hangul, so only CR
+    // LF and GB11 (ZWJ before a pictograph such as U+00A9) can join.
+    if (b < 0x300 && a != 0x200D) {
+      starts[i] = !(a == U'\r' && b == U'\n');
+      continue;
+    }
     bool join = false;
     if (a == U'\r' && b == U'\n') join = true;                                       // GB3
-    else if (a == U'\r' || a == U'\n' || b == U'\r' || b == U'\n') join = false;     // GB4-5
+    else if (is_control(a) || is_control(b)) join = false;                           // GB4-5
     else if (is_mark(b) || b == 0x200D || is_variation_selector(b) || is_emoji_modifier(b)) join = true;  // GB9, 9a
     else if (a == 0x200D && is_pictographic(b)) join = true;                         // GB11
     else if (is_regional_indicator(a) && is_regional_indicator(b)) join = ri_run % 2 == 1;  // GB12-13

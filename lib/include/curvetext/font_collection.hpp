@@ -13,9 +13,11 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "curvetext/font.hpp"
@@ -45,6 +47,13 @@ class FontCollection {
   std::shared_ptr<const Font> fallback(char32_t c, const std::string& language,
                                        const std::vector<Variation>& variations = {});
 
+  // font.glyph_for_codepoint(c) != 0, remembered per face for the Basic
+  // Multilingual Plane (two 8 KiB bit sets per face, filled as characters
+  // are asked for): choosing a font per character is then a bit test, not a
+  // cmap lookup. `font` must outlive the collection's use of it (faces handed
+  // out by the collection do).
+  bool has_glyph(const Font& font, char32_t c);
+
   struct Stats {
     std::size_t fontconfig_queries = 0;
     std::size_t fallback_hits = 0;  // answered from the cache
@@ -60,6 +69,12 @@ class FontCollection {
   std::map<std::string, std::pair<std::string, int>> by_pattern_;  // fontconfig pattern -> file, index
   std::map<std::string, std::shared_ptr<const Font>> fallback_;    // codepoint|lang|variations -> face or null
   std::vector<std::shared_ptr<const Font>> fallback_faces_;        // order of first use
+  struct Coverage {
+    std::vector<std::uint64_t> known, has;  // BMP bit sets
+  };
+  std::unordered_map<const Font*, Coverage> coverage_;
+  const Font* last_font_ = nullptr;
+  Coverage* last_coverage_ = nullptr;
   Stats stats_;
 };
 
