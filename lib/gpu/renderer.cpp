@@ -94,7 +94,7 @@ void compile(const Shader& shader, GLenum type, const char* source, bool gles) {
 struct Renderer::Impl {
   GLuint program = 0;
   GLint a_pos = -1, a_coef = -1, a_info = -1, a_fade = -1;
-  GLint u_transform = -1, u_viewport = -1, u_px_per_unit = -1, u_fringe_px = -1, u_color = -1,
+  GLint u_transform = -1, u_viewport = -1, u_fringe_px = -1, u_color = -1,
         u_aa = -1, u_curve_mode = -1;
   GLuint framebuffer = 0;
   GLuint texture = 0;
@@ -152,7 +152,6 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
   r.a_fade = 3;
   r.u_transform = glGetUniformLocation(r.program, "u_transform");
   r.u_viewport = glGetUniformLocation(r.program, "u_viewport");
-  r.u_px_per_unit = glGetUniformLocation(r.program, "u_px_per_unit");
   r.u_fringe_px = glGetUniformLocation(r.program, "u_fringe_px");
   r.u_color = glGetUniformLocation(r.program, "u_color");
   r.u_aa = glGetUniformLocation(r.program, "u_aa");
@@ -236,15 +235,18 @@ void Renderer::draw(const DrawBatch& batch, const Placement& placement, const Dr
     vh = static_cast<float>(vp[3]);
   }
 
+  placement.transform.validate();
   glUseProgram(r.program);
   const double s = placement.scale;
-  // Column-major mat3: x_px = s x + ox, y_px = oy - s y.
-  const GLfloat m[9] = {static_cast<GLfloat>(s), 0.0f, 0.0f,
-                        0.0f, static_cast<GLfloat>(-s), 0.0f,
-                        static_cast<GLfloat>(placement.origin_x), static_cast<GLfloat>(placement.origin_y), 1.0f};
+  // Outline units -> pixels (x_px = s x + ox, y_px = oy - s y), then the
+  // projective transform; uploaded column-major.
+  const Transform full =
+      placement.transform * Transform{{s, 0.0, placement.origin_x, 0.0, -s, placement.origin_y, 0.0, 0.0, 1.0}};
+  GLfloat m[9];
+  for (int row = 0; row < 3; ++row)
+    for (int col = 0; col < 3; ++col) m[col * 3 + row] = static_cast<GLfloat>(full.m[row * 3 + col]);
   glUniformMatrix3fv(r.u_transform, 1, GL_FALSE, m);
   glUniform2f(r.u_viewport, vw, vh);
-  glUniform1f(r.u_px_per_unit, static_cast<GLfloat>(std::fabs(s)));
   glUniform1f(r.u_fringe_px, options.antialiasing == AntiAliasing::Full ? tolerance::kFringeWidthPx : 0.0f);
   const Color& c = options.color;
   const float a = std::clamp(c.a, 0.0f, 1.0f);

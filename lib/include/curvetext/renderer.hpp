@@ -15,6 +15,7 @@
 #include "curvetext/image.hpp"
 #include "curvetext/mesh.hpp"
 #include "curvetext/shaping.hpp"
+#include "curvetext/transform.hpp"
 
 namespace curvetext {
 
@@ -33,10 +34,17 @@ CurveMode parse_curve_mode(std::string_view text);       // "exact" | "paper"
 
 // Maps outline units (y up) to framebuffer pixels (y down, pixel (i,j) covers
 // [i,i+1]x[j,j+1]):  x_px = scale * x + origin_x,  y_px = origin_y - scale * y.
+// Then `transform` (rotation, scale, skew, perspective; identity by
+// default) maps those pixels to the framebuffer's.
 struct Placement {
   double scale = 1.0;
   double origin_x = 0.0;
   double origin_y = 0.0;
+  Transform transform;
+
+  Placement() = default;
+  Placement(double scale_, double origin_x_, double origin_y_, const Transform& transform_ = {})
+      : scale(scale_), origin_x(origin_x_), origin_y(origin_y_), transform(transform_) {}
 };
 
 struct DrawOptions {

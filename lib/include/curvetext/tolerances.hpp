@@ -46,5 +46,15 @@ inline constexpr int kMaxLodLog2 = 14;  // 16,384 px/em
 // --- Input limits (bad input gets an error, not a hang) -----------------------
 inline constexpr double kMaxPixelsPerEm = 20000.0;
 inline constexpr double kMaxImageSidePx = 16384.0;
+// Largest absolute entry of a Transform matrix (pixels per pixel, or pixels
+// for the translation column). Beyond it float precision on the GPU is gone.
+inline constexpr double kMaxTransformEntry = 1e6;
+// A transform whose determinant is below this fraction of (largest entry)^3
+// (dimensionless) is singular: it squashes the text to a line.
+inline constexpr double kMinTransformDeterminant = 1e-9;
+// Every corner of a transformed image must keep a homogeneous w above this
+// (dimensionless, w = 1 without perspective): w <= 0 is behind the viewer,
+// and near 0 the projection explodes.
+inline constexpr double kMinPerspectiveW = 1e-3;
 
 }  // namespace curvetext::tolerance
