@@ -190,6 +190,14 @@ expect_error "render: behind the viewer" 1 "behind" -- render --size 20 --text H
 expect_error "render: transformed image too large" 1 "largest side" -- render --size 20 --text hi --scale 1e5 -o "$tmp/out.png"
 expect_error "render: matrix with 3 numbers" 2 "6 or 9" -- render --size 20 --text hi --transform 1,2,3 -o "$tmp/out.png"
 expect_error "render: transform with paragraph" 2 "single lines" -- render --size 20 --text hi --rotate 3 --width 100 -o "$tmp/out.png"
+for mode in vbaa msaa auto; do
+  if timeout 120 "$CURVETEXT" render --size 12 --text "Hamburg" --aa $mode --rotate 10 -o "$tmp/$mode.png" 2>"$tmp/stderr"; then
+    ok "render --aa $mode"
+  else
+    bad "render --aa $mode failed: $(cat "$tmp/stderr")"
+  fi
+done
+expect_error "render: unknown aa mode" 1 "vbaa" -- render --size 20 --text hi --aa ssaa -o "$tmp/out.png"
 
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

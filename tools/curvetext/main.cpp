@@ -13,7 +13,7 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: curvetext render [--font FILE] [--face-index N] --size PX (--text UTF8 | --text-file FILE)\n"
-    "                        -o OUT.png [--margin PX] [--aa none|curves|full] [--curve exact|paper]\n"
+    "                        -o OUT.png [--margin PX] [--aa none|curves|full|vbaa|msaa|auto] [--curve exact|paper]\n"
     "                        [--variations wght=700,...] [--features \"kern,-liga\"]\n"
     "                        [--fg COLOR] [--bg COLOR]\n"
     "                        [--rotate DEG] [--scale SX[,SY]] [--skew AX[,AY]] [--perspective DEG[,DIST]]\n"

@@ -37,6 +37,15 @@ inline constexpr double kConicFlatnessRelative = 1e-9;
 // pixels. A pixel's box filter reaches at most sqrt(2)/2 px from its centre.
 inline constexpr float kFringeWidthPx = 0.7072f;
 
+// Border around a block's projected bounding box in the vbaa / msaa offscreen
+// pass, in pixels: the full-AA fringe (kFringeWidthPx) plus the filter's ring
+// of one texel, rounded up.
+inline constexpr double kOffscreenBorderPx = 2.0;
+
+// `auto` antialiasing uses vbaa up to this many pixels per em (on screen) and
+// full above it, from bench/quality_bench's table.
+inline constexpr double kAutoVbaaMaxPx = 48.0;
+
 // --- Level of detail ---------------------------------------------------------
 // Meshes of glyphs with cubics are built per power-of-two pixels-per-em band;
 // the band's upper end is used to choose the cubic tolerance.
