@@ -185,7 +185,7 @@ std::vector<std::string> split(const std::string& s) {
 
 int main(int argc, char** argv) {
   std::vector<double> sizes = {8, 10, 12, 14, 16, 24, 48, 96, 192, 384};
-  std::vector<std::string> modes = {"none", "curves", "full"};
+  std::vector<std::string> modes = {"none", "curves", "full", "vbaa", "msaa", "auto"};
   bool check = false, quick = false, dump = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
