@@ -7,9 +7,8 @@ attribute vec4 a_coef;  // (c0, c1, c2, c3)
 attribute vec4 a_info;  // (kind, w or dc2, dc0, dc1)
 attribute vec4 a_fade;  // (f0, f1, df0, df1): two more boundary lines, any kind
 
-uniform mat3 u_transform;     // outline units -> framebuffer pixels, y down
+uniform mat3 u_transform;     // outline units -> framebuffer pixels, y down (projective)
 uniform vec2 u_viewport;      // framebuffer size in pixels
-uniform float u_px_per_unit;  // sqrt|det| of the linear part of u_transform
 uniform float u_fringe_px;    // fringe width in pixels (0 unless AA is full)
 
 varying vec4 v_coef;
@@ -22,8 +21,19 @@ varying vec2 v_fade;  // distances to the two a_fade lines
 invariant gl_Position;
 
 void main() {
-  // Dilation in outline units; 0 makes the fringe triangles zero-area.
-  float t = u_fringe_px / u_px_per_unit;
+  // Dilation in outline units; 0 makes the fringe triangles zero-area. The
+  // smallest stretch of u_transform at this vertex (the smaller singular
+  // value of its Jacobian) turns pixels into outline units, so the fringe is
+  // at least u_fringe_px wide in every direction under rotation, non-uniform
+  // scale, skew and perspective. Vertices at the same position with the same
+  // offset get the same t, so shared fringe vertices stay bit-identical.
+  vec3 h = u_transform * vec3(a_pos.xy, 1.0);
+  vec2 hp = h.xy / h.z;
+  mat2 jac = mat2(u_transform[0].xy - hp * u_transform[0].z, u_transform[1].xy - hp * u_transform[1].z) / h.z;
+  float ss = dot(jac[0], jac[0]) + dot(jac[1], jac[1]);
+  float det = abs(jac[0].x * jac[1].y - jac[1].x * jac[0].y);
+  float hi = sqrt(0.5 * (ss + sqrt(max(ss * ss - 4.0 * det * det, 0.0))));
+  float t = u_fringe_px > 0.0 ? u_fringe_px * hi / max(det, 1e-30) : 0.0;
   // Kinds 3 and 4 (interior triangles next to curves) never move; their
   // offset slot carries curve A's barycentrics instead.
   bool next_to_curve = a_info.x > 2.5;
@@ -36,5 +46,7 @@ void main() {
   v_info = a_info;
   v_fade = a_fade.xy + a_fade.zw * t;
   vec3 q = u_transform * vec3(p, 1.0);
-  gl_Position = vec4(2.0 * q.x / u_viewport.x - 1.0, 1.0 - 2.0 * q.y / u_viewport.y, 0.0, 1.0);
+  // Homogeneous clip coordinates: the GPU divides by q.z after clipping and
+  // interpolates the varyings perspective-correctly (affine in outline units).
+  gl_Position = vec4(2.0 * q.x / u_viewport.x - q.z, q.z - 2.0 * q.y / u_viewport.y, 0.0, q.z);
 }

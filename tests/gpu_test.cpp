@@ -516,9 +516,12 @@ TEST(Parse, ModesAndErrors) {
   EXPECT_EQ(parse_antialiasing("none"), AntiAliasing::None);
   EXPECT_EQ(parse_antialiasing("curves"), AntiAliasing::Curves);
   EXPECT_EQ(parse_antialiasing("full"), AntiAliasing::Full);
+  EXPECT_EQ(parse_antialiasing("vbaa"), AntiAliasing::Vbaa);
+  EXPECT_EQ(parse_antialiasing("msaa"), AntiAliasing::Msaa);
+  EXPECT_EQ(parse_antialiasing("auto"), AntiAliasing::Auto);
   EXPECT_EQ(parse_curve_mode("exact"), CurveMode::Exact);
   EXPECT_EQ(parse_curve_mode("paper"), CurveMode::Paper);
-  for (const char* bad : {"", "Full", "msaa", "vbaa2"}) {
+  for (const char* bad : {"", "Full", "ssaa", "vbaa2"}) {
     try {
       parse_antialiasing(bad);
       FAIL() << bad;

@@ -70,6 +70,9 @@ namespace {
 std::unique_ptr<DrawBatch::Impl> upload(const std::vector<gpu::Vertex>& vertices) {
   auto impl = std::make_unique<DrawBatch::Impl>();
   impl->vertex_count = vertices.size();
+  static std::uint64_t next_serial = 0;
+  impl->serial = ++next_serial;
+  for (const gpu::Vertex& v : vertices) impl->bounds.add({v.pos[0], v.pos[1]});
   if (vertices.empty()) return impl;
   glGenBuffers(1, &impl->vbo);
   if (impl->vbo == 0) throw Error(ErrorCode::Gl, "glGenBuffers failed (is a GL context current?)");

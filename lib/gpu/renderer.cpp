@@ -1,8 +1,10 @@
 // The curve shader program, an offscreen RGBA framebuffer, and drawing of
 // batches with premultiplied source-over blending.
-#include <GLES2/gl2.h>
+#include <GLES3/gl3.h>
 
 #include <algorithm>
+#include <array>
+#include <cstdlib>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -19,8 +21,11 @@ AntiAliasing parse_antialiasing(std::string_view text) {
   if (text == "none") return AntiAliasing::None;
   if (text == "curves") return AntiAliasing::Curves;
   if (text == "full") return AntiAliasing::Full;
+  if (text == "vbaa") return AntiAliasing::Vbaa;
+  if (text == "msaa") return AntiAliasing::Msaa;
+  if (text == "auto") return AntiAliasing::Auto;
   throw Error(ErrorCode::InvalidArgument,
-              "unknown antialiasing mode '" + std::string(text) + "' (use none, curves or full)");
+              "unknown antialiasing mode '" + std::string(text) + "' (use none, curves, full, vbaa, msaa or auto)");
 }
 
 CurveMode parse_curve_mode(std::string_view text) {
@@ -94,11 +99,76 @@ void compile(const Shader& shader, GLenum type, const char* source, bool gles) {
 struct Renderer::Impl {
   GLuint program = 0;
   GLint a_pos = -1, a_coef = -1, a_info = -1, a_fade = -1;
-  GLint u_transform = -1, u_viewport = -1, u_px_per_unit = -1, u_fringe_px = -1, u_color = -1,
+  GLint u_transform = -1, u_viewport = -1, u_fringe_px = -1, u_color = -1,
         u_aa = -1, u_curve_mode = -1;
   GLuint framebuffer = 0;
   GLuint texture = 0;
   int width = 0, height = 0;
+
+  // vbaa / msaa: the second pass's program and offscreen targets.
+  GLuint resolve_program = 0;
+  GLint u_r_texture = -1, u_r_texture_size = -1, u_r_rect_origin = -1, u_r_target_height = -1, u_r_r = -1,
+        u_r_ring = -1, u_r_color = -1;
+  GLuint quad_vbo = 0;
+  GLuint off_fbo = 0, off_tex = 0;
+  int off_w = 0, off_h = 0;
+  GLuint ms_fbo = 0, ms_rb = 0;
+  int ms_w = 0, ms_h = 0;
+  int max_samples = 0;    // 0: no multisampled renderbuffers
+  int max_offscreen = 0;  // largest offscreen side
+  struct OffscreenKey {
+    std::uint64_t serial = 0;
+    std::array<double, 9> matrix{};
+    int x0 = 0, y0 = 0, w = 0, h = 0, factor = 0;
+    bool msaa = false, paper = false;
+    bool operator==(const OffscreenKey&) const = default;
+  };
+  OffscreenKey offscreen_key;
+  bool offscreen_valid = false;
+  std::size_t offscreen_passes = 0;
+
+  void ensure_offscreen(int w, int h, bool msaa) {
+    offscreen_valid = false;
+    if (off_fbo == 0 || off_w < w || off_h < h || off_w != w || off_h != h) {
+      if (off_fbo != 0) glDeleteFramebuffers(1, &off_fbo);
+      if (off_tex != 0) glDeleteTextures(1, &off_tex);
+      glGenTextures(1, &off_tex);
+      glBindTexture(GL_TEXTURE_2D, off_tex);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+      glBindTexture(GL_TEXTURE_2D, 0);
+      glGenFramebuffers(1, &off_fbo);
+      glBindFramebuffer(GL_FRAMEBUFFER, off_fbo);
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, off_tex, 0);
+      if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw Error(ErrorCode::Gl, "offscreen antialiasing framebuffer incomplete");
+      off_w = w;
+      off_h = h;
+    }
+    if (msaa && (ms_fbo == 0 || ms_w != w || ms_h != h)) {
+      if (ms_fbo != 0) glDeleteFramebuffers(1, &ms_fbo);
+      if (ms_rb != 0) glDeleteRenderbuffers(1, &ms_rb);
+      glGenRenderbuffers(1, &ms_rb);
+      glBindRenderbuffer(GL_RENDERBUFFER, ms_rb);
+      glRenderbufferStorageMultisample(GL_RENDERBUFFER, max_samples, GL_RGBA8, w, h);
+      glGenFramebuffers(1, &ms_fbo);
+      glBindFramebuffer(GL_FRAMEBUFFER, ms_fbo);
+      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, ms_rb);
+      if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw Error(ErrorCode::Gl, "multisampled framebuffer incomplete");
+      ms_w = w;
+      ms_h = h;
+    }
+  }
+  void resolve_multisample(int w, int h) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, ms_fbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, off_fbo);
+    glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  }
 
   Impl() = default;
   Impl(const Impl&) = delete;
@@ -106,6 +176,12 @@ struct Renderer::Impl {
   ~Impl() {
     release_target();
     if (program != 0) glDeleteProgram(program);
+    if (resolve_program != 0) glDeleteProgram(resolve_program);
+    if (quad_vbo != 0) glDeleteBuffers(1, &quad_vbo);
+    if (off_fbo != 0) glDeleteFramebuffers(1, &off_fbo);
+    if (off_tex != 0) glDeleteTextures(1, &off_tex);
+    if (ms_fbo != 0) glDeleteFramebuffers(1, &ms_fbo);
+    if (ms_rb != 0) glDeleteRenderbuffers(1, &ms_rb);
   }
   void release_target() {
     if (framebuffer != 0) glDeleteFramebuffers(1, &framebuffer);
@@ -152,11 +228,51 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
   r.a_fade = 3;
   r.u_transform = glGetUniformLocation(r.program, "u_transform");
   r.u_viewport = glGetUniformLocation(r.program, "u_viewport");
-  r.u_px_per_unit = glGetUniformLocation(r.program, "u_px_per_unit");
   r.u_fringe_px = glGetUniformLocation(r.program, "u_fringe_px");
   r.u_color = glGetUniformLocation(r.program, "u_color");
   r.u_aa = glGetUniformLocation(r.program, "u_aa");
   r.u_curve_mode = glGetUniformLocation(r.program, "u_curve_mode");
+
+  // The vbaa / msaa filter pass.
+  {
+    Shader rvs(GL_VERTEX_SHADER), rfs(GL_FRAGMENT_SHADER);
+    compile(rvs, GL_VERTEX_SHADER, shader_source::resolve_vert_glsl, gles);
+    compile(rfs, GL_FRAGMENT_SHADER, shader_source::resolve_frag_glsl, gles);
+    r.resolve_program = glCreateProgram();
+    glAttachShader(r.resolve_program, rvs.id);
+    glAttachShader(r.resolve_program, rfs.id);
+    glBindAttribLocation(r.resolve_program, 0, "a_clip");
+    glLinkProgram(r.resolve_program);
+    GLint linked = GL_FALSE;
+    glGetProgramiv(r.resolve_program, GL_LINK_STATUS, &linked);
+    if (linked != GL_TRUE) throw Error(ErrorCode::Gl, "vbaa/msaa filter program failed to link");
+    r.u_r_texture = glGetUniformLocation(r.resolve_program, "u_texture");
+    r.u_r_texture_size = glGetUniformLocation(r.resolve_program, "u_texture_size");
+    r.u_r_rect_origin = glGetUniformLocation(r.resolve_program, "u_rect_origin");
+    r.u_r_target_height = glGetUniformLocation(r.resolve_program, "u_target_height");
+    r.u_r_r = glGetUniformLocation(r.resolve_program, "u_r");
+    r.u_r_ring = glGetUniformLocation(r.resolve_program, "u_ring");
+    r.u_r_color = glGetUniformLocation(r.resolve_program, "u_color");
+    glGenBuffers(1, &r.quad_vbo);
+  }
+  GLint max_texture = 0, max_renderbuffer = 0, max_viewport[2] = {0, 0};
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_renderbuffer);
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, max_viewport);
+  r.max_offscreen = std::min({max_texture, max_renderbuffer, max_viewport[0], max_viewport[1]});
+  // Multisampled renderbuffers: GLES 3.0+ or desktop GL 3.0+.
+  const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+  int major = 0;
+  if (version != nullptr) {
+    const char* digits = gles ? version + 10 : version;  // "OpenGL ES 3.2 ..." or "4.6 ..."
+    if (std::strlen(version) > 10 || !gles) major = std::atoi(digits);
+  }
+  if (major >= 3) {
+    GLint samples = 0;
+    glGetIntegerv(GL_MAX_SAMPLES, &samples);
+    r.max_samples = std::min(samples, 8);
+  }
+  glGetError();  // a GLES2-only context may reject GL_MAX_SAMPLES
 }
 
 Renderer::~Renderer() = default;
@@ -236,16 +352,35 @@ void Renderer::draw(const DrawBatch& batch, const Placement& placement, const Dr
     vh = static_cast<float>(vp[3]);
   }
 
-  glUseProgram(r.program);
+  placement.transform.validate();
   const double s = placement.scale;
-  // Column-major mat3: x_px = s x + ox, y_px = oy - s y.
-  const GLfloat m[9] = {static_cast<GLfloat>(s), 0.0f, 0.0f,
-                        0.0f, static_cast<GLfloat>(-s), 0.0f,
-                        static_cast<GLfloat>(placement.origin_x), static_cast<GLfloat>(placement.origin_y), 1.0f};
+  // Outline units -> pixels (x_px = s x + ox, y_px = oy - s y), then the
+  // projective transform.
+  const Transform full =
+      placement.transform * Transform{{s, 0.0, placement.origin_x, 0.0, -s, placement.origin_y, 0.0, 0.0, 1.0}};
+  if (options.antialiasing == AntiAliasing::Vbaa || options.antialiasing == AntiAliasing::Msaa) {
+    GLint target_fbo = 0;
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &target_fbo);
+    if (draw_offscreen(b, full, vw, vh, static_cast<GLuint>(target_fbo), options)) return;
+    DrawOptions single = options;
+    single.antialiasing = AntiAliasing::Full;
+    draw_curves(b, full, vw, vh, single);
+    return;
+  }
+  draw_curves(b, full, vw, vh, options);
+}
+
+void Renderer::draw_curves(const DrawBatch::Impl& b, const Transform& full, float vw, float vh,
+                           const DrawOptions& options) {
+  Impl& r = *impl_;
+  glUseProgram(r.program);
+  GLfloat m[9];  // column-major
+  for (int row = 0; row < 3; ++row)
+    for (int col = 0; col < 3; ++col) m[col * 3 + row] = static_cast<GLfloat>(full.m[row * 3 + col]);
   glUniformMatrix3fv(r.u_transform, 1, GL_FALSE, m);
   glUniform2f(r.u_viewport, vw, vh);
-  glUniform1f(r.u_px_per_unit, static_cast<GLfloat>(std::fabs(s)));
-  glUniform1f(r.u_fringe_px, options.antialiasing == AntiAliasing::Full ? tolerance::kFringeWidthPx : 0.0f);
+  const bool full_aa = options.antialiasing == AntiAliasing::Full || options.antialiasing == AntiAliasing::Auto;
+  glUniform1f(r.u_fringe_px, full_aa ? tolerance::kFringeWidthPx : 0.0f);
   const Color& c = options.color;
   const float a = std::clamp(c.a, 0.0f, 1.0f);
   glUniform4f(r.u_color, std::clamp(c.r, 0.0f, 1.0f) * a, std::clamp(c.g, 0.0f, 1.0f) * a,
@@ -277,6 +412,102 @@ void Renderer::draw(const DrawBatch& batch, const Placement& placement, const Dr
     throw Error(ErrorCode::Gl, "drawing a batch failed (GL error " + hex(err) + ")");
   }
 }
+
+int Renderer::msaa_samples() const { return impl_->max_samples; }
+
+// vbaa / msaa (paper section 5): the block's projected bounding box (plus a
+// border) is drawn into an offscreen texture, r times larger for vbaa, or at
+// the same size into a multisampled renderbuffer resolved into it for msaa;
+// then a quad over the box filters it into the target. The offscreen pass is
+// kept and reused while the batch, its transform, the box and the mode stay
+// the same. False when it cannot be done here (the caller draws `full`).
+bool Renderer::draw_offscreen(const DrawBatch::Impl& b, const Transform& full, float vw, float vh,
+                              GLuint target_fbo, const DrawOptions& options) {
+  Impl& r = *impl_;
+  const bool msaa = options.antialiasing == AntiAliasing::Msaa;
+  if (msaa && r.max_samples < 2) return false;
+  if (b.bounds.empty()) return true;
+  // Projected box of the batch (a projective map with w > 0 keeps convex
+  // sets convex, so the corners' box holds the block), plus a border for
+  // the fringes and the filter's ring.
+  Box box;
+  const Vec2 corners[4] = {b.bounds.min, {b.bounds.max.x, b.bounds.min.y}, {b.bounds.min.x, b.bounds.max.y}, b.bounds.max};
+  for (Vec2 c : corners) {
+    if (!(full.w(c) > 0.0)) return false;
+    box.add(full.apply(c));
+  }
+  const double border = tolerance::kOffscreenBorderPx;
+  const int x0 = std::max(0, static_cast<int>(std::floor(box.min.x - border)));
+  const int y0 = std::max(0, static_cast<int>(std::floor(box.min.y - border)));
+  const int x1 = std::min(static_cast<int>(vw), static_cast<int>(std::ceil(box.max.x + border)));
+  const int y1 = std::min(static_cast<int>(vh), static_cast<int>(std::ceil(box.max.y + border)));
+  if (x1 <= x0 || y1 <= y0) return true;  // off screen
+  const int w = x1 - x0, h = y1 - y0;
+  int factor = msaa ? 1 : std::clamp(options.vbaa_factor, 1, 8);
+  // Degrade gracefully: a smaller factor where the texture would pass the GL
+  // maximum; below 2 vbaa is no better than full.
+  while (factor > 1 && (w * factor > r.max_offscreen || h * factor > r.max_offscreen)) --factor;
+  if (!msaa && factor < 2) return false;
+  if (w * factor > r.max_offscreen || h * factor > r.max_offscreen) return false;
+  const int tw = w * factor, th = h * factor;
+
+  Impl::OffscreenKey key{b.serial, full.m, x0, y0, w, h, factor, msaa, options.curve_mode == CurveMode::Paper};
+  if (!(r.offscreen_valid && key == r.offscreen_key)) {
+    r.ensure_offscreen(tw, th, msaa);
+    // Draw the block's coverage (white, so alpha holds it) into the texture,
+    // or the multisampled renderbuffer, with the box's origin at (0, 0).
+    glBindFramebuffer(GL_FRAMEBUFFER, msaa ? r.ms_fbo : r.off_fbo);
+    glViewport(0, 0, tw, th);
+    glDisable(GL_SCISSOR_TEST);
+    glClearColor(0, 0, 0, 0);
+    glClear(GL_COLOR_BUFFER_BIT);
+    const Transform to_texture = Transform::scale(factor, factor) * Transform::translation(-x0, -y0) * full;
+    DrawOptions pass = options;
+    pass.color = Color{1, 1, 1, 1};
+    pass.antialiasing = msaa ? AntiAliasing::None : AntiAliasing::Full;
+    draw_curves(b, to_texture, static_cast<float>(tw), static_cast<float>(th), pass);
+    if (msaa) r.resolve_multisample(tw, th);
+    r.offscreen_key = key;
+    r.offscreen_valid = true;
+    ++r.offscreen_passes;
+  }
+
+  // The filter pass into the target, over the box only.
+  glBindFramebuffer(GL_FRAMEBUFFER, target_fbo);
+  glViewport(0, 0, static_cast<GLsizei>(vw), static_cast<GLsizei>(vh));
+  glUseProgram(r.resolve_program);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, r.off_tex);
+  glUniform1i(r.u_r_texture, 0);
+  glUniform2f(r.u_r_texture_size, static_cast<float>(tw), static_cast<float>(th));
+  glUniform2f(r.u_r_rect_origin, static_cast<float>(x0), static_cast<float>(y0));
+  glUniform1f(r.u_r_target_height, vh);
+  glUniform1f(r.u_r_r, static_cast<float>(factor));
+  glUniform1f(r.u_r_ring, msaa ? 0.0f : std::clamp(options.vbaa_ring, 0.0f, 1.0f));
+  const Color& c = options.color;
+  const float a = std::clamp(c.a, 0.0f, 1.0f);
+  glUniform4f(r.u_r_color, std::clamp(c.r, 0.0f, 1.0f) * a, std::clamp(c.g, 0.0f, 1.0f) * a,
+              std::clamp(c.b, 0.0f, 1.0f) * a, a);
+  const float cx0 = 2.0f * static_cast<float>(x0) / vw - 1.0f, cx1 = 2.0f * static_cast<float>(x1) / vw - 1.0f;
+  const float cy0 = 1.0f - 2.0f * static_cast<float>(y0) / vh, cy1 = 1.0f - 2.0f * static_cast<float>(y1) / vh;
+  const GLfloat quad[12] = {cx0, cy0, cx1, cy0, cx1, cy1, cx0, cy0, cx1, cy1, cx0, cy1};
+  glBindBuffer(GL_ARRAY_BUFFER, r.quad_vbo);
+  glBufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STREAM_DRAW);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  glDrawArrays(GL_TRIANGLES, 0, 6);
+  glDisableVertexAttribArray(0);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  if (GLenum err = glGetError(); err != GL_NO_ERROR) {
+    throw Error(ErrorCode::Gl, std::string(msaa ? "msaa" : "vbaa") + " pass failed (GL error " + hex(err) + ")");
+  }
+  return true;
+}
+
+std::size_t Renderer::offscreen_passes() const { return impl_->offscreen_passes; }
 
 Image Renderer::read_pixels() {
   Impl& r = *impl_;

@@ -171,5 +171,33 @@ expect_error "render: bad markup" 1 "markup" -- render --size 20 --width 100 --m
 expect_error "render: size NaN with width" 1 "size" -- render --size nan --width 100 --text hi -o "$tmp/out.png"
 expect_error "render: paragraph image too large" 1 "image" -- render --size 20 --width 100000 --text hi -o "$tmp/out.png"
 
+# --- transforms ----------------------------------------------------------------
+if timeout 120 "$CURVETEXT" render --size 24 --text "Hamburg" --rotate 30 --scale 1.5,1 --skew 10 -o "$tmp/rot.png" 2>"$tmp/stderr" &&
+   timeout 120 "$CURVETEXT" render --size 24 --text "Hamburg" --perspective 40 -o "$tmp/persp.png" 2>>"$tmp/stderr" &&
+   timeout 120 "$CURVETEXT" render --size 24 --text "Hamburg" --transform 1,0.2,0,0,1,0,0,0.001,1 -o "$tmp/matrix.png" 2>>"$tmp/stderr"; then
+  read -r w h <<<"$(png_size "$tmp/rot.png")"
+  # Rotated 30 degrees the image is the bounding box of the turned rectangle: taller than the plain 60 px line.
+  if [ "$h" -gt 80 ]; then ok "render transformed ${w}x${h}"; else bad "render --rotate 30: height $h, want > 80"; fi
+else
+  bad "render with transforms failed: $(cat "$tmp/stderr")"
+fi
+expect_error "render: NaN rotation" 1 "finite" -- render --size 20 --text hi --rotate nan -o "$tmp/out.png"
+expect_error "render: infinite matrix entry" 1 "finite" -- render --size 20 --text hi --transform 1,0,0,0,1,0,0,0,inf -o "$tmp/out.png"
+expect_error "render: huge matrix entry" 1 "limit" -- render --size 20 --text hi --transform 1e300,0,0,0,1,0 -o "$tmp/out.png"
+expect_error "render: singular scale" 1 "singular" -- render --size 20 --text hi --scale 0 -o "$tmp/out.png"
+expect_error "render: perspective 95 degrees" 1 "perspective" -- render --size 20 --text hi --perspective 95 -o "$tmp/out.png"
+expect_error "render: behind the viewer" 1 "behind" -- render --size 20 --text Hamburgefontsiv --perspective 80,20 -o "$tmp/out.png"
+expect_error "render: transformed image too large" 1 "largest side" -- render --size 20 --text hi --scale 1e5 -o "$tmp/out.png"
+expect_error "render: matrix with 3 numbers" 2 "6 or 9" -- render --size 20 --text hi --transform 1,2,3 -o "$tmp/out.png"
+expect_error "render: transform with paragraph" 2 "single lines" -- render --size 20 --text hi --rotate 3 --width 100 -o "$tmp/out.png"
+for mode in vbaa msaa auto; do
+  if timeout 120 "$CURVETEXT" render --size 12 --text "Hamburg" --aa $mode --rotate 10 -o "$tmp/$mode.png" 2>"$tmp/stderr"; then
+    ok "render --aa $mode"
+  else
+    bad "render --aa $mode failed: $(cat "$tmp/stderr")"
+  fi
+done
+expect_error "render: unknown aa mode" 1 "vbaa" -- render --size 20 --text hi --aa ssaa -o "$tmp/out.png"
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

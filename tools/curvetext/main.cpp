@@ -13,9 +13,12 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: curvetext render [--font FILE] [--face-index N] --size PX (--text UTF8 | --text-file FILE)\n"
-    "                        -o OUT.png [--margin PX] [--aa none|curves|full] [--curve exact|paper]\n"
+    "                        -o OUT.png [--margin PX] [--aa none|curves|full|vbaa|msaa|auto] [--curve exact|paper]\n"
     "                        [--variations wght=700,...] [--features \"kern,-liga\"]\n"
     "                        [--fg COLOR] [--bg COLOR]\n"
+    "                        [--rotate DEG] [--scale SX[,SY]] [--skew AX[,AY]] [--perspective DEG[,DIST]]\n"
+    "                        [--transform a,b,c,d,e,f[,g,h,i]] (row-major pixel matrix; each about the\n"
+    "                        image centre, in the order given; the image grows to fit)\n"
     "       render paragraph options: --width PX --align left|right|center|justify|start|end\n"
     "                        --line-height X|Npx --max-lines N --ellipsis none|start|middle|end\n"
     "                        --direction auto|ltr|rtl --language BCP47 --indent PX --tab-stops PX,...\n"

@@ -15,6 +15,7 @@
 #include "curvetext/image.hpp"
 #include "curvetext/mesh.hpp"
 #include "curvetext/shaping.hpp"
+#include "curvetext/transform.hpp"
 
 namespace curvetext {
 
@@ -22,27 +23,48 @@ enum class AntiAliasing {
   None,    // in/out test only
   Curves,  // the paper's single pass: curved edges antialiased, straight edges aliased
   Full,    // single pass, straight and curved edges antialiased (default)
+  Vbaa,    // the paper's view based AA: `full` drawn r times larger into a texture over the
+           // block's projected bounding box, filtered down (falls back to full when the
+           // texture would exceed the GL maximum)
+  Msaa,    // in/out test into a multisampled renderbuffer, resolved (GLES3 / desktop GL;
+           // falls back to full where the context has none)
+  Auto,    // per size, what bench/quality_bench measures best (text_image.hpp)
 };
 enum class CurveMode {
   Exact,  // F = tau1^2 - 4 w^2 tau0 tau2 (DESIGN.md section 3), exact for every weight
   Paper,  // the paper's equation 2: exact only for weight 1
 };
 
-AntiAliasing parse_antialiasing(std::string_view text);  // "none" | "curves" | "full"
+AntiAliasing parse_antialiasing(std::string_view text);  // "none" | "curves" | "full" | "vbaa" | "msaa" | "auto"
 CurveMode parse_curve_mode(std::string_view text);       // "exact" | "paper"
 
 // Maps outline units (y up) to framebuffer pixels (y down, pixel (i,j) covers
 // [i,i+1]x[j,j+1]):  x_px = scale * x + origin_x,  y_px = origin_y - scale * y.
+// Then `transform` (rotation, scale, skew, perspective; identity by
+// default) maps those pixels to the framebuffer's.
 struct Placement {
   double scale = 1.0;
   double origin_x = 0.0;
   double origin_y = 0.0;
+  Transform transform;
+
+  Placement() = default;
+  Placement(double scale_, double origin_x_, double origin_y_, const Transform& transform_ = {})
+      : scale(scale_), origin_x(origin_x_), origin_y(origin_y_), transform(transform_) {}
 };
 
 struct DrawOptions {
   Color color{0, 0, 0, 1};
   AntiAliasing antialiasing = AntiAliasing::Full;
   CurveMode curve_mode = CurveMode::Exact;
+  // vbaa: texels per pixel of the offscreen pass (1..8) and the weight of the
+  // ring of texels around each pixel's block (0: a box filter).
+  int vbaa_factor = 4;
+  float vbaa_ring = 0.0f;
+
+  DrawOptions() = default;
+  DrawOptions(Color color_, AntiAliasing aa = AntiAliasing::Full, CurveMode mode = CurveMode::Exact)
+      : color(color_), antialiasing(aa), curve_mode(mode) {}
 };
 
 // Bytes `mesh` takes in a GPU vertex buffer once packed (interior and curved
@@ -113,12 +135,22 @@ class Renderer {
   void begin(int width, int height, Color background);
   // Premultiplied source-over blending of `color` * coverage.
   void draw(const DrawBatch& batch, const Placement& placement, const DrawOptions& options);
+  // Samples per pixel msaa uses here (0 where the context has no multisampled
+  // renderbuffers).
+  int msaa_samples() const;
   // The framebuffer as straight-alpha RGBA, row 0 at the top.
   Image read_pixels();
+  // How many times vbaa / msaa drew their offscreen pass (a draw of the same
+  // batch with the same transform into the same box reuses the last one).
+  std::size_t offscreen_passes() const;
 
   struct Impl;
 
  private:
+  void draw_curves(const DrawBatch::Impl& batch, const Transform& full, float width, float height,
+                   const DrawOptions& options);
+  bool draw_offscreen(const DrawBatch::Impl& batch, const Transform& full, float width, float height,
+                      unsigned target_framebuffer, const DrawOptions& options);
   std::unique_ptr<Impl> impl_;
 };
 

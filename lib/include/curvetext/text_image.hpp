@@ -23,6 +23,10 @@ struct TextImageOptions {
   AntiAliasing antialiasing = AntiAliasing::Full;
   CurveMode curve_mode = CurveMode::Exact;
   ShapeOptions shaping;
+  // Applied about the centre of the contract's image; the image then becomes
+  // the bounding box of the transformed one (ceil of its size), so nothing is
+  // cut off. Identity: the contract exactly.
+  Transform transform;
 };
 
 struct TextImageLayout {
@@ -30,6 +34,8 @@ struct TextImageLayout {
   int width = 0;
   int height = 0;
   Placement placement;  // font units -> image pixels, pen origin at (margin, margin + A)
+                        // (then placement.transform, identity unless options.transform is not)
+  double largest_stretch = 1.0;  // of placement.transform over the image (for the level of detail)
   double ascender_px = 0.0;
   double descender_px = 0.0;
 };

@@ -37,6 +37,15 @@ inline constexpr double kConicFlatnessRelative = 1e-9;
 // pixels. A pixel's box filter reaches at most sqrt(2)/2 px from its centre.
 inline constexpr float kFringeWidthPx = 0.7072f;
 
+// Border around a block's projected bounding box in the vbaa / msaa offscreen
+// pass, in pixels: the full-AA fringe (kFringeWidthPx) plus the filter's ring
+// of one texel, rounded up.
+inline constexpr double kOffscreenBorderPx = 2.0;
+
+// `auto` antialiasing uses vbaa up to this many pixels per em (on screen) and
+// full above it, from bench/quality_bench's table.
+inline constexpr double kAutoVbaaMaxPx = 48.0;
+
 // --- Level of detail ---------------------------------------------------------
 // Meshes of glyphs with cubics are built per power-of-two pixels-per-em band;
 // the band's upper end is used to choose the cubic tolerance.
@@ -46,5 +55,15 @@ inline constexpr int kMaxLodLog2 = 14;  // 16,384 px/em
 // --- Input limits (bad input gets an error, not a hang) -----------------------
 inline constexpr double kMaxPixelsPerEm = 20000.0;
 inline constexpr double kMaxImageSidePx = 16384.0;
+// Largest absolute entry of a Transform matrix (pixels per pixel, or pixels
+// for the translation column). Beyond it float precision on the GPU is gone.
+inline constexpr double kMaxTransformEntry = 1e6;
+// A transform whose determinant is below this fraction of (largest entry)^3
+// (dimensionless) is singular: it squashes the text to a line.
+inline constexpr double kMinTransformDeterminant = 1e-9;
+// Every corner of a transformed image must keep a homogeneous w above this
+// (dimensionless, w = 1 without perspective): w <= 0 is behind the viewer,
+// and near 0 the projection explodes.
+inline constexpr double kMinPerspectiveW = 1e-3;
 
 }  // namespace curvetext::tolerance

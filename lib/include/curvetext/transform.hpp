@@ -1,0 +1,48 @@
+// Projective maps of the plane (rotation, non-uniform scale, skew, and the
+// perspective view of a tilted plane) applied to framebuffer pixel
+// coordinates after a Placement. Coverage stays right under any of them: the
+// curve shader measures distances with screen-space derivatives.
+#pragma once
+
+#include <array>
+
+#include "curvetext/geometry.hpp"
+
+namespace curvetext {
+
+// Row-major 3x3 homogeneous matrix m: (x, y) -> (X / W, Y / W) with
+// (X, Y, W) = m * (x, y, 1). Affine maps have the last row (0, 0, 1).
+struct Transform {
+  std::array<double, 9> m{1, 0, 0, 0, 1, 0, 0, 0, 1};
+
+  static Transform translation(double dx, double dy);
+  static Transform rotation(double degrees);                    // clockwise on screen (y down)
+  static Transform scale(double sx, double sy);
+  static Transform skew(double x_degrees, double y_degrees);    // x += tan(ax) y, y += tan(ay) x
+  // The plane turned by `degrees` about the horizontal axis y = 0 (top edge
+  // towards the viewer for positive angles) and seen by a pinhole camera
+  // `distance` pixels away whose focal length is `distance` (the axis keeps
+  // its scale).
+  static Transform perspective(double degrees, double distance);
+  // The same map about the point c: T(c) * this * T(-c).
+  Transform about(Vec2 c) const;
+
+  bool is_identity() const;
+  bool is_affine() const;
+  double w(Vec2 p) const { return m[6] * p.x + m[7] * p.y + m[8]; }
+  Vec2 apply(Vec2 p) const;
+  // Largest and smallest singular values of the map's Jacobian at p (pixels
+  // out per pixel in).
+  double largest_stretch(Vec2 p) const;
+  double smallest_stretch(Vec2 p) const;
+
+  // Throws Error(InvalidArgument) when an entry is NaN/inf or larger than
+  // tolerance::kMaxTransformEntry, or the map is singular (|det| below
+  // tolerance::kMinTransformDeterminant relative to the entries' scale).
+  void validate() const;
+};
+
+// a after b.
+Transform operator*(const Transform& a, const Transform& b);
+
+}  // namespace curvetext
