@@ -129,6 +129,7 @@ float conic_coverage(float t1, float t2, vec2 g1, vec2 g2, float w, float s, boo
   // tau1 whose gradient is orthogonal to tau1's, the chord's normal.
   float k = -dot(g1, g2) / max(dot(g1, g1), 1e-30);
   float cov = 0.0;
+  vec2 mom = vec2(0.0);  // first moment of the sub-box coverages
   vec2 nq;
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
@@ -141,9 +142,18 @@ float conic_coverage(float t1, float t2, vec2 g1, vec2 g2, float w, float s, boo
       bool in_span = code < 2.5 || (along >= 0.0 && along <= 1.0);
       if (code > -0.5 && in_span && a < 1.0) a = max(a, boxcov(3.0 * (de + dot(ne, u)), ne));
       cov += a;
+      mom += a * u;
     }
   }
   conic_distance(t1, t2, g1, g2, w, s, mirror, true, n);
+  // The conic's gradient at the pixel centre is the boundary's normal only
+  // near the arc. Where the centre lies past the conic's other arm (a flat
+  // hull whose parabola opens along its chord) or the coverage came from the
+  // solid side of a hull edge, it can point away from the filled side, and
+  // fold() would take this curve and a neighbour continuing it smoothly for
+  // the two sides of a hairline. The first moment of the sub-box coverages
+  // points towards the filled side; when the two disagree, trust it.
+  if (dot(n, mom) < 0.0 && dot(mom, mom) > 1e-8) n = normalize(mom);
   return cov / 9.0;
 }
 
