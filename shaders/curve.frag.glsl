@@ -129,6 +129,7 @@ float conic_coverage(float t1, float t2, vec2 g1, vec2 g2, float w, float s, boo
   // tau1 whose gradient is orthogonal to tau1's, the chord's normal.
   float k = -dot(g1, g2) / max(dot(g1, g1), 1e-30);
   float cov = 0.0;
+  vec2 mom = vec2(0.0);  // first moment of the sub-box coverages
   vec2 nq;
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
@@ -141,10 +142,32 @@ float conic_coverage(float t1, float t2, vec2 g1, vec2 g2, float w, float s, boo
       bool in_span = code < 2.5 || (along >= 0.0 && along <= 1.0);
       if (code > -0.5 && in_span && a < 1.0) a = max(a, boxcov(3.0 * (de + dot(ne, u)), ne));
       cov += a;
+      mom += a * u;
     }
   }
   conic_distance(t1, t2, g1, g2, w, s, mirror, true, n);
+  // The conic's gradient at the pixel centre is the boundary's normal only
+  // near the arc. Where the centre lies past the conic's other arm (a flat
+  // hull whose parabola opens along its chord) or the coverage came from the
+  // solid side of a hull edge, it can point away from the filled side, and
+  // fold() would take this curve and a neighbour continuing it smoothly for
+  // the two sides of a hairline. The first moment of the sub-box coverages
+  // points towards the filled side; when the two disagree, trust it.
+  if (dot(n, mom) < 0.0 && dot(mom, mom) > 1e-8) n = normalize(mom);
   return cov / 9.0;
+}
+
+// A lower bound on the distance in pixels from the fragment to a curve's
+// control triangle (which holds the arc): how far it lies past the hull's
+// ends along the chord. The hull lies within the slab of positions along the
+// chord between its vertices' (0 at p0, 1 at p2, k at the control point);
+// "along" is the combination of tau2 and tau1 whose gradient is orthogonal to
+// tau1's (the chord's normal).
+float beyond_hull_px(float t1, float t2, vec2 g1, vec2 g2) {
+  float k = -dot(g1, g2) / max(dot(g1, g1), 1e-30);
+  float along = t2 + k * t1;
+  float beyond = max(min(0.0, k) - along, along - max(1.0, k));
+  return beyond / max(length(g2 + k * g1), 1e-30);
 }
 
 // Beyond this many pixels from the edge it shares with a curved triangle, an
@@ -152,6 +175,8 @@ float conic_coverage(float t1, float t2, vec2 g1, vec2 g2, float w, float s, boo
 // that edge, and a pixel's box reaches sqrt(2)/2 px), so the conic, whose
 // other branches may pass anywhere, is not consulted there.
 const float kNearCurvePx = 0.75;
+// A pixel's box reaches at most sqrt(2)/2 px from its centre (rounded up).
+const float kPixelReachPx = 0.7072;
 
 // Folds in, for an interior triangle (kinds 3, 4), a curve across one of its
 // edges or touching it at a vertex. `code` is the hull edge the triangle lies
@@ -163,6 +188,10 @@ void fold_near_curve(inout float cov, inout vec2 nacc, float t1, float t2, float
   vec2 ge = code < 0.5 ? g1 : (code < 1.5 ? g2 : -g1 - g2);
   float ge_len = length(ge);
   if (ge_len < 1e-20 || abs(e) > kNearCurvePx * ge_len) return;
+  // The same past the ends of the hull: a triangle touching the curve at a
+  // vertex can run far along the chord's line (a stem's edge continuing a
+  // curve), where the conic's extension bends back across the edge.
+  if (beyond_hull_px(t1, t2, g1, g2) > kNearCurvePx) return;
   float s = code < 0.5 ? 1.0 : -1.0;
   vec2 n;
   float a = conic_coverage(t1, t2, g1, g2, w, s, false, code, n);
@@ -218,6 +247,12 @@ void main() {
       coverage = d >= 0.0 ? 1.0 : 0.0;
     } else if (u_aa == 1) {
       coverage = clamp(0.5 + d, 0.0, 1.0);
+    } else if (beyond_hull_px(t1, t2, g1, g2) > kPixelReachPx) {
+      // A fringe's miter spike at an acute join reaches pixels whose box
+      // misses the arc (and, near a convex join, the whole outline), where
+      // the conic's extension may still read "inside" (a dark pixel past
+      // the end of a stroke).
+      coverage = 0.0;
     } else {
       float a = u_curve_mode == 0 ? conic_coverage(t1, t2, g1, g2, w, s, s < 0.0, v_coef.w > 0.5 ? 3.0 : -1.0, n) : boxcov(d, n);
       fold(coverage, nacc, a, n);

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -94,21 +95,12 @@ struct KnownFailure {
   std::uint32_t glyph;
   const char* why;
 };
-// Found by the line-deficit limit; the reference agrees with FreeType at 16x
-// within 0.005 on these glyphs, and the same glyphs fail with the pack.cpp
-// committed before its current rewrite. A run of antialiased pixels along a
-// straight edge is drawn much too light: Noto Sans glyph 2149 (a "k"), the
-// stem's right edge above the arm, 0.15-0.20 instead of 0.55 over 3 rows;
-// Noto Sans Math glyph 2482 (a "1"), the lower right edge of the stem.
-// Suspected cause: triangles fading by a boundary line through one of their
-// vertices whose extension passes through them (lib/gpu/pack.cpp, "lines
-// through their vertices").
-constexpr const char* kEdgePixelsTooLight = "edge pixels along a straight edge drawn too light";
-constexpr KnownFailure kKnownFailures[] = {
-    {"NotoSans", 2149, kEdgePixelsTooLight},
-    {"NotoSansMath", 2482, kEdgePixelsTooLight},
-    {"Z003", 276, kEdgePixelsTooLight},
-};
+// None at present. The three entries this list held (Noto Sans 2149, Noto
+// Sans Math 2482, URW Z003 276: a run of pixels along a straight edge drawn
+// too light) were the curve fade of an interior triangle touching a curve at
+// a vertex reaching along the chord's line past the hull (fixed in
+// shaders/curve.frag.glsl, fold_near_curve); they must pass now.
+constexpr std::array<KnownFailure, 0> kKnownFailures{};
 
 const KnownFailure* known_failure(const char* subset, std::uint32_t glyph) {
   for (const KnownFailure& k : kKnownFailures)
