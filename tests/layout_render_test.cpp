@@ -134,7 +134,7 @@ TEST_P(RenderedParagraph, MatchesExactCoverageOfItsGlyphs) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Paragraphs, RenderedParagraph, ::testing::ValuesIn(cases()),
-                         [](const ::testing::TestParamInfo<Case>& info) { return std::string(info.param.name); });
+                         [](const ::testing::TestParamInfo<Case>& param_info) { return std::string(param_info.param.name); });
 
 }  // namespace
 }  // namespace curvetext
