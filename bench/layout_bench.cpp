@@ -2,19 +2,27 @@
 // file, size and width, in one run; and, with --check-breaks, a comparison of
 // where the two break lines (run by CTest as layout_pango_breaks).
 //
-//   build/bench/layout_bench                 paragraphs/s for both, and the ratio
+//   build/bench/layout_bench                 paragraphs/s for both, and the ratio:
+//                                            Latin (English, German; DejaVu Sans), then
+//                                            Arabic with Latin and digits, Hebrew,
+//                                            Devanagari, Thai, CJK (Noto fonts)
 //   build/bench/layout_bench --check-breaks  line starts, ours vs Pango's
 //
 // Both lay out from scratch each time (text set, itemised, shaped, broken);
 // both keep their font caches warm (a FontCollection / a PangoFontMap), as an
-// application would.
+// application would. Both use the same font files: curvetext gets the files,
+// Pango the family names fontconfig resolves to them, and the files each side
+// actually used are printed and compared.
 #include <pango/pangoft2.h>
+
+#include <pango/pangofc-font.h>
 
 #include <algorithm>
 #include <ctime>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -62,11 +70,69 @@ const std::vector<std::string>& german() {
   return t;
 }
 
+
+// Other scripts, each in a Noto face (fonts-noto-core, fonts-noto-cjk), with
+// Noto Sans for the Latin letters and digits the Arabic and Hebrew faces lack.
+constexpr const char* kNoto = "/usr/share/fonts/truetype/noto/";
+struct ScriptSet {
+  const char* name;
+  std::vector<std::string> files;  // curvetext: first choice first
+  const char* pango_family;        // Pango: families fontconfig resolves to the same files
+  std::vector<std::string> texts;
+};
+
+const std::vector<ScriptSet>& script_sets() {
+  static const std::vector<ScriptSet> sets = {
+      {"Arabic (+Latin, digits)",
+       {std::string(kNoto) + "NotoSansArabic-Regular.ttf", std::string(kNoto) + "NotoSans-Regular.ttf"},
+       "Noto Sans Arabic, Noto Sans",
+       {"في عام 2023 زار أكثر من 1,500,000 سائح مدينة البتراء في الأردن، وهي واحدة من عجائب الدنيا السبع الجديدة "
+        "التي أعلنتها مؤسسة New7Wonders في 7 يوليو 2007.",
+        "يستخدم نظام Linux في معظم خوادم الإنترنت، ويعمل عليه أيضاً نظام Android في الهواتف الذكية. يمكن تحميل "
+        "الإصدار 6.1 من الموقع الرسمي kernel.org مجاناً.",
+        "قال المدير إن الاجتماع سيعقد يوم الأحد الساعة 10:30 صباحاً في القاعة رقم 4، وسيناقش المشاركون الميزانية "
+        "الجديدة البالغة 250 ألف دولار وخطة العمل للأشهر الستة القادمة.",
+        "اللغة العربية هي إحدى اللغات الرسمية الست في الأمم المتحدة، ويتحدث بها أكثر من 400 مليون شخص حول العالم، "
+        "وتكتب من اليمين إلى اليسار بأبجدية تتكون من 28 حرفاً."}},
+      {"Hebrew",
+       {std::string(kNoto) + "NotoSansHebrew-Regular.ttf", std::string(kNoto) + "NotoSans-Regular.ttf"},
+       "Noto Sans Hebrew, Noto Sans",
+       {"ירושלים היא בירת ישראל והעיר הגדולה ביותר במדינה, עם אוכלוסייה של כמעט מיליון תושבים. העיר העתיקה "
+        "מוקפת חומה שנבנתה במאה השש עשרה.",
+        "השפה העברית נכתבת מימין לשמאל באלפבית של עשרים ושתיים אותיות. במשך מאות שנים שימשה בעיקר לתפילה "
+        "וללימוד, ובסוף המאה התשע עשרה חזרה להיות שפה מדוברת.",
+        "הפגישה נדחתה ליום שלישי בשעה 14:00, כי רוב חברי הוועדה נמצאים בחופשה. נא להביא את המסמכים החתומים "
+        "ואת הדוח השנתי של 2023."}},
+      {"Devanagari",
+       {std::string(kNoto) + "NotoSansDevanagari-Regular.ttf", std::string(kNoto) + "NotoSans-Regular.ttf"},
+       "Noto Sans Devanagari, Noto Sans",
+       {"भारत दक्षिण एशिया में स्थित एक विशाल देश है। जनसंख्या के हिसाब से यह दुनिया का सबसे बड़ा देश है और "
+        "यहाँ सैकड़ों भाषाएँ बोली जाती हैं।",
+        "हिन्दी देवनागरी लिपि में लिखी जाती है, जिसमें स्वर और व्यंजन के साथ मात्राएँ और संयुक्ताक्षर होते हैं, जैसे "
+        "क्ष, त्र और ज्ञ।",
+        "कल सुबह दस बजे विद्यालय में वार्षिक समारोह होगा, जिसमें विद्यार्थी नाटक, संगीत और नृत्य प्रस्तुत करेंगे तथा "
+        "पुरस्कार वितरित किए जाएँगे।"}},
+      {"Thai",
+       {std::string(kNoto) + "NotoSansThai-Regular.ttf", std::string(kNoto) + "NotoSans-Regular.ttf"},
+       "Noto Sans Thai, Noto Sans",
+       {"ประเทศไทยตั้งอยู่ในเอเชียตะวันออกเฉียงใต้ มีกรุงเทพมหานครเป็นเมืองหลวงและเป็นเมืองที่ใหญ่ที่สุดของประเทศ",
+        "ภาษาไทยเขียนโดยไม่เว้นวรรคระหว่างคำ แต่จะเว้นวรรคเมื่อจบประโยคหรือวลี ทำให้การตัดคำต้องใช้พจนานุกรม",
+        "พรุ่งนี้เช้าเราจะไปตลาดน้ำเพื่อซื้อผลไม้และขนมไทย แล้วตอนบ่ายจะไปเที่ยววัดพระแก้วกับเพื่อนๆ"}},
+      {"CJK (Chinese, Japanese)",
+       {"/usr/share/fonts/opentype/noto/NotoSansCJK-Regular.ttc#2"},
+       "Noto Sans CJK SC",
+       {"北京是中华人民共和国的首都，也是全国的政治、文化和国际交往中心。这座城市有三千多年的建城史，故宫、天坛和长城都是世界文化遗产。",
+        "汉字是世界上最古老的文字之一，现代汉语常用字大约有三千五百个。计算机排版时，每个汉字之间都可以换行，但标点符号不能出现在行首。",
+        "東京は日本の首都であり、世界有数の大都市です。電車やバスなどの公共交通機関が発達していて、毎日何百万人もの人々が通勤しています。"}},
+  };
+  return sets;
+}
+
 struct PangoSetup {
   PangoFontMap* map = pango_ft2_font_map_new();
   PangoContext* context = nullptr;
-  PangoFontDescription* desc = pango_font_description_from_string(kFontFamily);
-  PangoSetup() {
+  PangoFontDescription* desc;
+  explicit PangoSetup(const char* family = kFontFamily) : desc(pango_font_description_from_string(family)) {
     context = pango_font_map_create_context(map);
     // Unrounded positions, as curvetext keeps them.
     pango_context_set_round_glyph_positions(context, FALSE);
@@ -77,8 +143,26 @@ struct PangoSetup {
     g_object_unref(context);
     g_object_unref(map);
   }
-  std::vector<std::size_t> line_starts(const std::string& text, int* lines_out = nullptr, double width = kWidth,
-                                       bool hyphens = true) {
+  // Font files (path#index) of the runs Pango laid out text with.
+  std::set<std::string> font_files(const std::string& text) {
+    PangoLayout* layout = make_layout(text, kWidth, true);
+    std::set<std::string> files;
+    PangoLayoutIter* iter = pango_layout_get_iter(layout);
+    do {
+      PangoLayoutRun* run = pango_layout_iter_get_run_readonly(iter);
+      if (run == nullptr || !PANGO_IS_FC_FONT(run->item->analysis.font)) continue;
+      FcPattern* pattern = pango_fc_font_get_pattern(PANGO_FC_FONT(run->item->analysis.font));
+      FcChar8* file = nullptr;
+      int index = 0;
+      if (FcPatternGetString(pattern, FC_FILE, 0, &file) != FcResultMatch) continue;
+      FcPatternGetInteger(pattern, FC_INDEX, 0, &index);
+      files.insert(std::string(reinterpret_cast<const char*>(file)) + "#" + std::to_string(index));
+    } while (pango_layout_iter_next_run(iter));
+    pango_layout_iter_free(iter);
+    g_object_unref(layout);
+    return files;
+  }
+  PangoLayout* make_layout(const std::string& text, double width, bool hyphens) {
     PangoLayout* layout = pango_layout_new(context);
     if (!hyphens) {
       // Pango (>= 1.44) draws a hyphen where it breaks inside a word; off,
@@ -92,6 +176,11 @@ struct PangoSetup {
     pango_layout_set_width(layout, static_cast<int>(width * PANGO_SCALE));
     pango_layout_set_wrap(layout, PANGO_WRAP_WORD_CHAR);
     pango_layout_set_text(layout, text.data(), static_cast<int>(text.size()));
+    return layout;
+  }
+  std::vector<std::size_t> line_starts(const std::string& text, int* lines_out = nullptr, double width = kWidth,
+                                       bool hyphens = true) {
+    PangoLayout* layout = make_layout(text, width, hyphens);
     std::vector<std::size_t> starts;
     const int n = pango_layout_get_line_count(layout);
     if (lines_out) *lines_out = n;
@@ -103,9 +192,9 @@ struct PangoSetup {
   }
 };
 
-curvetext::ParagraphStyle style(double width = kWidth) {
+curvetext::ParagraphStyle style(double width = kWidth, const std::vector<std::string>& fonts = {kFontFile}) {
   curvetext::ParagraphStyle s;
-  s.default_style.fonts = {kFontFile};
+  s.default_style.fonts = fonts;
   s.default_style.size_px = kSize;
   s.width = width;
   return s;
@@ -227,22 +316,72 @@ int main(int argc, char** argv) {
   }
   // Rounds alternate between the two so that a change in machine load hits
   // both alike; each figure is the median of 7 rounds.
-  std::vector<double> ours, theirs;
-  for (int round = 0; round < 7; ++round) {
-    ours.push_back(round_rate(texts, [&](const std::string& t) {
-      sink += curvetext::Paragraph::layout(fonts, t, {}, style()).lines().size();
-    }));
-    theirs.push_back(round_rate(texts, [&](const std::string& t) {
-      int n = 0;
-      pango.line_starts(t, &n);
-      sink += static_cast<std::size_t>(n);
-    }));
-  }
-  const double a = median(ours), b = median(theirs);
+  const auto measure = [&](const std::vector<std::string>& set, const std::vector<std::string>& files,
+                           PangoSetup& with) {
+    std::vector<double> ours, theirs;
+    for (int round = 0; round < 7; ++round) {
+      ours.push_back(round_rate(set, [&](const std::string& t) {
+        sink += curvetext::Paragraph::layout(fonts, t, {}, style(kWidth, files)).lines().size();
+      }));
+      theirs.push_back(round_rate(set, [&](const std::string& t) {
+        int n = 0;
+        with.line_starts(t, &n);
+        sink += static_cast<std::size_t>(n);
+      }));
+    }
+    return std::pair{median(ours), median(theirs)};
+  };
+  const auto [a, b] = measure(texts, {kFontFile}, pango);
   std::printf("layout of %zu paragraphs (%s %.0f px, width %.0f px), per CPU second, median of 7 alternating rounds\n",
               texts.size(), kFontFile, kSize, kWidth);
   std::printf("  curvetext: %10.0f paragraphs/s\n", a);
   std::printf("  pango    : %10.0f paragraphs/s (pangoft2)\n", b);
   std::printf("  ratio    : %.2fx (target >= 2x)   [%zu]\n", a / b, sink % 10);
-  return 0;
+
+  // Other scripts: the same method, one table row per script, after a check
+  // that both sides draw with the same font files and a count of their lines.
+  struct Row {
+    std::string name;
+    std::size_t paragraphs;
+    int lines_ours, lines_pango;
+    double ours, pango;
+  };
+  std::vector<Row> rows;
+  bool all_same_files = true;
+  std::printf("\nother scripts (%.0f px, width %.0f px):\n", kSize, kWidth);
+  for (const ScriptSet& set : script_sets()) {
+    PangoSetup with(set.pango_family);
+    std::set<std::string> ours_files, pango_files;
+    int lines_ours = 0, lines_pango = 0;
+    for (const std::string& t : set.texts) {
+      const curvetext::Paragraph p = curvetext::Paragraph::layout(fonts, t, {}, style(kWidth, set.files));
+      lines_ours += static_cast<int>(p.lines().size());
+      for (const auto& line : p.lines())
+        for (const auto& run : line.runs) ours_files.insert(run.font->path() + "#" + std::to_string(run.font->face_index()));
+      int n = 0;
+      with.line_starts(t, &n);
+      lines_pango += n;
+      const auto f = with.font_files(t);
+      pango_files.insert(f.begin(), f.end());
+    }
+    const bool same = ours_files == pango_files;
+    all_same_files = all_same_files && same;
+    std::printf("  %-24s font files %s:", set.name, same ? "identical" : "DIFFER");
+    for (const auto& f : ours_files) std::printf(" %s", f.c_str());
+    if (!same) {
+      std::printf("  | Pango:");
+      for (const auto& f : pango_files) std::printf(" %s", f.c_str());
+    }
+    std::printf("\n");
+    const auto [x, y] = measure(set.texts, set.files, with);
+    rows.push_back({set.name, set.texts.size(), lines_ours, lines_pango, x, y});
+  }
+  std::printf("\n| script | paragraphs | lines curvetext / Pango | curvetext paragraphs/s | Pango paragraphs/s | ratio |\n");
+  std::printf("|---|---|---|---|---|---|\n");
+  std::printf("| Latin (English, German; DejaVu Sans) | %zu | | %.0f | %.0f | %.2fx |\n", texts.size(), a, b, a / b);
+  for (const Row& r : rows)
+    std::printf("| %s | %zu | %d / %d | %.0f | %.0f | %.2fx |\n", r.name.c_str(), r.paragraphs, r.lines_ours,
+                r.lines_pango, r.ours, r.pango, r.ours / r.pango);
+  std::printf("[%zu]\n", sink % 10);
+  return all_same_files ? 0 : 1;
 }

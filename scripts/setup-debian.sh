@@ -8,14 +8,17 @@ packages=(
   build-essential cmake pkg-config
   # fonts and text: outlines, shaping, bidi, line breaking, fallback
   libfreetype-dev libharfbuzz-dev libfribidi-dev libunibreak-dev libfontconfig-dev
+  # Unicode Character Database: the line break class table is generated from it at build time,
+  # and the conformance tests read its test files
+  unicode-data
   # headless GL: EGL + GLES2, Mesa's llvmpipe on machines without a GPU
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
   # images
   libpng-dev
   # tests and benchmarks
   googletest libgtest-dev libbenchmark-dev
-  # the incumbent layout engine the benchmarks compare with; Unicode's conformance data
-  libpango1.0-dev unicode-data
+  # the incumbent layout engine the benchmarks compare with
+  libpango1.0-dev
   # fonts: the default font (DejaVu Sans) and the test corpus
   fonts-dejavu-core fonts-dejavu-extra fonts-noto-core fonts-noto-cjk fonts-urw-base35
   fonts-inter-variable

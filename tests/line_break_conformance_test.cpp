@@ -1,5 +1,6 @@
 // Unicode's LineBreakTest.txt (Unicode 15.0) through curvetext's line
-// breaking layer (libunibreak 1.1 plus local corrections). Every case passes
+// breaking (lib/layout/line_break.cpp: Unicode 15 classes generated from
+// unicode-data, UAX #14 rules in one pass). Every case passes
 // or is listed with its reason in tests/fixtures/layout/linebreak_skips.txt;
 // a listed case that passes fails the test, so the list cannot go stale.
 // CURVETEXT_WRITE_LINEBREAK_SKIPS=FILE regenerates the list (reasons from the
@@ -18,8 +19,9 @@
 namespace curvetext {
 namespace {
 
-// What each UAX #14 rule that libunibreak 1.1 (Unicode 6.x) lacks or gets
-// differently is about, keyed by the rule number LineBreakTest.txt cites.
+// What each UAX #14 rule is about (for the reasons in the skip list), keyed by
+// the rule number LineBreakTest.txt cites. Many name what libunibreak 1.1
+// (Unicode 6.x), which curvetext's breaks came from before, lacked.
 const std::map<std::string, std::string>& rule_names() {
   static const std::map<std::string, std::string> names = {
       {"8.1", "LB8a: no break after ZWJ (Unicode 9)"},
@@ -108,7 +110,7 @@ TEST(LineBreakConformance, LineBreakTest) {
   std::ofstream out;
   if (write_path) {
     out.open(write_path);
-    out << "# LineBreakTest.txt (Unicode 15.0) cases that curvetext's line breaking (libunibreak 1.1 + corrections)\n"
+    out << "# LineBreakTest.txt (Unicode 15.0) cases that curvetext's line breaking (lib/layout/line_break.cpp)\n"
            "# gets wrong, with the first UAX #14 rule where the answer differs. <line>\\t<reason>\n";
   }
   std::map<std::string, int> by_rule;
@@ -152,6 +154,23 @@ TEST(LineBreakConformance, LineBreakTest) {
   for (const auto& [rule, count] : by_rule) std::printf("  %5d wrong at rule %s\n", count, rule.c_str());
   EXPECT_EQ(failed, 0);
   EXPECT_GT(passed, 5000);
+}
+
+// libunibreak's language tailorings apply over the Unicode 15 classes: in
+// Chinese, U+201C/U+201D are opening/closing punctuation (breaks allowed
+// before and after the pair), where Unicode's default class QU glues them.
+TEST(LineBreakConformance, LanguageTailoring) {
+  const std::u32string text = U"\u4E2D\u201C\u6587\u201D\u5B57";
+  const auto plain = line_breaks(text);
+  EXPECT_EQ(plain[0], BreakAction::None);
+  EXPECT_EQ(plain[3], BreakAction::None);
+  const auto zh = line_breaks(text, "zh");
+  EXPECT_EQ(zh[0], BreakAction::Allowed);
+  EXPECT_EQ(zh[1], BreakAction::None);
+  EXPECT_EQ(zh[2], BreakAction::None);
+  EXPECT_EQ(zh[3], BreakAction::Allowed);
+  EXPECT_EQ(zh[4], BreakAction::Mandatory);
+  EXPECT_EQ(line_breaks(text, "xx"), plain);
 }
 
 }  // namespace

@@ -1,21 +1,78 @@
-// Line breaking with libunibreak, corrected towards Unicode 15 (see the
-// header), and a compact grapheme cluster segmentation.
+// Line breaking (UAX #14, Unicode 15.0) and a compact grapheme cluster
+// segmentation.
+//
+// Classes come from line_break_table.inc, generated at build time from
+// Debian's unicode-data (LineBreak.txt, EastAsianWidth.txt, UnicodeData.txt,
+// emoji-data.txt) by tools/gen_line_break_table.cpp, with libunibreak's
+// language tailorings on top. The rules LB2-LB31 (LB25 in the regex form of
+// UAX #14 example 7, as LineBreakTest.txt uses) are one pass over the class
+// sequence. libunibreak 1.1's own pass (Unicode 6 rules and data) is no
+// longer run: correcting its result needed every rule anyway, and this pass
+// is cheaper than libunibreak's.
 
 #include "curvetext/line_break.hpp"
 
 #include <hb.h>
 #include <linebreak.h>
+#include <linebreakdef.h>
 
-#include <mutex>
+#include <cstdint>
+#include <cstring>
+#include <iterator>
 #include <string>
 
 namespace curvetext {
 
 namespace {
 
-void init_once() {
-  static std::once_flag flag;
-  std::call_once(flag, [] { init_linebreak(); });
+#include "line_break_table.inc"
+
+// UAX #14 Line_Break classes after LB1, in the generator's order
+// (tools/gen_line_break_table.cpp).
+enum class Lb : std::uint8_t {
+  BK, CR, LF, NL, SP, ZW, WJ, GL, CM, ZWJ, OP, CL, CP, QU, IS, SY, NS, EX, BA, BB, B2, HY, CB, HL,
+  AL, NU, PR, PO, ID, EB, EM, IN, H2, H3, JL, JV, JT, RI, AK, AP, AS, VI, VF
+};
+constexpr std::uint8_t kClassMask = 0x3F;
+constexpr std::uint8_t kWide = 0x40;                    // East_Asian_Width F, W or H
+constexpr std::uint8_t kPictographicUnassigned = 0x80;  // Extended_Pictographic and Cn
+
+std::uint8_t properties(char32_t c) {
+  if (c >= 0x110000) return static_cast<std::uint8_t>(Lb::AL);
+  return kLbBlocks[kLbStage1[c >> kLbBlockShift]][c & ((1u << kLbBlockShift) - 1)];
+}
+
+// libunibreak's classes, in its enum's order (linebreakdef.h), as ours; its
+// classes outside LB1's result are resolved as LB1 does (SA as AL: its
+// tailorings contain none).
+Lb from_libunibreak(int c) {
+  static constexpr Lb map[] = {Lb::AL /*Undefined*/, Lb::OP, Lb::CL, Lb::CP, Lb::QU, Lb::GL, Lb::NS, Lb::EX, Lb::SY,
+                               Lb::IS, Lb::PR, Lb::PO, Lb::NU, Lb::AL, Lb::HL, Lb::ID, Lb::IN, Lb::HY, Lb::BA,
+                               Lb::BB, Lb::B2, Lb::ZW, Lb::CM, Lb::WJ, Lb::H2, Lb::H3, Lb::JL, Lb::JV, Lb::JT,
+                               Lb::RI, Lb::AL /*AI*/, Lb::BK, Lb::CB, Lb::NS /*CJ*/, Lb::CR, Lb::LF, Lb::NL,
+                               Lb::AL /*SA*/, Lb::AL /*SG*/, Lb::SP, Lb::AL /*XX*/};
+  return c >= 0 && c < static_cast<int>(std::size(map)) ? map[c] : Lb::AL;
+}
+
+// The language tailorings of libunibreak (its lb_prop_lang_map: quotation
+// marks as opening/closing punctuation in German, French, Chinese, Japanese,
+// ...), applied over the Unicode 15 classes.
+void apply_tailoring(std::u32string_view text, std::string_view language, std::vector<std::uint8_t>& props) {
+  const std::string lang(language);
+  const LineBreakProperties* table = nullptr;
+  for (const LineBreakPropertiesLang* m = lb_prop_lang_map; m->lang != nullptr; ++m)
+    if (std::strncmp(lang.c_str(), m->lang, m->namelen) == 0) {
+      table = m->lbp;
+      break;
+    }
+  if (table == nullptr) return;
+  for (std::size_t i = 0; i < text.size(); ++i)
+    for (const LineBreakProperties* p = table; p->prop != LBP_Undefined; ++p)
+      if (text[i] >= p->start && text[i] <= p->end) {
+        props[i] = static_cast<std::uint8_t>((props[i] & ~kClassMask) |
+                                             static_cast<std::uint8_t>(from_libunibreak(p->prop)));
+        break;
+      }
 }
 
 hb_unicode_general_category_t category(char32_t c) {
@@ -54,40 +111,117 @@ Hangul hangul(char32_t c) {
 }  // namespace
 
 std::vector<BreakAction> line_breaks(std::u32string_view text, std::string_view language) {
-  init_once();
-  std::vector<BreakAction> result(text.size(), BreakAction::None);
-  if (text.empty()) return result;
-  std::vector<char> brks(text.size());
-  const std::string lang(language);
-  // libunibreak 1.1 has class RI in its data but not in its pair table, and
-  // asserts (aborting the process) on any regional indicator. Give it an
-  // ideograph instead, which breaks on both sides like RI (LB31), and apply
-  // LB30a (pairs stay together) below.
-  std::u32string input(text);
-  bool has_ri = false;
-  for (char32_t& c : input)
-    if (c >= 0x1F1E6 && c <= 0x1F1FF) {
-      c = 0x4E00;
-      has_ri = true;
+  const std::size_t n = text.size();
+  std::vector<BreakAction> result(n, BreakAction::None);
+  if (n == 0) return result;
+  std::vector<std::uint8_t> props(n);
+  for (std::size_t i = 0; i < n; ++i) props[i] = properties(text[i]);
+  if (!language.empty()) apply_tailoring(text, language, props);
+  const auto cls = [&](std::size_t i) { return static_cast<Lb>(props[i] & kClassMask); };
+  // The class of the first character at or after j that is not CM or ZWJ (a
+  // look-ahead for LB25 and LB28a, where LB9 lets marks sit in between).
+  const auto next_base = [&](std::size_t j) {
+    while (j < n && (cls(j) == Lb::CM || cls(j) == Lb::ZWJ)) ++j;
+    return j < n ? cls(j) : Lb::BK;
+  };
+  const auto is_aksara = [&](Lb c, char32_t ch) { return c == Lb::AK || c == Lb::AS || ch == 0x25CC; };
+
+  // State after character i-1, all on the sequence after LB9/LB10 (a base
+  // and the marks it carries count as the base):
+  Lb eff = cls(0);  // effective class
+  if (eff == Lb::CM || eff == Lb::ZWJ) eff = Lb::AL;  // LB10
+  std::uint8_t a_props = props[0];
+  char32_t a_char = text[0];
+  Lb a_prev = Lb::BK;        // the effective class before eff (sot reads as BK: matches no rule)
+  char32_t a_prev_char = 0;
+  Lb before_spaces = Lb::BK;  // when eff is SP: the effective class before the spaces
+  std::size_t ri_run = eff == Lb::RI ? 1 : 0;
+  // LB25 (tailored as in UAX #14 example 7): eff ends NU (NU|SY|IS)*, or that followed by CL/CP.
+  bool numeric = eff == Lb::NU, numeric_close = false;
+
+  // LB11-LB31 between effective classes a and b (b at index i).
+  const auto pair_action = [&](Lb a, Lb b, std::size_t i, Lb sp_base) {
+    constexpr BreakAction no = BreakAction::None, yes = BreakAction::Allowed;
+    if (a == Lb::WJ || b == Lb::WJ) return no;                                                  // LB11
+    if (a == Lb::GL) return no;                                                                 // LB12
+    if (b == Lb::GL && a != Lb::SP && a != Lb::BA && a != Lb::HY) return no;                    // LB12a
+    if (b == Lb::CL || b == Lb::CP || b == Lb::EX || b == Lb::IS || b == Lb::SY) return no;      // LB13
+    if (sp_base == Lb::OP) return no;                                                           // LB14
+    if (b == Lb::OP && sp_base == Lb::QU) return no;                                            // LB15
+    if (b == Lb::NS && (sp_base == Lb::CL || sp_base == Lb::CP)) return no;                     // LB16
+    if (b == Lb::B2 && sp_base == Lb::B2) return no;                                            // LB17
+    if (a == Lb::SP) return yes;                                                                // LB18
+    if (a == Lb::QU || b == Lb::QU) return no;                                                  // LB19
+    if (a == Lb::CB || b == Lb::CB) return yes;                                                 // LB20
+    if (b == Lb::BA || b == Lb::HY || b == Lb::NS || a == Lb::BB) return no;                    // LB21
+    if ((a == Lb::HY || a == Lb::BA) && a_prev == Lb::HL) return no;                            // LB21a
+    if (a == Lb::SY && b == Lb::HL) return no;                                                  // LB21b
+    if (b == Lb::IN) return no;                                                                 // LB22
+    const bool a_letter = a == Lb::AL || a == Lb::HL, b_letter = b == Lb::AL || b == Lb::HL;
+    if ((a_letter && b == Lb::NU) || (a == Lb::NU && b_letter)) return no;                      // LB23
+    const bool b_ideo = b == Lb::ID || b == Lb::EB || b == Lb::EM;
+    if ((a == Lb::PR && b_ideo) || ((a == Lb::ID || a == Lb::EB || a == Lb::EM) && b == Lb::PO)) return no;  // LB23a
+    const bool a_prpo = a == Lb::PR || a == Lb::PO, b_prpo = b == Lb::PR || b == Lb::PO;
+    if ((a_prpo && b_letter) || (a_letter && b_prpo)) return no;                                // LB24
+    if (a_prpo && (b == Lb::NU || ((b == Lb::OP || b == Lb::HY) && next_base(i + 1) == Lb::NU))) return no;  // LB25
+    if ((a == Lb::OP || a == Lb::HY) && b == Lb::NU) return no;
+    if (numeric && (b == Lb::NU || b == Lb::SY || b == Lb::IS || b == Lb::CL || b == Lb::CP)) return no;
+    if ((numeric || numeric_close) && b_prpo) return no;
+    if ((a == Lb::JL && (b == Lb::JL || b == Lb::JV || b == Lb::H2 || b == Lb::H3)) ||         // LB26
+        ((a == Lb::JV || a == Lb::H2) && (b == Lb::JV || b == Lb::JT)) ||
+        ((a == Lb::JT || a == Lb::H3) && b == Lb::JT))
+      return no;
+    const bool a_korean = a == Lb::JL || a == Lb::JV || a == Lb::JT || a == Lb::H2 || a == Lb::H3;
+    const bool b_korean = b == Lb::JL || b == Lb::JV || b == Lb::JT || b == Lb::H2 || b == Lb::H3;
+    if ((a_korean && b == Lb::PO) || (a == Lb::PR && b_korean)) return no;                      // LB27
+    if (a_letter && b_letter) return no;                                                        // LB28
+    const bool a_aksara = is_aksara(a, a_char), b_aksara = is_aksara(b, text[i]);              // LB28a
+    if (a == Lb::AP && b_aksara) return no;
+    if (a_aksara && (b == Lb::VF || b == Lb::VI)) return no;
+    if (a == Lb::VI && is_aksara(a_prev, a_prev_char) && (b == Lb::AK || text[i] == 0x25CC)) return no;
+    if (a_aksara && b_aksara && next_base(i + 1) == Lb::VF) return no;
+    if (a == Lb::IS && b_letter) return no;                                                     // LB29
+    if ((a_letter || a == Lb::NU) && b == Lb::OP && !(props[i] & kWide)) return no;            // LB30
+    if (a == Lb::CP && !(a_props & kWide) && (b_letter || b == Lb::NU)) return no;
+    if (a == Lb::RI && b == Lb::RI && ri_run % 2 == 1) return no;                               // LB30a
+    if (b == Lb::EM && (a == Lb::EB || (a_props & kPictographicUnassigned))) return no;         // LB30b
+    return yes;                                                                                 // LB31
+  };
+
+  for (std::size_t i = 1; i < n; ++i) {
+    const Lb raw_a = cls(i - 1);
+    Lb cb = cls(i);
+    BreakAction action;
+    bool absorbed = false;
+    const Lb sp_base = eff == Lb::SP ? before_spaces : eff;
+    if (raw_a == Lb::BK) action = BreakAction::Mandatory;                                         // LB4
+    else if (raw_a == Lb::CR && cb == Lb::LF) action = BreakAction::None;                          // LB5
+    else if (raw_a == Lb::CR || raw_a == Lb::LF || raw_a == Lb::NL) action = BreakAction::Mandatory;
+    else if (cb == Lb::BK || cb == Lb::CR || cb == Lb::LF || cb == Lb::NL) action = BreakAction::None;  // LB6
+    else if (cb == Lb::SP || cb == Lb::ZW) action = BreakAction::None;                              // LB7
+    else if (sp_base == Lb::ZW) action = BreakAction::Allowed;                                    // LB8
+    else if (raw_a == Lb::ZWJ) action = BreakAction::None;                                        // LB8a
+    else if ((cb == Lb::CM || cb == Lb::ZWJ) && eff != Lb::SP) {
+      action = BreakAction::None;  // LB9 (eff is never BK, CR, LF, NL or ZW here)
+      absorbed = true;
+    } else {
+      action = pair_action(eff, cb == Lb::CM || cb == Lb::ZWJ ? Lb::AL : cb, i, sp_base);  // LB10
     }
-  set_linebreaks_utf32(reinterpret_cast<const utf32_t*>(input.data()), input.size(),
-                       lang.empty() ? nullptr : lang.c_str(), brks.data());
-  // LB8a (Unicode 9): no break after ZERO WIDTH JOINER, which 1.1 classes as
-  // CM with a break opportunity after it in some contexts.
-  for (std::size_t i = 0; i + 1 < text.size(); ++i)
-    if (text[i] == 0x200D && brks[i] == LINEBREAK_ALLOWBREAK) brks[i] = LINEBREAK_NOBREAK;
-  if (has_ri) {
-    std::size_t run = 0;
-    for (std::size_t i = 0; i + 1 < text.size(); ++i) {
-      run = is_regional_indicator(text[i]) ? run + 1 : 0;
-      // LB30a: RI x RI when an odd number of RIs precede the break.
-      if (run % 2 == 1 && is_regional_indicator(text[i + 1])) brks[i] = LINEBREAK_NOBREAK;
-    }
+    result[i - 1] = action;
+    if (absorbed) continue;
+    if (cb == Lb::CM || cb == Lb::ZWJ) cb = Lb::AL;  // LB10
+    // ... and the state after character i.
+    if (cb == Lb::SP && eff != Lb::SP) before_spaces = eff;
+    numeric_close = numeric && (cb == Lb::CL || cb == Lb::CP);
+    numeric = cb == Lb::NU || (numeric && (cb == Lb::SY || cb == Lb::IS));
+    ri_run = cb == Lb::RI ? ri_run + 1 : 0;
+    a_prev = eff;
+    a_prev_char = a_char;
+    eff = cb;
+    a_props = props[i];
+    a_char = text[i];
   }
-  for (std::size_t i = 0; i < text.size(); ++i)
-    result[i] = brks[i] == LINEBREAK_MUSTBREAK    ? BreakAction::Mandatory
-                : brks[i] == LINEBREAK_ALLOWBREAK ? BreakAction::Allowed
-                                                  : BreakAction::None;
+  result[n - 1] = BreakAction::Mandatory;  // LB3
   return result;
 }
 

@@ -1,11 +1,11 @@
-// Line break opportunities (UAX #14) through libunibreak, and grapheme cluster
-// boundaries (UAX #29, simplified; see grapheme_boundaries) for caret movement.
+// Line break opportunities (UAX #14, Unicode 15.0: classes generated at build
+// time from Debian's unicode-data, libunibreak's language tailorings), and
+// grapheme cluster boundaries (UAX #29, simplified; see grapheme_boundaries)
+// for caret movement.
 //
-// Debian 12 ships libunibreak 1.1 (2012, Unicode 6.x tables and rules). The
-// layer below corrects what it gets wrong against Unicode 15 where the fix is
-// local (see line_break.cpp); what is left is listed, with reasons, in
-// tests/fixtures/layout/linebreak_skips.txt and checked by
-// tests/line_break_conformance_test.cpp.
+// tests/line_break_conformance_test.cpp runs LineBreakTest.txt (Unicode 15.0);
+// cases still wrong would be listed, with reasons, in
+// tests/fixtures/layout/linebreak_skips.txt (none are).
 #pragma once
 
 #include <cstdint>
@@ -21,7 +21,7 @@ enum class BreakAction : std::uint8_t {
 };
 
 // One action per code point: whether a line may end after it. `language` (BCP
-// 47, may be empty) selects libunibreak's tailorings (e.g. "de", "zh", "ja").
+// 47, may be empty) selects libunibreak's class tailorings (e.g. "de", "zh", "ja").
 std::vector<BreakAction> line_breaks(std::u32string_view text, std::string_view language = {});
 
 // One flag per code point: true where a grapheme cluster starts. Covers the
