@@ -107,7 +107,7 @@ struct Renderer::Impl {
 
   // vbaa / msaa: the second pass's program and offscreen targets.
   GLuint resolve_program = 0;
-  GLint u_r_texture = -1, u_r_texture_size = -1, u_r_rect_origin = -1, u_r_target_height = -1, u_r_r = -1,
+  GLint u_r_texture = -1, u_r_texture_size = -1, u_r_rect_origin = -1, u_r_r = -1,
         u_r_ring = -1, u_r_color = -1;
   GLuint quad_vbo = 0;
   GLuint off_fbo = 0, off_tex = 0;
@@ -242,6 +242,7 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
     glAttachShader(r.resolve_program, rvs.id);
     glAttachShader(r.resolve_program, rfs.id);
     glBindAttribLocation(r.resolve_program, 0, "a_clip");
+    glBindAttribLocation(r.resolve_program, 1, "a_pixel");
     glLinkProgram(r.resolve_program);
     GLint linked = GL_FALSE;
     glGetProgramiv(r.resolve_program, GL_LINK_STATUS, &linked);
@@ -249,7 +250,6 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
     r.u_r_texture = glGetUniformLocation(r.resolve_program, "u_texture");
     r.u_r_texture_size = glGetUniformLocation(r.resolve_program, "u_texture_size");
     r.u_r_rect_origin = glGetUniformLocation(r.resolve_program, "u_rect_origin");
-    r.u_r_target_height = glGetUniformLocation(r.resolve_program, "u_target_height");
     r.u_r_r = glGetUniformLocation(r.resolve_program, "u_r");
     r.u_r_ring = glGetUniformLocation(r.resolve_program, "u_ring");
     r.u_r_color = glGetUniformLocation(r.resolve_program, "u_color");
@@ -270,7 +270,7 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
   if (major >= 3) {
     GLint samples = 0;
     glGetIntegerv(GL_MAX_SAMPLES, &samples);
-    r.max_samples = std::min(samples, 8);
+    r.max_samples = std::min(samples, 16);  // the most offered, capped at 16 (llvmpipe: 4)
   }
   glGetError();  // a GLES2-only context may reject GL_MAX_SAMPLES
 }
@@ -481,7 +481,6 @@ bool Renderer::draw_offscreen(const DrawBatch::Impl& b, const Transform& full, f
   glUniform1i(r.u_r_texture, 0);
   glUniform2f(r.u_r_texture_size, static_cast<float>(tw), static_cast<float>(th));
   glUniform2f(r.u_r_rect_origin, static_cast<float>(x0), static_cast<float>(y0));
-  glUniform1f(r.u_r_target_height, vh);
   glUniform1f(r.u_r_r, static_cast<float>(factor));
   glUniform1f(r.u_r_ring, msaa ? 0.0f : std::clamp(options.vbaa_ring, 0.0f, 1.0f));
   const Color& c = options.color;
@@ -490,15 +489,24 @@ bool Renderer::draw_offscreen(const DrawBatch::Impl& b, const Transform& full, f
               std::clamp(c.b, 0.0f, 1.0f) * a, a);
   const float cx0 = 2.0f * static_cast<float>(x0) / vw - 1.0f, cx1 = 2.0f * static_cast<float>(x1) / vw - 1.0f;
   const float cy0 = 1.0f - 2.0f * static_cast<float>(y0) / vh, cy1 = 1.0f - 2.0f * static_cast<float>(y1) / vh;
-  const GLfloat quad[12] = {cx0, cy0, cx1, cy0, cx1, cy1, cx0, cy0, cx1, cy1, cx0, cy1};
+  // Each corner as (clip x, clip y, pixel x, pixel y down); the pixel
+  // position reaches the fragment stage as a highp varying (resolve.vert.glsl).
+  const GLfloat px0 = static_cast<GLfloat>(x0), px1 = static_cast<GLfloat>(x1);
+  const GLfloat py0 = static_cast<GLfloat>(y0), py1 = static_cast<GLfloat>(y1);
+  const GLfloat quad[24] = {cx0, cy0, px0, py0, cx1, cy0, px1, py0, cx1, cy1, px1, py1,
+                            cx0, cy0, px0, py0, cx1, cy1, px1, py1, cx0, cy1, px0, py1};
   glBindBuffer(GL_ARRAY_BUFFER, r.quad_vbo);
   glBufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STREAM_DRAW);
   glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 4 * sizeof(GLfloat), nullptr);
+  glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, 4 * sizeof(GLfloat),
+                        reinterpret_cast<const void*>(2 * sizeof(GLfloat)));
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   glDrawArrays(GL_TRIANGLES, 0, 6);
   glDisableVertexAttribArray(0);
+  glDisableVertexAttribArray(1);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   glBindTexture(GL_TEXTURE_2D, 0);
   if (GLenum err = glGetError(); err != GL_NO_ERROR) {

@@ -135,8 +135,8 @@ class Renderer {
   void begin(int width, int height, Color background);
   // Premultiplied source-over blending of `color` * coverage.
   void draw(const DrawBatch& batch, const Placement& placement, const DrawOptions& options);
-  // Samples per pixel msaa uses here (0 where the context has no multisampled
-  // renderbuffers).
+  // Samples per pixel msaa uses here: GL_MAX_SAMPLES capped at 16 (llvmpipe
+  // offers 4); 0 where the context has no multisampled renderbuffers.
   int msaa_samples() const;
   // The framebuffer as straight-alpha RGBA, row 0 at the top.
   Image read_pixels();
