@@ -12,6 +12,7 @@ uniform vec2 u_rect_origin;   // framebuffer pixel (x, y down) of texel block (0
 uniform float u_r;            // texels per pixel, 1..8
 uniform float u_ring;
 uniform vec4 u_color;         // premultiplied
+uniform float u_coverage_exponent;  // 1 / gamma, applied after filtering
 
 varying vec2 v_pixel;         // framebuffer pixels, y down (see resolve.vert.glsl)
 
@@ -39,5 +40,5 @@ void main() {
   }
   float coverage = sum / total;
   if (coverage <= 0.0) discard;
-  gl_FragColor = u_color * coverage;
+  gl_FragColor = u_color * (u_coverage_exponent == 1.0 ? coverage : pow(coverage, u_coverage_exponent));
 }

@@ -51,6 +51,16 @@ inline constexpr double kOffscreenBorderPx = 2.0;
 // itself degrades to a smaller factor or to full.
 inline constexpr double kAutoVbaaMaxPx = 384.0;
 
+// vbaa's "paper" filter (DrawOptions::vbaa_ring): horizontal and vertical
+// neighbouring texels weighted 0.5, diagonal ones 0.25, against 1 under the
+// pixel (dimensionless weights; bench/quality_bench rows vbaa-ringR).
+inline constexpr float kVbaaPaperRing = 0.5f;
+
+// Coverage gamma (DrawOptions::gamma, --gamma), dimensionless exponent
+// 1/gamma applied to coverage in [0, 1]: limits of what is accepted.
+inline constexpr double kMinCoverageGamma = 0.25;
+inline constexpr double kMaxCoverageGamma = 4.0;
+
 // --- Level of detail ---------------------------------------------------------
 // Meshes of glyphs with cubics are built per power-of-two pixels-per-em band;
 // the band's upper end is used to choose the cubic tolerance.
