@@ -17,7 +17,8 @@
 // over the edge band, the largest single-pixel error, and the ink ratio.
 //
 // Usage: quality_bench [--sizes 8,10,...] [--modes none,curves,full,...]
-//                      [--quick] [--check]
+//                      [--quick] [--check] [--dump]
+//   modes: any --aa mode, or vbaa-ringR (vbaa's filter with ring weight R).
 //   --check exits 1 when a target of issue 4 is missed (targets printed).
 #include <ft2build.h>
 #include FT_FREETYPE_H
@@ -236,7 +237,10 @@ int main(int argc, char** argv) {
               test::place_outline(test::line_outline(font, layout.line), layout.placement);
           const test::Coverage reference = test::union_coverage(pixel_outline, layout.width, layout.height);
           for (const std::string& m : modes) {
-            options.antialiasing = parse_antialiasing(m);
+            // "vbaa-ringR": vbaa with DrawOptions::vbaa_ring = R.
+            const std::size_t ring_at = m.find("-ring");
+            options.antialiasing = parse_antialiasing(m.substr(0, ring_at));
+            options.vbaa_ring = ring_at == std::string::npos ? 0.0f : std::stof(m.substr(ring_at + 5));
             const Image image = render_text_image(renderer, cache, font, layout, options);
             const test::Coverage result = test::coverage_from_black_on_white(image);
             const test::CoverageStats st = test::compare(result, reference);

@@ -6,6 +6,8 @@ precision highp float;
 uniform vec4 u_color;       // premultiplied
 uniform int u_aa;           // 0 none, 1 curves, 2 full
 uniform int u_curve_mode;   // 0 exact, 1 paper
+uniform float u_coverage_exponent;  // 1 / gamma (DrawOptions::gamma)
+uniform int u_debug;        // 0 off, 1 discarded curve pixels shown, 2 triangle edges (flat)
 
 varying vec4 v_coef;
 varying vec4 v_info;
@@ -199,6 +201,10 @@ void fold_near_curve(inout float cov, inout vec2 nacc, float t1, float t2, float
 }
 
 void main() {
+  if (u_debug == 2) {
+    gl_FragColor = vec4(0.05, 0.35, 0.95, 1.0);
+    return;
+  }
   float kind = floor(v_info.x + 0.5);
   float coverage = 1.0;
   vec2 nacc = vec2(0.0);
@@ -279,6 +285,13 @@ void main() {
     fold_line(coverage, nacc, v_fade.x);
     fold_line(coverage, nacc, v_fade.y);
   }
-  if (coverage <= 0.0) discard;
-  gl_FragColor = u_color * coverage;
+  if (coverage <= 0.0) {
+    // Debug (paper Figure 1): what a curved triangle throws away.
+    if (u_debug == 1 && kind > 1.5 && kind < 2.5) {
+      gl_FragColor = vec4(1.0, 0.45, 0.0, 1.0);
+      return;
+    }
+    discard;
+  }
+  gl_FragColor = u_color * (u_coverage_exponent == 1.0 ? coverage : pow(coverage, u_coverage_exponent));
 }

@@ -9,16 +9,18 @@ precision highp float;
 uniform sampler2D u_texture;
 uniform vec2 u_texture_size;  // texels
 uniform vec2 u_rect_origin;   // framebuffer pixel (x, y down) of texel block (0, 0)
-uniform float u_target_height;
 uniform float u_r;            // texels per pixel, 1..8
 uniform float u_ring;
 uniform vec4 u_color;         // premultiplied
+uniform float u_coverage_exponent;  // 1 / gamma, applied after filtering
+
+varying vec2 v_pixel;         // framebuffer pixels, y down (see resolve.vert.glsl)
 
 float weight(float i) { return (i < 0.0 || i >= u_r) ? u_ring : 1.0; }
 
 void main() {
-  float px = floor(gl_FragCoord.x) - u_rect_origin.x;
-  float py = u_target_height - 1.0 - floor(gl_FragCoord.y) - u_rect_origin.y;  // rows down
+  float px = floor(v_pixel.x) - u_rect_origin.x;
+  float py = floor(v_pixel.y) - u_rect_origin.y;  // rows down
   float sum = 0.0;
   float total = 0.0;
   for (int j = -1; j <= 8; ++j) {
@@ -38,5 +40,5 @@ void main() {
   }
   float coverage = sum / total;
   if (coverage <= 0.0) discard;
-  gl_FragColor = u_color * coverage;
+  gl_FragColor = u_color * (u_coverage_exponent == 1.0 ? coverage : pow(coverage, u_coverage_exponent));
 }

@@ -158,6 +158,37 @@ TEST(Vbaa, OffscreenPassIsReusedWhileNothingChanges) {
   EXPECT_EQ(g.renderer.offscreen_passes(), before + 2);
 }
 
+// Regression: the filter pass found its pixel from gl_FragCoord, which GLSL
+// ES 1.00 declares mediump; llvmpipe lowers that to 16-bit floats, whose
+// spacing is 1 px from 1024 to 2048, so x + 0.5 rounded to even and every odd
+// column there read its neighbour (at 96 px and up, the right end of a
+// block lost a column: largest error 0.94-1.0). Text placed past x = 1024
+// must match exact coverage pixel by pixel in both offscreen modes.
+TEST(Vbaa, ColumnsPast1024PxAreKept) {
+  const Font font = Font::open(test::kDejaVuSans);
+  for (AntiAliasing aa : {AntiAliasing::Vbaa, AntiAliasing::Msaa}) {
+    if (aa == AntiAliasing::Msaa && gpu().renderer.msaa_samples() < 2) continue;
+    TextImageOptions options;
+    options.size_px = 24.0;
+    options.margin_px = 1100.0;  // the text lies between x = 1100 and 1300
+    options.antialiasing = aa;
+    const TextImageLayout layout = layout_text_image(font, "Hamburgefontsiv", options);
+    const Image image = render_text_image(gpu().renderer, gpu().cache, font, layout, options);
+    const test::Coverage result = test::coverage_from_black_on_white(image);
+    const test::Coverage reference = test::union_coverage(
+        test::place_outline(test::line_outline(font, layout.line), layout.placement), layout.width, layout.height);
+    const test::CoverageStats st = test::compare(result, reference);
+    const std::string name = aa == AntiAliasing::Vbaa ? "vbaa_past1024" : "msaa_past1024";
+    std::printf("%s edge %.4f max %.3f\n", name.c_str(), st.edge_mean_abs, st.max_abs);
+    // vbaa measures max 0.04-0.08 at every size, msaa (4 samples) 0.5-0.54;
+    // a lost column is 1.0 and doubles the edge error.
+    const double max_limit = aa == AntiAliasing::Vbaa ? 0.15 : 0.6;
+    if (st.max_abs > max_limit) test::write_comparison(name, result, reference);
+    EXPECT_LE(st.max_abs, max_limit) << name;
+    EXPECT_LE(st.edge_mean_abs, aa == AntiAliasing::Vbaa ? 0.01 : 0.08) << name;
+  }
+}
+
 // msaa where the context has multisampled renderbuffers (llvmpipe: GLES 3.2).
 TEST(Msaa, SamplesGiveRightInk) {
   if (gpu().renderer.msaa_samples() < 2) GTEST_SKIP() << "no multisampled renderbuffers";

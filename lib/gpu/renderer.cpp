@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
+#include <vector>
 #include <cstdlib>
 #include <cmath>
 #include <cstdio>
@@ -26,6 +28,32 @@ AntiAliasing parse_antialiasing(std::string_view text) {
   if (text == "auto") return AntiAliasing::Auto;
   throw Error(ErrorCode::InvalidArgument,
               "unknown antialiasing mode '" + std::string(text) + "' (use none, curves, full, vbaa, msaa or auto)");
+}
+
+Blending parse_blending(std::string_view text) {
+  if (text == "srgb") return Blending::Srgb;
+  if (text == "linear") return Blending::Linear;
+  throw Error(ErrorCode::InvalidArgument, "unknown blending '" + std::string(text) + "' (use srgb or linear)");
+}
+
+float parse_vbaa_filter(std::string_view text) {
+  if (text == "box") return 0.0f;
+  if (text == "paper") return tolerance::kVbaaPaperRing;
+  double v = 0.0;
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc() || ptr != text.data() + text.size() || !std::isfinite(v) || v < 0.0 || v > 1.0)
+    throw Error(ErrorCode::InvalidArgument, "unknown vbaa filter '" + std::string(text) +
+                                                "' (use box, paper, or a ring weight from 0 to 1)");
+  return static_cast<float>(v);
+}
+
+void check_coverage_gamma(double gamma, std::string_view what) {
+  if (!std::isfinite(gamma) || gamma < tolerance::kMinCoverageGamma || gamma > tolerance::kMaxCoverageGamma) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, " must be a number from %g to %g, got %g", tolerance::kMinCoverageGamma,
+                  tolerance::kMaxCoverageGamma, gamma);
+    throw Error(ErrorCode::InvalidArgument, std::string(what) + buf);
+  }
 }
 
 CurveMode parse_curve_mode(std::string_view text) {
@@ -94,21 +122,44 @@ void compile(const Shader& shader, GLenum type, const char* source, bool gles) {
   }
 }
 
+// sRGB transfer functions (IEC 61966-2-1), on values in [0, 1].
+float srgb_to_linear(float c) {
+  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+float linear_to_srgb(float c) {
+  return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+}
+
+// `c` premultiplied, in the space the framebuffer blends in.
+std::array<float, 4> premultiplied(const Color& c, Blending blending) {
+  const float a = std::clamp(c.a, 0.0f, 1.0f);
+  std::array<float, 4> out{std::clamp(c.r, 0.0f, 1.0f), std::clamp(c.g, 0.0f, 1.0f), std::clamp(c.b, 0.0f, 1.0f), a};
+  for (int i = 0; i < 3; ++i) {
+    if (blending == Blending::Linear) out[i] = srgb_to_linear(out[i]);
+    out[i] *= a;
+  }
+  return out;
+}
+
 }  // namespace
 
 struct Renderer::Impl {
   GLuint program = 0;
   GLint a_pos = -1, a_coef = -1, a_info = -1, a_fade = -1;
   GLint u_transform = -1, u_viewport = -1, u_fringe_px = -1, u_color = -1,
-        u_aa = -1, u_curve_mode = -1;
+        u_aa = -1, u_curve_mode = -1, u_coverage_exponent = -1, u_debug = -1;
+  Blending blending = Blending::Srgb;  // of the target begin() made
+  bool gles = true;
+  GLuint debug_ibo = 0;  // --debug: GL_LINES indices over the triangles
+  std::size_t debug_ibo_vertices = 0;
   GLuint framebuffer = 0;
   GLuint texture = 0;
   int width = 0, height = 0;
 
   // vbaa / msaa: the second pass's program and offscreen targets.
   GLuint resolve_program = 0;
-  GLint u_r_texture = -1, u_r_texture_size = -1, u_r_rect_origin = -1, u_r_target_height = -1, u_r_r = -1,
-        u_r_ring = -1, u_r_color = -1;
+  GLint u_r_texture = -1, u_r_texture_size = -1, u_r_rect_origin = -1, u_r_r = -1,
+        u_r_ring = -1, u_r_color = -1, u_r_coverage_exponent = -1;
   GLuint quad_vbo = 0;
   GLuint off_fbo = 0, off_tex = 0;
   int off_w = 0, off_h = 0;
@@ -178,6 +229,7 @@ struct Renderer::Impl {
     if (program != 0) glDeleteProgram(program);
     if (resolve_program != 0) glDeleteProgram(resolve_program);
     if (quad_vbo != 0) glDeleteBuffers(1, &quad_vbo);
+    if (debug_ibo != 0) glDeleteBuffers(1, &debug_ibo);
     if (off_fbo != 0) glDeleteFramebuffers(1, &off_fbo);
     if (off_tex != 0) glDeleteTextures(1, &off_tex);
     if (ms_fbo != 0) glDeleteFramebuffers(1, &ms_fbo);
@@ -232,6 +284,9 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
   r.u_color = glGetUniformLocation(r.program, "u_color");
   r.u_aa = glGetUniformLocation(r.program, "u_aa");
   r.u_curve_mode = glGetUniformLocation(r.program, "u_curve_mode");
+  r.u_coverage_exponent = glGetUniformLocation(r.program, "u_coverage_exponent");
+  r.u_debug = glGetUniformLocation(r.program, "u_debug");
+  r.gles = gles;
 
   // The vbaa / msaa filter pass.
   {
@@ -242,6 +297,7 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
     glAttachShader(r.resolve_program, rvs.id);
     glAttachShader(r.resolve_program, rfs.id);
     glBindAttribLocation(r.resolve_program, 0, "a_clip");
+    glBindAttribLocation(r.resolve_program, 1, "a_pixel");
     glLinkProgram(r.resolve_program);
     GLint linked = GL_FALSE;
     glGetProgramiv(r.resolve_program, GL_LINK_STATUS, &linked);
@@ -249,10 +305,10 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
     r.u_r_texture = glGetUniformLocation(r.resolve_program, "u_texture");
     r.u_r_texture_size = glGetUniformLocation(r.resolve_program, "u_texture_size");
     r.u_r_rect_origin = glGetUniformLocation(r.resolve_program, "u_rect_origin");
-    r.u_r_target_height = glGetUniformLocation(r.resolve_program, "u_target_height");
     r.u_r_r = glGetUniformLocation(r.resolve_program, "u_r");
     r.u_r_ring = glGetUniformLocation(r.resolve_program, "u_ring");
     r.u_r_color = glGetUniformLocation(r.resolve_program, "u_color");
+    r.u_r_coverage_exponent = glGetUniformLocation(r.resolve_program, "u_coverage_exponent");
     glGenBuffers(1, &r.quad_vbo);
   }
   GLint max_texture = 0, max_renderbuffer = 0, max_viewport[2] = {0, 0};
@@ -270,14 +326,14 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
   if (major >= 3) {
     GLint samples = 0;
     glGetIntegerv(GL_MAX_SAMPLES, &samples);
-    r.max_samples = std::min(samples, 8);
+    r.max_samples = std::min(samples, 16);  // the most offered, capped at 16 (llvmpipe: 4)
   }
   glGetError();  // a GLES2-only context may reject GL_MAX_SAMPLES
 }
 
 Renderer::~Renderer() = default;
 
-void Renderer::begin(int width, int height, Color background) {
+void Renderer::begin(int width, int height, Color background, Blending blending) {
   Impl& r = *impl_;
   if (width <= 0 || height <= 0) {
     throw Error(ErrorCode::InvalidArgument,
@@ -295,7 +351,7 @@ void Renderer::begin(int width, int height, Color background) {
                                                 std::to_string(height) + " exceeds the GL maximum of " +
                                                 std::to_string(limit) + " pixels per side");
   }
-  if (r.framebuffer == 0 || r.width != width || r.height != height) {
+  if (r.framebuffer == 0 || r.width != width || r.height != height || r.blending != blending) {
     r.release_target();
     glGenTextures(1, &r.texture);
     glBindTexture(GL_TEXTURE_2D, r.texture);
@@ -304,7 +360,12 @@ void Renderer::begin(int width, int height, Color background) {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     // RGBA/UNSIGNED_BYTE is colour-renderable in every GLES2 implementation.
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    // Linear blending: an sRGB texture, which GL decodes before blending and
+    // encodes after (always on in GLES 3; desktop GL needs GL_FRAMEBUFFER_SRGB).
+    if (blending == Blending::Linear)
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    else
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
     glBindTexture(GL_TEXTURE_2D, 0);
     if (GLenum err = glGetError(); err != GL_NO_ERROR) {
       r.release_target();
@@ -321,13 +382,18 @@ void Renderer::begin(int width, int height, Color background) {
     }
     r.width = width;
     r.height = height;
+    r.blending = blending;
+  }
+  if (!r.gles) {
+    constexpr GLenum kFramebufferSrgb = 0x8DB9;  // GL_FRAMEBUFFER_SRGB (desktop GL only)
+    if (blending == Blending::Linear) glEnable(kFramebufferSrgb);
+    else glDisable(kFramebufferSrgb);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, r.framebuffer);
   glViewport(0, 0, width, height);
   glDisable(GL_SCISSOR_TEST);
-  const float a = std::clamp(background.a, 0.0f, 1.0f);
-  glClearColor(std::clamp(background.r, 0.0f, 1.0f) * a, std::clamp(background.g, 0.0f, 1.0f) * a,
-               std::clamp(background.b, 0.0f, 1.0f) * a, a);
+  const std::array<float, 4> bg = premultiplied(background, blending);
+  glClearColor(bg[0], bg[1], bg[2], bg[3]);
   glClear(GL_COLOR_BUFFER_BIT);
 }
 
@@ -358,6 +424,14 @@ void Renderer::draw(const DrawBatch& batch, const Placement& placement, const Dr
   // projective transform.
   const Transform full =
       placement.transform * Transform{{s, 0.0, placement.origin_x, 0.0, -s, placement.origin_y, 0.0, 0.0, 1.0}};
+  if (options.debug) {
+    DrawOptions shown = options;
+    if (shown.antialiasing == AntiAliasing::Vbaa || shown.antialiasing == AntiAliasing::Msaa)
+      shown.antialiasing = AntiAliasing::Full;
+    draw_curves(b, full, vw, vh, shown);
+    draw_debug_edges(b, full, vw, vh);
+    return;
+  }
   if (options.antialiasing == AntiAliasing::Vbaa || options.antialiasing == AntiAliasing::Msaa) {
     GLint target_fbo = 0;
     glGetIntegerv(GL_FRAMEBUFFER_BINDING, &target_fbo);
@@ -381,10 +455,11 @@ void Renderer::draw_curves(const DrawBatch::Impl& b, const Transform& full, floa
   glUniform2f(r.u_viewport, vw, vh);
   const bool full_aa = options.antialiasing == AntiAliasing::Full || options.antialiasing == AntiAliasing::Auto;
   glUniform1f(r.u_fringe_px, full_aa ? tolerance::kFringeWidthPx : 0.0f);
-  const Color& c = options.color;
-  const float a = std::clamp(c.a, 0.0f, 1.0f);
-  glUniform4f(r.u_color, std::clamp(c.r, 0.0f, 1.0f) * a, std::clamp(c.g, 0.0f, 1.0f) * a,
-              std::clamp(c.b, 0.0f, 1.0f) * a, a);
+  const std::array<float, 4> color = premultiplied(options.color, r.blending);
+  glUniform4f(r.u_color, color[0], color[1], color[2], color[3]);
+  glUniform1f(r.u_coverage_exponent, 1.0f / std::clamp(options.gamma, static_cast<float>(tolerance::kMinCoverageGamma),
+                                                       static_cast<float>(tolerance::kMaxCoverageGamma)));
+  glUniform1i(r.u_debug, options.debug ? 1 : 0);
   glUniform1i(r.u_aa, options.antialiasing == AntiAliasing::None     ? 0
                       : options.antialiasing == AntiAliasing::Curves ? 1
                                                                      : 2);
@@ -465,7 +540,11 @@ bool Renderer::draw_offscreen(const DrawBatch::Impl& b, const Transform& full, f
     DrawOptions pass = options;
     pass.color = Color{1, 1, 1, 1};
     pass.antialiasing = msaa ? AntiAliasing::None : AntiAliasing::Full;
+    pass.gamma = 1.0f;  // applied after the filter
+    const Blending target_blending = r.blending;
+    r.blending = Blending::Srgb;  // the coverage texture is plain RGBA
     draw_curves(b, to_texture, static_cast<float>(tw), static_cast<float>(th), pass);
+    r.blending = target_blending;
     if (msaa) r.resolve_multisample(tw, th);
     r.offscreen_key = key;
     r.offscreen_valid = true;
@@ -481,30 +560,83 @@ bool Renderer::draw_offscreen(const DrawBatch::Impl& b, const Transform& full, f
   glUniform1i(r.u_r_texture, 0);
   glUniform2f(r.u_r_texture_size, static_cast<float>(tw), static_cast<float>(th));
   glUniform2f(r.u_r_rect_origin, static_cast<float>(x0), static_cast<float>(y0));
-  glUniform1f(r.u_r_target_height, vh);
   glUniform1f(r.u_r_r, static_cast<float>(factor));
   glUniform1f(r.u_r_ring, msaa ? 0.0f : std::clamp(options.vbaa_ring, 0.0f, 1.0f));
-  const Color& c = options.color;
-  const float a = std::clamp(c.a, 0.0f, 1.0f);
-  glUniform4f(r.u_r_color, std::clamp(c.r, 0.0f, 1.0f) * a, std::clamp(c.g, 0.0f, 1.0f) * a,
-              std::clamp(c.b, 0.0f, 1.0f) * a, a);
+  const std::array<float, 4> color = premultiplied(options.color, r.blending);
+  glUniform4f(r.u_r_color, color[0], color[1], color[2], color[3]);
+  glUniform1f(r.u_r_coverage_exponent,
+              1.0f / std::clamp(options.gamma, static_cast<float>(tolerance::kMinCoverageGamma),
+                                static_cast<float>(tolerance::kMaxCoverageGamma)));
   const float cx0 = 2.0f * static_cast<float>(x0) / vw - 1.0f, cx1 = 2.0f * static_cast<float>(x1) / vw - 1.0f;
   const float cy0 = 1.0f - 2.0f * static_cast<float>(y0) / vh, cy1 = 1.0f - 2.0f * static_cast<float>(y1) / vh;
-  const GLfloat quad[12] = {cx0, cy0, cx1, cy0, cx1, cy1, cx0, cy0, cx1, cy1, cx0, cy1};
+  // Each corner as (clip x, clip y, pixel x, pixel y down); the pixel
+  // position reaches the fragment stage as a highp varying (resolve.vert.glsl).
+  const GLfloat px0 = static_cast<GLfloat>(x0), px1 = static_cast<GLfloat>(x1);
+  const GLfloat py0 = static_cast<GLfloat>(y0), py1 = static_cast<GLfloat>(y1);
+  const GLfloat quad[24] = {cx0, cy0, px0, py0, cx1, cy0, px1, py0, cx1, cy1, px1, py1,
+                            cx0, cy0, px0, py0, cx1, cy1, px1, py1, cx0, cy1, px0, py1};
   glBindBuffer(GL_ARRAY_BUFFER, r.quad_vbo);
   glBufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STREAM_DRAW);
   glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 4 * sizeof(GLfloat), nullptr);
+  glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, 4 * sizeof(GLfloat),
+                        reinterpret_cast<const void*>(2 * sizeof(GLfloat)));
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   glDrawArrays(GL_TRIANGLES, 0, 6);
   glDisableVertexAttribArray(0);
+  glDisableVertexAttribArray(1);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   glBindTexture(GL_TEXTURE_2D, 0);
   if (GLenum err = glGetError(); err != GL_NO_ERROR) {
     throw Error(ErrorCode::Gl, std::string(msaa ? "msaa" : "vbaa") + " pass failed (GL error " + hex(err) + ")");
   }
   return true;
+}
+
+// --debug: every triangle's three edges as GL_LINES in a flat colour (the
+// curve program with u_debug = 2), over what draw_curves drew.
+void Renderer::draw_debug_edges(const DrawBatch::Impl& b, const Transform& full, float vw, float vh) {
+  Impl& r = *impl_;
+  if (r.debug_ibo == 0 || r.debug_ibo_vertices != b.vertex_count) {
+    std::vector<GLuint> indices;
+    indices.reserve(b.vertex_count * 2);
+    for (GLuint t = 0; t + 2 < b.vertex_count; t += 3)
+      for (GLuint e = 0; e < 3; ++e) {
+        indices.push_back(t + e);
+        indices.push_back(t + (e + 1) % 3);
+      }
+    if (r.debug_ibo == 0) glGenBuffers(1, &r.debug_ibo);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, r.debug_ibo);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(GLuint)), indices.data(),
+                 GL_STATIC_DRAW);
+    r.debug_ibo_vertices = b.vertex_count;
+  }
+  glUseProgram(r.program);
+  GLfloat m[9];
+  for (int row = 0; row < 3; ++row)
+    for (int col = 0; col < 3; ++col) m[col * 3 + row] = static_cast<GLfloat>(full.m[row * 3 + col]);
+  glUniformMatrix3fv(r.u_transform, 1, GL_FALSE, m);
+  glUniform2f(r.u_viewport, vw, vh);
+  glUniform1f(r.u_fringe_px, 0.0f);  // the triangles themselves, fringes collapsed
+  glUniform1i(r.u_debug, 2);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, r.debug_ibo);
+  const GLsizei stride = static_cast<GLsizei>(sizeof(gpu::Vertex));
+  for (GLuint i = 0; i < 4; ++i) {
+    glEnableVertexAttribArray(i);
+    glVertexAttribPointer(i, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(static_cast<std::uintptr_t>(i) * 16u));
+  }
+  glDrawElements(GL_LINES, static_cast<GLsizei>(b.vertex_count / 3 * 6), GL_UNSIGNED_INT, nullptr);
+  for (GLuint i = 0; i < 4; ++i) glDisableVertexAttribArray(i);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+  glUniform1i(r.u_debug, 0);
+  if (GLenum err = glGetError(); err != GL_NO_ERROR)
+    throw Error(ErrorCode::Gl, "drawing debug edges failed (GL error " + hex(err) + ")");
 }
 
 std::size_t Renderer::offscreen_passes() const { return impl_->offscreen_passes; }
@@ -527,6 +659,16 @@ Image Renderer::read_pixels() {
     std::uint8_t* dst = &out.rgba[static_cast<std::size_t>(y) * row];
     for (std::size_t i = 0; i < row; i += 4) {
       const unsigned a = src[i + 3];
+      if (r.blending == Blending::Linear && a > 0 && a < 255) {
+        // Stored: sRGB encoding of premultiplied linear colour. Straight
+        // alpha: decode, divide by alpha, encode.
+        for (std::size_t k = 0; k < 3; ++k) {
+          const float lin = srgb_to_linear(src[i + k] / 255.0f) * 255.0f / static_cast<float>(a);
+          dst[i + k] = static_cast<std::uint8_t>(std::lround(std::clamp(linear_to_srgb(std::min(lin, 1.0f)), 0.0f, 1.0f) * 255.0f));
+        }
+        dst[i + 3] = static_cast<std::uint8_t>(a);
+        continue;
+      }
       for (std::size_t k = 0; k < 3; ++k) {
         unsigned v = src[i + k];
         if (a == 0) {

@@ -94,7 +94,8 @@ Image render_shape_image(Renderer& renderer, const ShapeDocument& doc, const Sha
     mo.cubic_tolerance = tolerance;
     meshes.push_back(build_mesh(fill_outline(shape, tolerance), mo));
   }
-  renderer.begin(layout.width, layout.height, options.background);
+  check_coverage_gamma(options.gamma);
+  renderer.begin(layout.width, layout.height, options.background, options.blending);
   for (std::size_t i = 0; i < meshes.size(); ++i) {
     if (meshes[i].empty()) continue;
     DrawBatch batch = DrawBatch::from_mesh(meshes[i]);
@@ -102,6 +103,8 @@ Image render_shape_image(Renderer& renderer, const ShapeDocument& doc, const Sha
     draw.color = doc.shapes[i].color;
     draw.antialiasing = options.antialiasing;
     draw.curve_mode = options.curve_mode;
+    draw.gamma = options.gamma;
+    draw.debug = options.debug;
     renderer.draw(batch, layout.placement, draw);
   }
   return renderer.read_pixels();

@@ -199,5 +199,35 @@ for mode in vbaa msaa auto; do
 done
 expect_error "render: unknown aa mode" 1 "vbaa" -- render --size 20 --text hi --aa ssaa -o "$tmp/out.png"
 
+# --- debug view, blending, gamma, vbaa filter -----------------------------------
+for extra in "--debug" "--blend linear" "--blend srgb --gamma 1.8" "--aa vbaa --vbaa-filter paper" \
+             "--aa vbaa --vbaa-filter 0.25 --blend linear --fg #ffffff --bg #000000"; do
+  # shellcheck disable=SC2086
+  if timeout 120 "$CURVETEXT" render --size 16 --text "Hamburg" $extra -o "$tmp/opt.png" 2>"$tmp/stderr" &&
+     [ -s "$tmp/opt.png" ]; then
+    ok "render $extra"
+  else
+    bad "render $extra failed: $(cat "$tmp/stderr")"
+  fi
+done
+shape_json="$tmp/arc.json"
+echo '{"size": [60, 40], "view": [-5, -5, 55, 35], "shapes": [{"contours": [[{"bezier": {"points": [[0, 0], [25, 50], [50, 0]], "weights": [1, 0.5, 1]}}, {"line": [[50, 0], [0, 0]]}]]}]}' >"$shape_json"
+if timeout 120 "$CURVETEXT" shape --input "$shape_json" --debug --blend linear --gamma 1.5 -o "$tmp/arc.png" 2>"$tmp/stderr"; then
+  ok "shape --debug --blend linear --gamma 1.5"
+else
+  bad "shape --debug failed: $(cat "$tmp/stderr")"
+fi
+expect_error "render: NaN gamma" 1 "--gamma must be a number from 0.25 to 4" -- render --size 20 --text hi --gamma nan -o "$tmp/out.png"
+expect_error "render: gamma 0" 1 "--gamma must be" -- render --size 20 --text hi --gamma 0 -o "$tmp/out.png"
+expect_error "render: gamma 10" 1 "--gamma must be" -- render --size 20 --text hi --gamma 10 -o "$tmp/out.png"
+expect_error "render: gamma not a number" 2 "needs a number" -- render --size 20 --text hi --gamma dark -o "$tmp/out.png"
+expect_error "render: unknown blending" 1 "unknown blending 'gamma'" -- render --size 20 --text hi --blend gamma -o "$tmp/out.png"
+expect_error "render: unknown vbaa filter" 1 "unknown vbaa filter" -- render --size 20 --text hi --vbaa-filter gauss -o "$tmp/out.png"
+expect_error "render: NaN vbaa ring" 1 "unknown vbaa filter" -- render --size 20 --text hi --vbaa-filter nan -o "$tmp/out.png"
+expect_error "render: vbaa ring above 1" 1 "unknown vbaa filter" -- render --size 20 --text hi --vbaa-filter 2 -o "$tmp/out.png"
+expect_error "render: debug with paragraph" 2 "single lines" -- render --size 20 --text hi --debug --width 100 -o "$tmp/out.png"
+expect_error "shape: NaN gamma" 1 "--gamma must be" -- shape --input "$shape_json" --gamma nan -o "$tmp/out.png"
+expect_error "shape: unknown blending" 1 "unknown blending" -- shape --input "$shape_json" --blend lin -o "$tmp/out.png"
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

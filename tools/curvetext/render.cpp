@@ -106,6 +106,7 @@ int run_render(const std::vector<std::string>& arguments) {
   bool perspective_pending = false;
   double perspective_degrees = 0.0, perspective_distance = 0.0;
   bool transformed = false;
+  bool styled = false;  // --blend, --gamma, --debug, --vbaa-filter: single lines only
   Args args(arguments);
   while (args.next()) {
     const std::string& a = args.option();
@@ -125,7 +126,16 @@ int run_render(const std::vector<std::string>& arguments) {
     else if (a == "--features") features = args.value();
     else if (a == "--fg") options.foreground = parse_color(args.value());
     else if (a == "--bg") options.background = parse_color(args.value());
+    else if (a == "--blend") options.blending = parse_blending(args.value());
+    else if (a == "--gamma") {
+      options.gamma = static_cast<float>(parse_number(a, args.value()));
+      check_coverage_gamma(options.gamma, "--gamma");
+      styled = true;
+    }
+    else if (a == "--debug") options.debug = true;
+    else if (a == "--vbaa-filter") options.vbaa_ring = parse_vbaa_filter(args.value());
     else throw UsageError{"unknown option " + a};
+    if (a == "--blend" || a == "--debug" || a == "--vbaa-filter") styled = true;
   }
   if (!size) throw UsageError{"--size is required"};
   if (text.has_value() == text_file.has_value()) throw UsageError{"give exactly one of --text and --text-file"};
@@ -138,6 +148,9 @@ int run_render(const std::vector<std::string>& arguments) {
 
   if (paragraph.used && transformed)
     throw UsageError{"--rotate/--scale/--skew/--perspective/--transform work on single lines (not with paragraph options)"};
+
+  if (paragraph.used && styled)
+    throw UsageError{"--blend/--gamma/--debug/--vbaa-filter work on single lines (not with paragraph options)"};
 
   if (paragraph.used) {
     // Paragraph layout (--width, --align, fallback fonts, markup, ...): lines

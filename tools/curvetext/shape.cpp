@@ -43,6 +43,12 @@ int run_shape(const std::vector<std::string>& arguments) {
     else if (a == "--curve") options.curve_mode = parse_curve_mode(args.value());
     else if (a == "--fg") foreground = parse_color(args.value());
     else if (a == "--bg") options.background = parse_color(args.value());
+    else if (a == "--blend") options.blending = parse_blending(args.value());
+    else if (a == "--gamma") {
+      options.gamma = static_cast<float>(parse_number(a, args.value()));
+      check_coverage_gamma(options.gamma, "--gamma");
+    }
+    else if (a == "--debug") options.debug = true;
     else throw UsageError{"unknown option " + a};
   }
   if (!input) throw UsageError{"--input FILE is required"};

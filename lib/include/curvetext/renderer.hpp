@@ -35,7 +35,21 @@ enum class CurveMode {
   Paper,  // the paper's equation 2: exact only for weight 1
 };
 
-AntiAliasing parse_antialiasing(std::string_view text);  // "none" | "curves" | "full" | "vbaa" | "msaa" | "auto"
+// How the framebuffer blends (Renderer::begin).
+enum class Blending {
+  Srgb,    // on the stored sRGB-encoded values, as most apps do (default)
+  Linear,  // in linear light: an sRGB framebuffer decodes, blends and encodes
+           // (GLES 3 / desktop GL 3); colours are sRGB and converted
+};
+
+AntiAliasing parse_antialiasing(std::string_view text);
+Blending parse_blending(std::string_view text);           // "srgb" | "linear"
+// vbaa's filter: "box" (ring 0), "paper" (tolerance::kVbaaPaperRing) or a
+// ring weight from 0 to 1. Throws Error(InvalidArgument).
+float parse_vbaa_filter(std::string_view text);
+// Coverage gamma: finite, within [kMinCoverageGamma, kMaxCoverageGamma].
+// Throws Error(InvalidArgument) naming `what`.
+void check_coverage_gamma(double gamma, std::string_view what = "gamma");  // "none" | "curves" | "full" | "vbaa" | "msaa" | "auto"
 CurveMode parse_curve_mode(std::string_view text);       // "exact" | "paper"
 
 // Maps outline units (y up) to framebuffer pixels (y down, pixel (i,j) covers
@@ -61,6 +75,14 @@ struct DrawOptions {
   // ring of texels around each pixel's block (0: a box filter).
   int vbaa_factor = 4;
   float vbaa_ring = 0.0f;
+  // Coverage is raised to 1/gamma before blending: above 1 edge pixels get
+  // more ink (dark text on light looks heavier, small text more contrast),
+  // below 1 less. 1 (default) leaves exact area coverage.
+  float gamma = 1.0f;
+  // Shows the method at work (paper Figure 1): pixels a curved triangle
+  // discards (outside its curve) in orange, and every triangle's edges in
+  // blue. vbaa / msaa draw as full while debugging.
+  bool debug = false;
 
   DrawOptions() = default;
   DrawOptions(Color color_, AntiAliasing aa = AntiAliasing::Full, CurveMode mode = CurveMode::Exact)
@@ -132,13 +154,13 @@ class Renderer {
 
   // Binds an offscreen framebuffer of this size (throws Error(InvalidArgument)
   // above the GL maximum) and clears it to `background`.
-  void begin(int width, int height, Color background);
+  void begin(int width, int height, Color background, Blending blending = Blending::Srgb);
   // Premultiplied source-over blending of `color` * coverage.
   void draw(const DrawBatch& batch, const Placement& placement, const DrawOptions& options);
-  // Samples per pixel msaa uses here (0 where the context has no multisampled
-  // renderbuffers).
+  // Samples per pixel msaa uses here: GL_MAX_SAMPLES capped at 16 (llvmpipe
+  // offers 4); 0 where the context has no multisampled renderbuffers.
   int msaa_samples() const;
-  // The framebuffer as straight-alpha RGBA, row 0 at the top.
+  // The framebuffer as straight-alpha RGBA (sRGB encoded), row 0 at the top.
   Image read_pixels();
   // How many times vbaa / msaa drew their offscreen pass (a draw of the same
   // batch with the same transform into the same box reuses the last one).
@@ -151,6 +173,7 @@ class Renderer {
                    const DrawOptions& options);
   bool draw_offscreen(const DrawBatch::Impl& batch, const Transform& full, float width, float height,
                       unsigned target_framebuffer, const DrawOptions& options);
+  void draw_debug_edges(const DrawBatch::Impl& batch, const Transform& full, float width, float height);
   std::unique_ptr<Impl> impl_;
 };
 

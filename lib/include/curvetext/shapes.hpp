@@ -149,6 +149,11 @@ struct ShapeImageOptions {
   Color background{1, 1, 1, 1};
   AntiAliasing antialiasing = AntiAliasing::Full;
   CurveMode curve_mode = CurveMode::Exact;
+  // Blending of the framebuffer (Renderer::begin), coverage gamma and the
+  // debug view (DrawOptions::gamma, DrawOptions::debug).
+  Blending blending = Blending::Srgb;
+  float gamma = 1.0f;
+  bool debug = false;
 };
 
 struct ShapeImageLayout {

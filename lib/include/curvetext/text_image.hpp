@@ -22,6 +22,13 @@ struct TextImageOptions {
   Color background{1, 1, 1, 1};
   AntiAliasing antialiasing = AntiAliasing::Full;
   CurveMode curve_mode = CurveMode::Exact;
+  // vbaa's filter ring (DrawOptions::vbaa_ring): 0 a box filter (default).
+  float vbaa_ring = 0.0f;
+  // Blending of the framebuffer (Renderer::begin), coverage gamma and the
+  // debug view (DrawOptions::gamma, DrawOptions::debug).
+  Blending blending = Blending::Srgb;
+  float gamma = 1.0f;
+  bool debug = false;
   ShapeOptions shaping;
   // Applied about the centre of the contract's image; the image then becomes
   // the bounding box of the transformed one (ceil of its size), so nothing is

@@ -43,8 +43,23 @@ inline constexpr float kFringeWidthPx = 0.7072f;
 inline constexpr double kOffscreenBorderPx = 2.0;
 
 // `auto` antialiasing uses vbaa up to this many pixels per em (on screen) and
-// full above it, from bench/quality_bench's table.
-inline constexpr double kAutoVbaaMaxPx = 48.0;
+// full above it, from bench/quality_bench's table: vbaa has the lowest edge
+// error (0.0010-0.0024) and largest error (0.03-0.08) of every mode at each
+// measured size, 8 to 384 px; above the largest size measured, full's edge
+// error is already 0.0015 and the offscreen texture (16x the block's pixels)
+// would grow with the square of the size. Past the GL texture limit vbaa
+// itself degrades to a smaller factor or to full.
+inline constexpr double kAutoVbaaMaxPx = 384.0;
+
+// vbaa's "paper" filter (DrawOptions::vbaa_ring): horizontal and vertical
+// neighbouring texels weighted 0.5, diagonal ones 0.25, against 1 under the
+// pixel (dimensionless weights; bench/quality_bench rows vbaa-ringR).
+inline constexpr float kVbaaPaperRing = 0.5f;
+
+// Coverage gamma (DrawOptions::gamma, --gamma), dimensionless exponent
+// 1/gamma applied to coverage in [0, 1]: limits of what is accepted.
+inline constexpr double kMinCoverageGamma = 0.25;
+inline constexpr double kMaxCoverageGamma = 4.0;
 
 // --- Level of detail ---------------------------------------------------------
 // Meshes of glyphs with cubics are built per power-of-two pixels-per-em band;
