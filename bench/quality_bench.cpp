@@ -188,6 +188,7 @@ int main(int argc, char** argv) {
   std::vector<double> sizes = {8, 10, 12, 14, 16, 24, 48, 96, 192, 384};
   std::vector<std::string> modes = {"none", "curves", "full", "vbaa", "msaa", "auto"};
   bool check = false, quick = false, dump = false;
+  double worst = 0.0;  // --worst E: list pixels whose error exceeds E
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--sizes" && i + 1 < argc) {
@@ -199,10 +200,12 @@ int main(int argc, char** argv) {
       check = true;
     } else if (a == "--dump") {
       dump = true;
+    } else if (a == "--worst" && i + 1 < argc) {
+      worst = std::stod(argv[++i]);
     } else if (a == "--quick") {
       quick = true;
     } else {
-      std::fprintf(stderr, "usage: quality_bench [--sizes LIST] [--modes LIST] [--quick] [--check]\n");
+      std::fprintf(stderr, "usage: quality_bench [--sizes LIST] [--modes LIST] [--quick] [--check] [--dump] [--worst E]\n");
       return 2;
     }
   }
@@ -245,6 +248,36 @@ int main(int argc, char** argv) {
             const test::Coverage result = test::coverage_from_black_on_white(image);
             const test::CoverageStats st = test::compare(result, reference);
             results[m][size].add(st);
+            if (worst > 0.0) {
+              for (int y = 0; y < result.height; ++y)
+                for (int x = 0; x < result.width; ++x) {
+                  const double e = result.at(x, y) - reference.at(x, y);
+                  if (std::abs(e) <= worst) continue;
+                  std::printf("worst %s font %zu string %zu size %g pixel (%d,%d) got %.3f want %.3f\n", m.c_str(), fi, si,
+                              size, x, y, result.at(x, y), reference.at(x, y));
+                  for (int dy = -1; dy <= 1; ++dy) {
+                    std::printf("   ");
+                    for (int dx = -1; dx <= 1; ++dx) {
+                      const int xx = x + dx, yy = y + dy;
+                      if (xx < 0 || yy < 0 || xx >= result.width || yy >= result.height) continue;
+                      std::printf(" %.2f/%.2f", result.at(xx, yy), reference.at(xx, yy));
+                    }
+                    std::printf("\n");
+                  }
+                  // The outline segments whose control points come within 3 px.
+                  for (const auto& contour : pixel_outline.contours())
+                    for (const auto& seg : contour.segments) {
+                      const int np = seg.kind == Segment::Kind::Line ? 2 : seg.kind == Segment::Kind::Conic ? 3 : 4;
+                      bool near = false;
+                      for (int k = 0; k < np; ++k)
+                        near = near || (std::abs(seg.p[k].x - x - 0.5) < 3 && std::abs(seg.p[k].y - y - 0.5) < 3);
+                      if (!near) continue;
+                      std::printf("    seg%d", np);
+                      for (int k = 0; k < np; ++k) std::printf(" (%.2f,%.2f)", seg.p[k].x - x, seg.p[k].y - y);
+                      std::printf("\n");
+                    }
+                }
+            }
             if (dump && st.max_abs > 0.15) {
               const std::string name = "quality-" + m + "-" + std::to_string(fi) + "-" + std::to_string(si) + "-" +
                                        std::to_string(static_cast<int>(size));

@@ -177,8 +177,9 @@ float beyond_hull_px(float t1, float t2, vec2 g1, vec2 g2) {
 // that edge, and a pixel's box reaches sqrt(2)/2 px), so the conic, whose
 // other branches may pass anywhere, is not consulted there.
 const float kNearCurvePx = 0.75;
-// A pixel's box reaches at most sqrt(2)/2 px from its centre (rounded up).
-const float kPixelReachPx = 0.7072;
+// A pixel's box reaches at most sqrt(2)/2 px from its centre (rounded up):
+// tolerance::kFringeWidthPx, defined by the renderer when compiling.
+const float kPixelReachPx = CURVETEXT_PIXEL_REACH_PX;
 
 // Folds in, for an interior triangle (kinds 3, 4), a curve across one of its
 // edges or touching it at a vertex. `code` is the hull edge the triangle lies

@@ -35,6 +35,8 @@ inline constexpr double kConicFlatnessRelative = 1e-9;
 // --- Rendering ----------------------------------------------------------------
 // Outward dilation of boundary geometry for the `full` antialiasing mode, in
 // pixels. A pixel's box filter reaches at most sqrt(2)/2 px from its centre.
+// Also the shaders' CURVETEXT_PIXEL_REACH_PX (defined when they are compiled,
+// lib/gpu/renderer.cpp): how far a pixel's box reaches past a curve's hull.
 inline constexpr float kFringeWidthPx = 0.7072f;
 
 // Border around a block's projected bounding box in the vbaa / msaa offscreen
