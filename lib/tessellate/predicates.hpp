@@ -29,6 +29,10 @@ inline int orient2d(Vec2 a, Vec2 b, Vec2 c) {
   const double errbound = kCcwErrBoundA * ((detleft < 0 ? -detleft : detleft) + (detright < 0 ? -detright : detright));
   if (det > errbound) return 1;
   if (-det > errbound) return -1;
+  // Exactly collinear along an axis (common in fonts: horizontal and vertical
+  // stems): a difference of doubles is zero only for equal operands, so when
+  // each product has an exactly zero factor both products, and det, are 0.
+  if ((a.x == c.x || b.y == c.y) && (a.y == c.y || b.x == c.x)) return 0;
   return orient2d_exact(a, b, c);
 }
 
