@@ -729,6 +729,8 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
     for (const Ring& hole : region.holes) piece_count += hole.size();
   }
   PointIndex index(2 * piece_count);
+  mesh.boundary_lines.reserve(piece_count);
+  mesh.curves.reserve(piece_count);
   std::vector<EdgeKey> constrained;  // outline edges: never flipped (sorted below)
   constrained.reserve(2 * piece_count);
   std::vector<std::array<Vec2, 3>> triangle_points;

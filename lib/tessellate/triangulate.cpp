@@ -567,13 +567,11 @@ class EdgeTable {
   std::size_t used_ = 0;
 
   static std::size_t hash(std::uint64_t key) {
-    std::uint64_t h = key;  // murmur3's finaliser: every key bit reaches the low bits
-    h ^= h >> 33;
-    h *= 0xff51afd7ed558ccdull;
-    h ^= h >> 33;
-    h *= 0xc4ceb9fe1a85ec53ull;
-    h ^= h >> 33;
-    return static_cast<std::size_t>(h);
+    // One multiply, then the high half folded down so that both vertex
+    // indices reach the low bits the table masks with (lookups only: the
+    // table's order never decides anything).
+    const std::uint64_t h = key * 0x9e3779b97f4a7c15ull;
+    return static_cast<std::size_t>(h ^ (h >> 32));
   }
 
   void grow() {
@@ -610,7 +608,7 @@ void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std:
     if (EdgeTable::Faces* e = edges.find(key)) e->fixed = true;
   }
   // Lawson's algorithm terminates with exact predicates; ours are not exact
-  // (incircle in long double), so the flip count is capped to guarantee an end.
+  // (incircle_sign falls back to long double near zero), so the flip count is capped to guarantee an end.
   std::size_t flips_left = 16 * triangles.size() + 64;
   auto opposite = [&](const std::array<std::uint32_t, 3>& t, std::uint32_t u, std::uint32_t v) {
     for (int k = 0; k < 3; ++k) {
@@ -648,7 +646,7 @@ void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std:
     if (c == d) continue;
     const Vec2 pa = points[a], pb = points[b], pc = points[c], pd = points[d];
     if (orient2d(pa, pd, pc) <= 0 || orient2d(pd, pb, pc) <= 0) continue;  // quad not strictly convex
-    if (incircle(pa, pb, pc, pd) <= 0) continue;
+    if (incircle_sign(pa, pb, pc, pd) <= 0) continue;
     const EdgeKey cd = edge_key(c, d);
     if (edges.find(cd)) continue;  // would duplicate an existing edge
     triangles[t1] = {a, d, c};
