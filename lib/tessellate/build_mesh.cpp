@@ -401,7 +401,7 @@ bool hulls_overlap(const Vec2* p, int np, const Vec2* q, int nq) {
   const int ep = np == 2 ? 1 : 3, eq = nq == 2 ? 1 : 3;
   for (int i = 0; i < ep; ++i) {
     for (int j = 0; j < eq; ++j) {
-      if (segments_cross_properly(p[i], p[(i + 1) % np], q[j], q[(j + 1) % nq])) return true;
+      if (segments_cross_properly(p[i], p[i + 1 == np ? 0 : i + 1], q[j], q[j + 1 == nq ? 0 : j + 1])) return true;
     }
   }
   return np == 3 && nq == 3 && triangle_interiors_intersect(p, q);
@@ -734,6 +734,7 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
   std::vector<EdgeKey> constrained;  // outline edges: never flipped (sorted below)
   constrained.reserve(2 * piece_count);
   std::vector<std::array<Vec2, 3>> triangle_points;
+  triangle_points.reserve(2 * piece_count + 8);  // about two triangles per loop vertex
   for (const Region& region : regions) {
     auto polygonise = [&](const Ring& ring) {
       std::vector<Vec2> loop;

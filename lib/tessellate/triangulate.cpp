@@ -113,6 +113,24 @@ bool hole_inside(const std::vector<Vec2>& hole, const std::vector<Vec2>& outer) 
 }  // namespace
 
 std::vector<PolygonLoops> relink_touching_loops(std::vector<Vec2> outer, std::vector<std::vector<Vec2>> holes) {
+  // Quick exit for the usual case: no position occurs twice among all loop
+  // vertices (then none does among the nodes below, a subset), checked on a
+  // sorted copy, without building the node lists.
+  {
+    thread_local std::vector<std::pair<double, double>> sorted;
+    sorted.clear();
+    for (const Vec2 p : outer) sorted.emplace_back(p.x, p.y);
+    for (const auto& hole : holes) {
+      for (const Vec2 p : hole) sorted.emplace_back(p.x, p.y);
+    }
+    std::sort(sorted.begin(), sorted.end());
+    if (std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end()) {
+      std::vector<PolygonLoops> unchanged(1);
+      unchanged[0].outer = std::move(outer);
+      unchanged[0].holes = std::move(holes);
+      return unchanged;
+    }
+  }
   // Every loop vertex is a node; prev/next link the nodes of each loop.
   std::vector<Vec2> pos;
   std::vector<std::size_t> prev, next;
@@ -135,26 +153,20 @@ std::vector<PolygonLoops> relink_touching_loops(std::vector<Vec2> outer, std::ve
   const std::size_t n = pos.size();
 
   // Loops that share no vertex (the usual case) are returned as they are.
-  // Checked on a sorted copy of the positions (cheaper than the index sort
-  // below, which only loops that touch need).
-  {
-    thread_local std::vector<std::pair<double, double>> sorted;
-    sorted.resize(n);
-    for (std::size_t i = 0; i < n; ++i) sorted[i] = {pos[i].x, pos[i].y};
-    std::sort(sorted.begin(), sorted.end());
-    if (std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end()) {
-      std::vector<PolygonLoops> unchanged(1);
-      unchanged[0].outer = std::move(outer);
-      unchanged[0].holes = std::move(holes);
-      return unchanged;
-    }
-  }
   std::vector<std::size_t> by_position(n);
   std::iota(by_position.begin(), by_position.end(), std::size_t{0});
   auto position_less = [&](std::size_t i, std::size_t j) {
     return pos[i].x < pos[j].x || (pos[i].x == pos[j].x && (pos[i].y < pos[j].y || (pos[i].y == pos[j].y && i < j)));
   };
   std::sort(by_position.begin(), by_position.end(), position_less);
+  bool touching = false;
+  for (std::size_t k = 1; k < n && !touching; ++k) touching = pos[by_position[k]] == pos[by_position[k - 1]];
+  if (!touching) {
+    std::vector<PolygonLoops> unchanged(1);
+    unchanged[0].outer = std::move(outer);
+    unchanged[0].holes = std::move(holes);
+    return unchanged;
+  }
 
   // link[c]: having arrived at node c's position along c's incoming edge, the
   // walk leaves along link[c]'s outgoing edge. At a shared vertex the filled
