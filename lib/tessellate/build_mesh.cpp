@@ -293,7 +293,9 @@ bool align_tangent_legs(Ring& ring) {
       continue;
     }
     const Vec2 ca = first.control, cb = second.control;
-    if (ca == cb || orient2d(ca, v, cb) != 0 || dot(ca - v, cb - v) <= 0.0) continue;
+    // (The cheap dot test first: at a smooth join the controls lie on opposite
+    // sides of v, exactly collinear, which orient2d only decides slowly.)
+    if (ca == cb || dot(ca - v, cb - v) <= 0.0 || orient2d(ca, v, cb) != 0) continue;
     const double la = length(ca - v), lb = length(cb - v);
     if (la > lb) {
       // Split `first` (start -> v) at t so its last piece's control is cb.
