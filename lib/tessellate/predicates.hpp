@@ -127,10 +127,6 @@ inline bool segments_intersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
          (o3 == 0 && point_on_segment(c, d, a)) || (o4 == 0 && point_on_segment(c, d, b));
 }
 
-
-
-
-
 // Nonzero winding of a closed polygon around p, or Boundary when p lies on it.
 // `edge(i)` returns the i-th directed edge as {start, end}, i < count. Exact:
 // only orient2d and point_on_segment decide.

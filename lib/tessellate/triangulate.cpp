@@ -1,7 +1,6 @@
 #include "tessellate/triangulate.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <map>
