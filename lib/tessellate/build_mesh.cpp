@@ -293,7 +293,9 @@ bool align_tangent_legs(Ring& ring) {
       continue;
     }
     const Vec2 ca = first.control, cb = second.control;
-    if (ca == cb || orient2d(ca, v, cb) != 0 || dot(ca - v, cb - v) <= 0.0) continue;
+    // (The cheap dot test first: at a smooth join the controls lie on opposite
+    // sides of v, exactly collinear, which orient2d only decides slowly.)
+    if (ca == cb || dot(ca - v, cb - v) <= 0.0 || orient2d(ca, v, cb) != 0) continue;
     const double la = length(ca - v), lb = length(cb - v);
     if (la > lb) {
       // Split `first` (start -> v) at t so its last piece's control is cb.
@@ -401,7 +403,7 @@ bool hulls_overlap(const Vec2* p, int np, const Vec2* q, int nq) {
   const int ep = np == 2 ? 1 : 3, eq = nq == 2 ? 1 : 3;
   for (int i = 0; i < ep; ++i) {
     for (int j = 0; j < eq; ++j) {
-      if (segments_cross_properly(p[i], p[(i + 1) % np], q[j], q[(j + 1) % nq])) return true;
+      if (segments_cross_properly(p[i], p[i + 1 == np ? 0 : i + 1], q[j], q[j + 1 == nq ? 0 : j + 1])) return true;
     }
   }
   return np == 3 && nq == 3 && triangle_interiors_intersect(p, q);
@@ -419,7 +421,14 @@ bool separate_hulls(std::vector<Ring>& rings) {
       for (std::size_t fixes = 0, limit = 2 * ring.size() + 2; fixes < limit && align_tangent_legs(ring); ++fixes) {
       }
     }
-    std::vector<HullRef> refs;
+    // Scratch reused across passes and calls (no allocation once warm).
+    thread_local std::vector<HullRef> refs;
+    thread_local std::vector<std::size_t> mark_base;  // ring r's marks start at mark_base[r]
+    thread_local std::vector<char> split_marks;
+    refs.clear();
+    mark_base.assign(rings.size() + 1, 0);
+    for (std::size_t r = 0; r < rings.size(); ++r) mark_base[r + 1] = mark_base[r] + rings[r].size();
+    split_marks.assign(mark_base.back(), 0);
     for (std::uint32_t r = 0; r < rings.size(); ++r) {
       for (std::uint32_t i = 0; i < rings[r].size(); ++i) {
         HullRef ref{{}, r, i};
@@ -430,8 +439,6 @@ bool separate_hulls(std::vector<Ring>& rings) {
       }
     }
     std::sort(refs.begin(), refs.end(), [](const HullRef& a, const HullRef& b) { return a.box.min.x < b.box.min.x; });
-    std::vector<std::vector<char>> split_marks(rings.size());
-    for (std::size_t r = 0; r < rings.size(); ++r) split_marks[r].assign(rings[r].size(), 0);
     bool any = false;
     bool overlap_left = false;  // an overlap seen in this pass
     auto hull_of = [&](const HullRef& ref, Vec2* out) {
@@ -462,11 +469,11 @@ bool separate_hulls(std::vector<Ring>& rings) {
         if (!hulls_overlap(hi, ni, hj, nj)) continue;
         // Subdividing a conic shrinks its hull towards the arc; lines stay.
         if (pi.conic && pi.depth < tolerance::kMaxHullSubdivisionDepth) {
-          split_marks[refs[i].ring][refs[i].piece] = 1;
+          split_marks[mark_base[refs[i].ring] + refs[i].piece] = 1;
           any = true;
         }
         if (pj.conic && pj.depth < tolerance::kMaxHullSubdivisionDepth) {
-          split_marks[refs[j].ring][refs[j].piece] = 1;
+          split_marks[mark_base[refs[j].ring] + refs[j].piece] = 1;
           any = true;
         }
         overlap_left = true;
@@ -474,11 +481,13 @@ bool separate_hulls(std::vector<Ring>& rings) {
     }
     if (!any) return !overlap_left;
     for (std::size_t r = 0; r < rings.size(); ++r) {
+      const char* marks = split_marks.data() + mark_base[r];
+      if (std::find(marks, marks + rings[r].size(), char{1}) == marks + rings[r].size()) continue;  // nothing to split
       Ring next;
       next.reserve(rings[r].size() + 8);
       for (std::size_t i = 0; i < rings[r].size(); ++i) {
         const Piece& p = rings[r][i];
-        if (!split_marks[r][i]) {
+        if (!marks[i]) {
           next.push_back(p);
           continue;
         }
@@ -606,8 +615,17 @@ namespace {
 // concave conic's leg and the next piece retrace each other (a tangent cusp
 // after align_tangent_legs); the fold encloses nothing, and the curved
 // triangle on the other side of the shared leg covers the sliver of fill.
-std::vector<Vec2> remove_folds(const std::vector<Vec2>& loop) {
-  std::vector<Vec2> current = loop;
+std::vector<Vec2> remove_folds(std::vector<Vec2> loop) {
+  // The usual loop has no fold anywhere (no p[i] == p[i + 2], cyclically):
+  // then the rounds below only rotate it, by n/2 twice; do just that.
+  const std::size_t n = loop.size();
+  bool folded = false;
+  for (std::size_t i = 0; i < n && !folded; ++i) folded = loop[i] == loop[(i + 2) % n];
+  if (!folded) {
+    if (n > 0) std::rotate(loop.begin(), loop.begin() + static_cast<std::ptrdiff_t>((2 * (n / 2)) % n), loop.end());
+    return loop;
+  }
+  std::vector<Vec2> current = std::move(loop);
   for (int round = 0; round < 2; ++round) {
     std::vector<Vec2> out;
     out.reserve(current.size());
@@ -689,8 +707,13 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
   if (!(options.cubic_tolerance > 0.0) || !std::isfinite(options.cubic_tolerance)) {
     throw Error(ErrorCode::Geometry, "build_mesh: cubic_tolerance must be positive and finite");
   }
-  const Outline quadratic = to_quadratic_outline(outline, options.cubic_tolerance);
-  std::vector<Ring> rings = clean_rings(quadratic);
+  // TrueType outlines have no cubics: clean them as they are, without a copy.
+  bool has_cubic = false;
+  for (const Contour& contour : outline.contours()) {
+    for (const Segment& s : contour.segments) has_cubic = has_cubic || s.kind == Segment::Kind::Cubic;
+  }
+  std::vector<Ring> rings =
+      has_cubic ? clean_rings(to_quadratic_outline(outline, options.cubic_tolerance)) : clean_rings(outline);
   const bool separated = separate_hulls(rings);
   // Crossing, overlapping or edge-sharing contours: resolve them into
   // non-crossing rings of the nonzero fill first (skipped, after one sweep,
@@ -708,9 +731,12 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
     for (const Ring& hole : region.holes) piece_count += hole.size();
   }
   PointIndex index(2 * piece_count);
+  mesh.boundary_lines.reserve(piece_count);
+  mesh.curves.reserve(piece_count);
   std::vector<EdgeKey> constrained;  // outline edges: never flipped (sorted below)
   constrained.reserve(2 * piece_count);
   std::vector<std::array<Vec2, 3>> triangle_points;
+  triangle_points.reserve(2 * piece_count + 8);  // about two triangles per loop vertex
   for (const Region& region : regions) {
     auto polygonise = [&](const Ring& ring) {
       std::vector<Vec2> loop;
@@ -739,7 +765,7 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
           constrained.push_back(edge_key(ic, ib));
         }
       }
-      return remove_folds(loop);
+      return remove_folds(std::move(loop));
     };
     std::vector<Vec2> outer = polygonise(region.outer);
     std::vector<std::vector<Vec2>> holes;

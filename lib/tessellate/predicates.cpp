@@ -102,39 +102,4 @@ long double incircle(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
          clift * (adx * bdy - bdx * ady);
 }
 
-bool point_on_segment(Vec2 a, Vec2 b, Vec2 p) {
-  if (orient2d(a, b, p) != 0) return false;
-  return std::fmin(a.x, b.x) <= p.x && p.x <= std::fmax(a.x, b.x) && std::fmin(a.y, b.y) <= p.y &&
-         p.y <= std::fmax(a.y, b.y);
-}
-
-Where point_in_triangle(Vec2 a, Vec2 b, Vec2 c, Vec2 p) {
-  int o = orient2d(a, b, c);
-  if (o == 0) {
-    return (point_on_segment(a, b, p) || point_on_segment(b, c, p) || point_on_segment(c, a, p))
-               ? Where::Boundary
-               : Where::Outside;
-  }
-  const int s1 = orient2d(a, b, p) * o;
-  const int s2 = orient2d(b, c, p) * o;
-  const int s3 = orient2d(c, a, p) * o;
-  if (s1 < 0 || s2 < 0 || s3 < 0) return Where::Outside;
-  if (s1 == 0 || s2 == 0 || s3 == 0) return Where::Boundary;
-  return Where::Inside;
-}
-
-bool segments_cross_properly(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  const int o1 = orient2d(a, b, c), o2 = orient2d(a, b, d);
-  const int o3 = orient2d(c, d, a), o4 = orient2d(c, d, b);
-  return o1 * o2 < 0 && o3 * o4 < 0;
-}
-
-bool segments_intersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  const int o1 = orient2d(a, b, c), o2 = orient2d(a, b, d);
-  const int o3 = orient2d(c, d, a), o4 = orient2d(c, d, b);
-  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
-  return (o1 == 0 && point_on_segment(a, b, c)) || (o2 == 0 && point_on_segment(a, b, d)) ||
-         (o3 == 0 && point_on_segment(c, d, a)) || (o4 == 0 && point_on_segment(c, d, b));
-}
-
 }  // namespace curvetext::detail

@@ -4,6 +4,7 @@
 // determinant for any finite double input (no overflow assumed).
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <utility>
 
@@ -29,6 +30,10 @@ inline int orient2d(Vec2 a, Vec2 b, Vec2 c) {
   const double errbound = kCcwErrBoundA * ((detleft < 0 ? -detleft : detleft) + (detright < 0 ? -detright : detright));
   if (det > errbound) return 1;
   if (-det > errbound) return -1;
+  // Exactly collinear along an axis (common in fonts: horizontal and vertical
+  // stems): a difference of doubles is zero only for equal operands, so when
+  // each product has an exactly zero factor both products, and det, are 0.
+  if ((a.x == c.x || b.y == c.y) && (a.y == c.y || b.x == c.x)) return 0;
   return orient2d_exact(a, b, c);
 }
 
@@ -42,21 +47,85 @@ inline double orient2d_value(Vec2 a, Vec2 b, Vec2 c) { return cross(b - a, c - a
 // wrong sign near zero costs mesh quality, never validity.
 long double incircle(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
 
+// Sign of incircle(a, b, c, d), decided in double when Shewchuk's filter is
+// certain and by incircle (long double, x87: slow) otherwise. With eps =
+// 2^-53, the double determinant of the rounded differences is within
+// (10 + 96 eps) eps * permanent of the exact one (iccerrboundA in
+// "Adaptive Precision Floating-Point Arithmetic", 1997), so outside that
+// band its sign is the exact sign.
+inline int incircle_sign(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const double adx = a.x - d.x, ady = a.y - d.y;
+  const double bdx = b.x - d.x, bdy = b.y - d.y;
+  const double cdx = c.x - d.x, cdy = c.y - d.y;
+  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+  const double cdxady = cdx * ady, adxcdy = adx * cdy;
+  const double adxbdy = adx * bdy, bdxady = bdx * ady;
+  const double alift = adx * adx + ady * ady;
+  const double blift = bdx * bdx + bdy * bdy;
+  const double clift = cdx * cdx + cdy * cdy;
+  const double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
+  auto abs = [](double v) { return v < 0 ? -v : v; };
+  const double permanent = (abs(bdxcdy) + abs(cdxbdy)) * alift + (abs(cdxady) + abs(adxcdy)) * blift +
+                           (abs(adxbdy) + abs(bdxady)) * clift;
+  constexpr double kEps = 0x1p-53;
+  constexpr double kIccErrBoundA = (10.0 + 96.0 * kEps) * kEps;
+  const double errbound = kIccErrBoundA * permanent;
+  if (det > errbound) return 1;
+  if (-det > errbound) return -1;
+  const long double slow = incircle(a, b, c, d);
+  return slow > 0 ? 1 : slow < 0 ? -1 : 0;
+}
+
 enum class Where { Outside, Boundary, Inside };
+
+// Defined here (inline) because the tessellator calls them in its inner loops.
+// True when p lies on the closed segment [a, b].
+inline bool point_on_segment(Vec2 a, Vec2 b, Vec2 p) {
+  // The box test is exact and cheap, and rejects most calls before orient2d.
+  if (!(std::fmin(a.x, b.x) <= p.x && p.x <= std::fmax(a.x, b.x) && std::fmin(a.y, b.y) <= p.y &&
+        p.y <= std::fmax(a.y, b.y)))
+    return false;
+  return orient2d(a, b, p) == 0;
+}
 
 // Position of p relative to the closed triangle (a, b, c) of either orientation;
 // Outside for a degenerate (zero-area) triangle unless p lies on it.
-Where point_in_triangle(Vec2 a, Vec2 b, Vec2 c, Vec2 p);
-
-// True when p lies on the closed segment [a, b].
-bool point_on_segment(Vec2 a, Vec2 b, Vec2 p);
+inline Where point_in_triangle(Vec2 a, Vec2 b, Vec2 c, Vec2 p) {
+  int o = orient2d(a, b, c);
+  if (o == 0) {
+    return (point_on_segment(a, b, p) || point_on_segment(b, c, p) || point_on_segment(c, a, p))
+               ? Where::Boundary
+               : Where::Outside;
+  }
+  const int s1 = orient2d(a, b, p) * o;
+  const int s2 = orient2d(b, c, p) * o;
+  const int s3 = orient2d(c, a, p) * o;
+  if (s1 < 0 || s2 < 0 || s3 < 0) return Where::Outside;
+  if (s1 == 0 || s2 == 0 || s3 == 0) return Where::Boundary;
+  return Where::Inside;
+}
 
 // True when the open segments (a, b) and (c, d) cross at a single point
 // interior to both (a proper crossing).
-bool segments_cross_properly(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
+inline bool segments_cross_properly(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const int o1 = orient2d(a, b, c), o2 = orient2d(a, b, d);
+  if (o1 * o2 >= 0) return false;  // exact signs: the second pair is not needed
+  const int o3 = orient2d(c, d, a), o4 = orient2d(c, d, b);
+  return o3 * o4 < 0;
+}
 
 // True when the closed segments [a, b] and [c, d] share any point.
-bool segments_intersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
+inline bool segments_intersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const int o1 = orient2d(a, b, c), o2 = orient2d(a, b, d);
+  // c and d strictly on one side of line ab: no common point (with exact
+  // signs, a or b on [c, d] would put c and d on different sides or on it).
+  if (o1 * o2 > 0) return false;
+  const int o3 = orient2d(c, d, a), o4 = orient2d(c, d, b);
+  if (o3 * o4 > 0) return false;
+  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+  return (o1 == 0 && point_on_segment(a, b, c)) || (o2 == 0 && point_on_segment(a, b, d)) ||
+         (o3 == 0 && point_on_segment(c, d, a)) || (o4 == 0 && point_on_segment(c, d, b));
+}
 
 // Nonzero winding of a closed polygon around p, or Boundary when p lies on it.
 // `edge(i)` returns the i-th directed edge as {start, end}, i < count. Exact:

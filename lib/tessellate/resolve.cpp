@@ -98,7 +98,9 @@ bool lines_conflict(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
 // Pairs of edges with overlapping boxes (sweep over x); f(i, j) returns true to stop.
 template <class F>
 bool for_each_close_pair(const std::vector<Edge>& edges, F&& f) {
-  std::vector<std::uint32_t> order(edges.size());
+  // Scratch reused across calls (callers never nest this loop).
+  thread_local std::vector<std::uint32_t> order;
+  order.resize(edges.size());
   for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
   std::sort(order.begin(), order.end(),
             [&](std::uint32_t x, std::uint32_t y) { return edges[x].box.min.x < edges[y].box.min.x; });

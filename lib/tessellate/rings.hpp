@@ -19,7 +19,8 @@ struct Piece {
 };
 using Ring = std::vector<Piece>;
 
-inline Vec2 ring_end(const Ring& ring, std::size_t i) { return ring[(i + 1) % ring.size()].a; }
+// (i < ring.size(); a compare instead of a division in the hot loops.)
+inline Vec2 ring_end(const Ring& ring, std::size_t i) { return ring[i + 1 == ring.size() ? 0 : i + 1].a; }
 
 // A filled region: its outer ring (counter-clockwise) and its holes (clockwise).
 struct Region {

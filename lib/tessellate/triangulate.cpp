@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <numeric>
 #include <utility>
@@ -111,6 +112,24 @@ bool hole_inside(const std::vector<Vec2>& hole, const std::vector<Vec2>& outer) 
 }  // namespace
 
 std::vector<PolygonLoops> relink_touching_loops(std::vector<Vec2> outer, std::vector<std::vector<Vec2>> holes) {
+  // Quick exit for the usual case: no position occurs twice among all loop
+  // vertices (then none does among the nodes below, a subset), checked on a
+  // sorted copy, without building the node lists.
+  {
+    thread_local std::vector<std::pair<double, double>> sorted;
+    sorted.clear();
+    for (const Vec2 p : outer) sorted.emplace_back(p.x, p.y);
+    for (const auto& hole : holes) {
+      for (const Vec2 p : hole) sorted.emplace_back(p.x, p.y);
+    }
+    std::sort(sorted.begin(), sorted.end());
+    if (std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end()) {
+      std::vector<PolygonLoops> unchanged(1);
+      unchanged[0].outer = std::move(outer);
+      unchanged[0].holes = std::move(holes);
+      return unchanged;
+    }
+  }
   // Every loop vertex is a node; prev/next link the nodes of each loop.
   std::vector<Vec2> pos;
   std::vector<std::size_t> prev, next;
@@ -315,19 +334,77 @@ std::vector<Vec2> bridge_holes(std::vector<Vec2> outer, std::vector<std::vector<
   return outer;
 }
 
+namespace {
+
+// The live vertices of the loop being clipped, each with the box of its
+// outgoing edge, in a compact array (removal swaps with the last entry). An
+// ear test must look at every vertex p whose edge p -> next(p) has a box
+// overlapping the candidate triangle's box (that includes every vertex inside
+// the box); the test's answer does not depend on the order the vertices are
+// looked at, so scanning this array, where the box test is a few loads and
+// compares per vertex, replaces the walk along the linked loop.
+class LiveEdges {
+ public:
+  struct Entry {
+    double x0, x1, y0, y1;  // box of the edge p -> next[p]
+    std::uint32_t p;
+  };
+
+  void reset(std::size_t n) {
+    entries_.clear();
+    slot_.assign(n, kNone);
+  }
+  void set(std::uint32_t p, Vec2 a, Vec2 b) {
+    Entry e{std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y), p};
+    if (slot_[p] == kNone) {
+      slot_[p] = static_cast<std::uint32_t>(entries_.size());
+      entries_.push_back(e);
+    } else {
+      entries_[slot_[p]] = e;
+    }
+  }
+  void erase(std::uint32_t p) {
+    const std::uint32_t k = slot_[p];
+    if (k == kNone) return;
+    entries_[k] = entries_.back();
+    slot_[entries_[k].p] = k;
+    entries_.pop_back();
+    slot_[p] = kNone;
+  }
+  const std::vector<Entry>& entries() const { return entries_; }
+
+ private:
+  static constexpr std::uint32_t kNone = 0xffffffffu;
+  std::vector<Entry> entries_;
+  std::vector<std::uint32_t> slot_;
+};
+
+}  // namespace
+
 bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& triangles) {
   std::size_t n = loop.size();
   if (n < 3) return n == 0;
-  std::vector<std::size_t> prev(n), next(n);
+  if (n >= 0xffffffffu) return false;  // indices are 32-bit
+  // Scratch reused across calls (no allocation per glyph once warm).
+  thread_local std::vector<std::uint32_t> prev, next;
+  thread_local LiveEdges live;
+  prev.resize(n);
+  next.resize(n);
+  live.reset(n);
   for (std::size_t i = 0; i < n; ++i) {
-    prev[i] = prev_index(i, n);
-    next[i] = next_index(i, n);
+    prev[i] = static_cast<std::uint32_t>(prev_index(i, n));
+    next[i] = static_cast<std::uint32_t>(next_index(i, n));
   }
   std::size_t remaining = n;
+  bool tracking = false;  // `live` is filled after the first clean-up
   auto unlink = [&](std::size_t i) {
     next[prev[i]] = next[i];
     prev[next[i]] = prev[i];
     --remaining;
+    if (tracking) {
+      live.erase(static_cast<std::uint32_t>(i));
+      live.set(prev[i], loop[prev[i]], loop[next[i]]);  // the edge that replaces i's two
+    }
   };
   bool clean = true;
   // Consecutive repeats (possible after bridging) carry no area: drop them.
@@ -340,6 +417,11 @@ bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& t
     } else {
       start = next[i];
     }
+  }
+  {
+    std::uint32_t p = static_cast<std::uint32_t>(start);
+    for (std::size_t k = 0; k < remaining; ++k, p = next[p]) live.set(p, loop[p], loop[next[p]]);
+    tracking = true;
   }
 
   auto is_ear = [&](std::size_t ia, std::size_t ib, std::size_t ic) {
@@ -355,19 +437,19 @@ bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& t
     const Vec2 before_a = loop[prev[ia]], after_c = loop[next[ic]];
     if (before_a != c && !inside_cone(before_a, a, b, c)) return false;
     if (after_c != a && !inside_cone(b, c, after_c, a)) return false;
-    // One walk over the rest of the loop: its edges must not meet the
-    // diagonal, its vertices must not lie in the triangle. The diagonal lies
-    // in the triangle's box, so edges and vertices outside it are skipped
-    // without predicates.
+    // Every other vertex p of the loop and its edge p -> next[p]: the edge
+    // must not meet the diagonal, the vertex must not lie in the triangle.
+    // The diagonal lies in the triangle's box, so edges and vertices outside
+    // it are skipped without predicates.
     const Vec2 corners[3] = {a, b, c};
-    for (std::size_t p = next[ic]; p != ia; p = next[p]) {
+    auto blocks = [&](std::size_t p) {
       const Vec2 pp = loop[p], pq = loop[next[p]];
       const bool p_outside_box = pp.x < min_x || pp.x > max_x || pp.y < min_y || pp.y > max_y;
       if (!(std::max(pp.x, pq.x) < min_x || std::min(pp.x, pq.x) > max_x || std::max(pp.y, pq.y) < min_y ||
             std::min(pp.y, pq.y) > max_y) &&
           bridge_blocked_by(a, c, pp, pq))
-        return false;
-      if (p_outside_box) continue;
+        return true;
+      if (p_outside_box) return false;
       int corner = -1;
       for (int k = 0; k < 3; ++k) {
         if (pp == corners[k]) corner = k;
@@ -375,22 +457,27 @@ bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& t
       if (corner < 0) {
         // Any other vertex in the closed triangle blocks (strictness avoids
         // T-junctions and zero-area triangles).
-        if (point_in_triangle(a, b, c, pp) != Where::Outside) return false;
-        continue;
+        return point_in_triangle(a, b, c, pp) != Where::Outside;
       }
       // A repeat of a corner (bridge or pinch vertex): its edges must not
       // enter the triangle from that corner.
       const Vec2 v = corners[corner];
       const Vec2 x = corners[(corner + 1) % 3];
       const Vec2 y = corners[(corner + 2) % 3];
-      for (std::size_t q : {prev[p], next[p]}) {
+      for (std::size_t q : {std::size_t{prev[p]}, std::size_t{next[p]}}) {
         const Vec2 qq = loop[q];
         if (qq == a || qq == b || qq == c) continue;  // along a triangle edge
         const int ox = orient2d(v, x, qq), oy = orient2d(v, y, qq);
-        if (ox > 0 && oy < 0) return false;
-        if (ox == 0 && dot(qq - v, x - v) > 0) return false;
-        if (oy == 0 && dot(qq - v, y - v) > 0) return false;
+        if (ox > 0 && oy < 0) return true;
+        if (ox == 0 && dot(qq - v, x - v) > 0) return true;
+        if (oy == 0 && dot(qq - v, y - v) > 0) return true;
       }
+      return false;
+    };
+    for (const LiveEdges::Entry& e : live.entries()) {
+      if (e.x1 < min_x || e.x0 > max_x || e.y1 < min_y || e.y0 > max_y) continue;
+      if (e.p == ia || e.p == ib || e.p == ic) continue;
+      if (blocks(e.p)) return false;
     }
     return true;
   };
@@ -451,6 +538,7 @@ class EdgeTable {
     std::uint64_t key = kEmpty;
     std::uint32_t face[2] = {0, 0};
     int count = 0;
+    bool fixed = false;  // a constrained (outline) edge: never flipped
   };
 
   explicit EdgeTable(std::size_t expected) {
@@ -490,13 +578,11 @@ class EdgeTable {
   std::size_t used_ = 0;
 
   static std::size_t hash(std::uint64_t key) {
-    std::uint64_t h = key;  // murmur3's finaliser: every key bit reaches the low bits
-    h ^= h >> 33;
-    h *= 0xff51afd7ed558ccdull;
-    h ^= h >> 33;
-    h *= 0xc4ceb9fe1a85ec53ull;
-    h ^= h >> 33;
-    return static_cast<std::size_t>(h);
+    // One multiply, then the high half folded down so that both vertex
+    // indices reach the low bits the table masks with (lookups only: the
+    // table's order never decides anything).
+    const std::uint64_t h = key * 0x9e3779b97f4a7c15ull;
+    return static_cast<std::size_t>(h ^ (h >> 32));
   }
 
   void grow() {
@@ -527,8 +613,13 @@ void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std:
       if (e.count == 2) stack.push_back(key);  // candidates in triangle order
     }
   }
+  // Constrained edges are marked once in the table instead of being looked up
+  // in `constrained` for every candidate popped from the stack.
+  for (const EdgeKey& key : constrained) {
+    if (EdgeTable::Faces* e = edges.find(key)) e->fixed = true;
+  }
   // Lawson's algorithm terminates with exact predicates; ours are not exact
-  // (incircle in long double), so the flip count is capped to guarantee an end.
+  // (incircle_sign falls back to long double near zero), so the flip count is capped to guarantee an end.
   std::size_t flips_left = 16 * triangles.size() + 64;
   auto opposite = [&](const std::array<std::uint32_t, 3>& t, std::uint32_t u, std::uint32_t v) {
     for (int k = 0; k < 3; ++k) {
@@ -555,9 +646,8 @@ void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std:
   while (!stack.empty() && flips_left > 0) {
     const EdgeKey key = stack.back();
     stack.pop_back();
-    if (std::binary_search(constrained.begin(), constrained.end(), key)) continue;
     EdgeTable::Faces* e = edges.find(key);
-    if (!e || e->count != 2) continue;
+    if (!e || e->count != 2 || e->fixed) continue;
     std::uint32_t t1 = e->face[0], t2 = e->face[1];
     std::uint32_t a = key.first, b = key.second;
     if (!has_directed(triangles[t1], a, b)) std::swap(a, b);
@@ -567,7 +657,7 @@ void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std:
     if (c == d) continue;
     const Vec2 pa = points[a], pb = points[b], pc = points[c], pd = points[d];
     if (orient2d(pa, pd, pc) <= 0 || orient2d(pd, pb, pc) <= 0) continue;  // quad not strictly convex
-    if (incircle(pa, pb, pc, pd) <= 0) continue;
+    if (incircle_sign(pa, pb, pc, pd) <= 0) continue;
     const EdgeKey cd = edge_key(c, d);
     if (edges.find(cd)) continue;  // would duplicate an existing edge
     triangles[t1] = {a, d, c};
@@ -577,6 +667,7 @@ void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std:
     new_edge.face[0] = t1;
     new_edge.face[1] = t2;
     new_edge.count = 2;
+    new_edge.fixed = std::binary_search(constrained.begin(), constrained.end(), cd);
     replace_face(edge_key(a, d), t2, t1);
     replace_face(edge_key(b, c), t1, t2);
     --flips_left;
