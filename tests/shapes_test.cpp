@@ -106,7 +106,9 @@ TEST(ShapeJson, BadInputGivesClearErrors) {
       {with_item(R"({"line": [[0, 0], ["1", 0]]})"), "expected a number"},
       {with_item(R"({"arc": {}})"), "unknown contour item \"arc\""},
       {with_item(R"({"line": [[0,0],[1,1]], "nurbs": {}})"), "a contour item is one of"},
-      {with_item(R"({"bezier": {"points": [[0,0],[1,1],[2,0]], "weights": [1, 0, 1]}})"), "must be a positive"},
+      {with_item(R"({"bezier": {"points": [[0,0],[1,1],[2,0]], "weights": [0, 1, 1]}})"), "middle weight of a quadratic"},
+      {with_item(R"({"bezier": {"points": [[0,0],[1,1],[2,0],[3,0]], "weights": [1, 0, 1, 1]}})"), "weight 0 is allowed only"},
+      {with_item(R"({"bezier": {"points": [[0,0],[1,1],[2,0]], "weights": [1, -0.5, 1]}})"), "must be a positive"},
       {with_item(R"({"bezier": {"points": [[0,0],[1,1],[2,0]], "weights": [1, -2, 1]}})"), "must be a positive"},
       {with_item(R"({"bezier": {"points": [[0,0],[1,1],[2,0]], "weights": [1, 1]}})"), "need as many weights"},
       {with_item(R"({"nurbs": {"degree": 0, "points": [[0,0],[1,1]]}})"), "degree"},
@@ -120,7 +122,10 @@ TEST(ShapeJson, BadInputGivesClearErrors) {
        "domain"},
       {with_item(R"({"nurbs": {"degree": 1, "points": [[0,0],[1,1],[2,0],[3,3]], "knots": [0,0,0.5,0.5,1,1]}})"),
        "multiplicity 2 > degree 1"},
-      {with_item(R"({"nurbs": {"degree": 2, "points": [[0,0],[1,1],[2,0]], "weights": [1, 0, 1]}})"), "weight"},
+      {with_item(R"({"nurbs": {"degree": 2, "points": [[0,0],[1,1],[2,0]], "weights": [0, 1, 1]}})"), "weight 0"},
+      {with_item(R"({"nurbs": {"degree": 3, "points": [[0,0],[1,1],[2,0],[3,0]], "weights": [1, 0, 1, 1]}})"), "weight 0"},
+      {with_item(R"({"nurbs": {"degree": 2, "points": [[0,0],[1,1],[2,0],[3,-1],[4,0]], "weights": [1, 1, 0, 1, 1],
+                     "knots": [0,0,0,1,1,2,2,2]}})"), "an end at infinity"},
       {with_item(R"({"nurbs": {"degree": 2, "points": [[0,0],[1,1],[2,0]], "wieghts": [1, 1, 1]}})"),
        "unknown key \"wieghts\""},
   };
@@ -135,6 +140,36 @@ TEST(ShapeJson, BadInputGivesClearErrors) {
       EXPECT_NE(std::string(e.what()).find("line "), std::string::npos) << "no position: " << e.what();
     }
   }
+}
+
+// DESIGN.md section 3: a rational quadratic with middle weight 0 (end weights
+// > 0) is its chord: the reader keeps it as a line, in a bezier and in a
+// NURBS piece whose middle control point has weight 0.
+TEST(ShapeJson, ZeroMiddleWeightIsTheChord) {
+  const ShapeDocument b = parse_shape_json(
+      R"({"shapes": [{"contours": [[{"bezier": {"points": [[0,0],[5,9],[10,0]], "weights": [2, 0, 0.5]}}]]}]})");
+  ASSERT_EQ(b.shapes[0].contours[0].pieces.size(), 1u);
+  const RationalBezier& line = b.shapes[0].contours[0].pieces[0];
+  ASSERT_EQ(line.degree(), 1);
+  EXPECT_EQ(line.points[0].x, 0.0);
+  EXPECT_EQ(line.points[1].x, 10.0);
+  EXPECT_EQ(line.points[1].y, 0.0);
+
+  // Two pieces (double knot at 1): the first has middle weight 0.
+  const ShapeDocument n = parse_shape_json(R"({"shapes": [{"contours": [[{"nurbs": {"degree": 2,
+      "points": [[0,0],[1,1],[2,0],[3,-1],[4,0]], "weights": [1,0,1,1,1], "knots": [0,0,0,1,1,2,2,2]}}]]}]})");
+  const auto& pieces = n.shapes[0].contours[0].pieces;
+  ASSERT_EQ(pieces.size(), 2u);
+  EXPECT_EQ(pieces[0].degree(), 1);
+  EXPECT_NEAR(pieces[0].points[1].x, 2.0, 1e-12);
+  EXPECT_EQ(pieces[1].degree(), 2);
+
+  // The API accepts the quadratic itself and draws its chord.
+  std::vector<Segment> segs;
+  append_quadratics(RationalBezier{{{0, 0}, {5, 9}, {10, 0}}, {1, 0, 1}}, 0.01, segs);
+  ASSERT_EQ(segs.size(), 1u);
+  EXPECT_EQ(segs[0].kind, Segment::Kind::Line);
+  EXPECT_THROW(append_quadratics(RationalBezier{{{0, 0}, {5, 9}, {10, 0}}, {0, 1, 1}}, 0.01, segs), Error);
 }
 
 TEST(ShapeJson, FixturesLoad) {

@@ -28,7 +28,9 @@ enum class FillRule { NonZero, EvenOdd };
 FillRule parse_fill_rule(std::string_view text);
 
 // A rational Bezier piece of degree points.size() - 1 >= 1, in homogeneous
-// form sum(w_i B_i(t) p_i) / sum(w_i B_i(t)). Every weight is > 0.
+// form sum(w_i B_i(t) p_i) / sum(w_i B_i(t)). Every weight is > 0, except
+// the middle weight of a quadratic, which may be 0 (the piece is its chord,
+// DESIGN.md section 3).
 struct RationalBezier {
   std::vector<Vec2> points;
   std::vector<double> weights;
@@ -80,7 +82,9 @@ struct Nurbs {
 };
 
 // Throws Error(InvalidArgument) naming the problem (bad degree, counts, knot
-// order or multiplicity, NaN/inf/huge values, weights <= 0).
+// order or multiplicity, NaN/inf/huge values, weights <= 0 except 0 at an
+// interior point of degree 2; nurbs_to_beziers refuses a 0 that lands on a
+// piece's end and turns a piece whose middle weight is 0 into its chord).
 void validate_nurbs(const Nurbs& curve);
 
 // Exact conversion into rational Bezier pieces of the same degree, one per
