@@ -11,6 +11,7 @@
 #include <memory>
 #include <string>
 
+#include "curvetext/error.hpp"
 #include "curvetext/headless.hpp"
 #include "curvetext/layout.hpp"
 #include "curvetext/paragraph_image.hpp"
@@ -135,6 +136,196 @@ TEST_P(RenderedParagraph, MatchesExactCoverageOfItsGlyphs) {
 
 INSTANTIATE_TEST_SUITE_P(Paragraphs, RenderedParagraph, ::testing::ValuesIn(cases()),
                          [](const ::testing::TestParamInfo<Case>& param_info) { return std::string(param_info.param.name); });
+
+
+// --- the options single lines have, on paragraphs (ImageStyle) -------------
+
+// A DejaVu Sans paragraph of three or more lines, no markup bars (the
+// reference is the glyph outlines only).
+Paragraph styled_paragraph(FontCollection& fonts, double size_px, double width = 170) {
+  ParagraphStyle style;
+  style.default_style.fonts = {test::kDejaVuSans};
+  style.default_style.size_px = size_px;
+  style.width = width;
+  return Paragraph::layout(fonts, "Hamburgefontsiv wraps onto lines of quick wafer jam 0123", {}, style);
+}
+
+struct Styled {
+  test::Coverage result, reference;
+  test::CoverageStats stats;
+};
+
+// Draws `p` with `options` and compares it with the exact coverage of its
+// glyph outlines under the same image frame (paragraph_image_frame).
+Styled render_styled(const Paragraph& p, const ParagraphImageOptions& options) {
+  const ImageFrame frame = paragraph_image_frame(p, options);
+  const Image image = render_paragraph_image(gpu().renderer, gpu().cache, p, options);
+  Styled r;
+  r.result = test::coverage_from_black_on_white(image);
+  EXPECT_EQ(r.result.width, frame.width);
+  EXPECT_EQ(r.result.height, frame.height);
+  r.reference = test::union_coverage(test::transform_outline(paragraph_outline(p, options.margin_px), frame.transform),
+                                     frame.width, frame.height);
+  r.stats = test::compare(r.result, r.reference);
+  return r;
+}
+
+void expect_styled(const std::string& name, const Styled& r, double edge_limit, double ink_limit) {
+  std::printf("%-34s edge %.4f  max %.3f  ink %.4f  (%dx%d)\n", name.c_str(), r.stats.edge_mean_abs, r.stats.max_abs,
+              r.stats.ink_ratio, r.result.width, r.result.height);
+  const bool ok = r.stats.edge_mean_abs <= edge_limit && std::abs(r.stats.ink_ratio - 1.0) <= ink_limit;
+  if (!ok) test::write_comparison("paragraph-" + name, r.result, r.reference);
+  EXPECT_GT(r.stats.edge_pixels, 100u) << name << ": nothing was drawn";
+  EXPECT_LE(r.stats.edge_mean_abs, edge_limit) << name;
+  EXPECT_NEAR(r.stats.ink_ratio, 1.0, ink_limit) << name;
+}
+
+// The limits of transform_test.cpp for single lines at these sizes.
+TEST(ParagraphTransform, RotationPerspectiveSkewMatchExactCoverage) {
+  FontCollection fonts;
+  const Paragraph p = styled_paragraph(fonts, 18);
+  ASSERT_GE(p.lines().size(), 3u);
+  const struct {
+    const char* name;
+    Transform t;
+  } maps[] = {{"rotate30", Transform::rotation(30.0)},
+              {"perspective40", Transform::perspective(40.0, 500.0)},
+              {"skew-15,5_scale1.5,1", Transform::scale(1.5, 1.0) * Transform::skew(-15.0, 5.0)}};
+  for (const auto& m : maps) {
+    ParagraphImageOptions options;
+    options.transform = m.t;
+    const Styled r = render_styled(p, options);
+    expect_styled(m.name, r, 0.02, 0.02);
+    // Control: the untransformed reference in the same frame must fail.
+    const ImageFrame frame = paragraph_image_frame(p, options);
+    const test::Coverage plain =
+        test::union_coverage(paragraph_outline(p, options.margin_px), frame.width, frame.height);
+    EXPECT_GT(test::compare(r.result, plain).edge_mean_abs, 0.02) << m.name << ": the transform did nothing";
+  }
+}
+
+TEST(ParagraphTransform, ImageIsTheTransformedBoundingBox) {
+  FontCollection fonts;
+  const Paragraph p = styled_paragraph(fonts, 18);
+  ParagraphImageOptions options;
+  const ImageSize plain = paragraph_image_size(p, options);
+  options.transform = Transform::rotation(90.0);
+  const ImageSize turned = paragraph_image_size(p, options);
+  EXPECT_EQ(turned.width, plain.height);
+  EXPECT_EQ(turned.height, plain.width);
+  options.transform = Transform::perspective(89.0, 10.0);  // behind the viewer
+  EXPECT_THROW(paragraph_image_size(p, options), Error);
+  options.transform = Transform::scale(1e5, 1.0);  // wider than the limit
+  EXPECT_THROW(paragraph_image_size(p, options), Error);
+  options.transform = Transform{};
+  options.gamma = 0.0f;
+  EXPECT_THROW(render_paragraph_image(gpu().renderer, gpu().cache, p, options), Error);
+}
+
+// auto resolves per run from its pixels per em on screen, as for one line:
+// vbaa at 12 px (the same image as vbaa, issue 4's target edge <= 0.02),
+// full when a scale puts the em above tolerance::kAutoVbaaMaxPx.
+TEST(ParagraphAntialiasing, AutoIsVbaaForSmallTextAndFullForLarge) {
+  FontCollection fonts;
+  const Paragraph small = styled_paragraph(fonts, 12, 120);
+  ParagraphImageOptions options;
+  options.antialiasing = AntiAliasing::Auto;
+  const Styled autod = render_styled(small, options);
+  expect_styled("auto_12px", autod, 0.02, 0.03);
+  options.antialiasing = AntiAliasing::Vbaa;
+  const Styled vbaa = render_styled(small, options);
+  EXPECT_EQ(autod.result.value, vbaa.result.value) << "auto at 12 px is not vbaa";
+  options.antialiasing = AntiAliasing::Full;
+  const Styled full = render_styled(small, options);
+  EXPECT_LT(vbaa.stats.edge_mean_abs, full.stats.edge_mean_abs);
+
+  // 200 px per em scaled 2x: 400 px on screen, above 384.
+  const Paragraph large = styled_paragraph(fonts, 200, 0);
+  ParagraphImageOptions big;
+  big.margin_px = 4;
+  big.transform = Transform::scale(2.0, 2.0);
+  big.antialiasing = AntiAliasing::Auto;
+  const Image a = render_paragraph_image(gpu().renderer, gpu().cache, large, big);
+  big.antialiasing = AntiAliasing::Full;
+  const Image f = render_paragraph_image(gpu().renderer, gpu().cache, large, big);
+  EXPECT_EQ(a.rgba, f.rgba) << "auto at 400 px on screen is not full";
+}
+
+// The vbaa filter ring reaches paragraphs: it softens edges (moves coverage
+// away from the exact area, README table) but keeps the ink.
+TEST(ParagraphAntialiasing, VbaaFilterRingIsApplied) {
+  FontCollection fonts;
+  const Paragraph p = styled_paragraph(fonts, 14, 140);
+  ParagraphImageOptions options;
+  options.antialiasing = AntiAliasing::Vbaa;
+  const Styled box = render_styled(p, options);
+  options.vbaa_ring = 0.5f;
+  const Styled ring = render_styled(p, options);
+  std::printf("vbaa box edge %.4f, ring 0.5 edge %.4f ink %.4f\n", box.stats.edge_mean_abs, ring.stats.edge_mean_abs,
+              ring.stats.ink_ratio);
+  EXPECT_GT(ring.stats.edge_mean_abs, box.stats.edge_mean_abs + 0.01);
+  EXPECT_NEAR(ring.stats.ink_ratio, 1.0, 0.05);
+}
+
+// Gamma and linear blending against the exact coverage they should give:
+// gamma G draws c^(1/G); black over white in linear light stores
+// srgb_encode(1 - c).
+double srgb_decode(double v) { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); }
+
+TEST(ParagraphBlending, GammaAndLinearLightFollowExactCoverage) {
+  FontCollection fonts;
+  const Paragraph p = styled_paragraph(fonts, 16);
+  for (const float gamma : {1.0f, 1.8f}) {
+    for (const Blending blending : {Blending::Srgb, Blending::Linear}) {
+      ParagraphImageOptions options;
+      options.gamma = gamma;
+      options.blending = blending;
+      Styled r = render_styled(p, options);
+      for (float& c : r.reference.value) c = static_cast<float>(std::pow(c, 1.0 / gamma));
+      if (blending == Blending::Linear)
+        for (float& c : r.result.value) c = static_cast<float>(1.0 - srgb_decode(1.0 - c));
+      r.stats = test::compare(r.result, r.reference);
+      expect_styled(std::string("gamma") + std::to_string(gamma).substr(0, 3) +
+                        (blending == Blending::Linear ? "_linear" : "_srgb"),
+                    r, 0.02, 0.03);
+    }
+  }
+}
+
+// The debug view reaches paragraphs (two runs, the first underlined): orange
+// pixels (discarded by curved triangles) and blue triangle edges appear,
+// none without it.
+TEST(ParagraphDebug, ShowsDiscardedPixelsAndTriangleEdges) {
+  FontCollection fonts;
+  ParagraphStyle style;
+  style.default_style.fonts = {test::kDejaVuSans};
+  style.default_style.size_px = 96;
+  style.width = 400;
+  TextStyle underlined = style.default_style;
+  underlined.underline = true;
+  const std::string text = "Soup and more";
+  const Paragraph p = Paragraph::layout(fonts, text, {TextSpan{0, 4, underlined}}, style);
+  auto count = [&](bool debug, int& orange, int& blue) {
+    ParagraphImageOptions options;
+    options.debug = debug;
+    options.antialiasing = AntiAliasing::None;
+    const Image image = render_paragraph_image(gpu().renderer, gpu().cache, p, options);
+    orange = blue = 0;
+    for (std::size_t i = 0; i + 3 < image.rgba.size(); i += 4) {
+      const int r = image.rgba[i], g = image.rgba[i + 1], b = image.rgba[i + 2];
+      if (r > 240 && g > 90 && g < 140 && b < 20) ++orange;
+      if (b > 220 && r < 40 && g > 60 && g < 120) ++blue;
+    }
+  };
+  int orange = 0, blue = 0;
+  count(true, orange, blue);
+  std::printf("debug: %d orange, %d blue pixels\n", orange, blue);
+  EXPECT_GT(orange, 50);
+  EXPECT_GT(blue, 200);
+  count(false, orange, blue);
+  EXPECT_EQ(orange, 0);
+  EXPECT_EQ(blue, 0);
+}
 
 }  // namespace
 }  // namespace curvetext

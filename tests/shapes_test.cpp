@@ -19,6 +19,7 @@
 #include "curvetext/tolerances.hpp"
 #include "shapes/json.hpp"
 #include "support/coverage.hpp"
+#include "support/union_coverage.hpp"
 
 namespace curvetext {
 namespace {
@@ -105,7 +106,9 @@ TEST(ShapeJson, BadInputGivesClearErrors) {
       {with_item(R"({"line": [[0, 0], ["1", 0]]})"), "expected a number"},
       {with_item(R"({"arc": {}})"), "unknown contour item \"arc\""},
       {with_item(R"({"line": [[0,0],[1,1]], "nurbs": {}})"), "a contour item is one of"},
-      {with_item(R"({"bezier": {"points": [[0,0],[1,1],[2,0]], "weights": [1, 0, 1]}})"), "must be a positive"},
+      {with_item(R"({"bezier": {"points": [[0,0],[1,1],[2,0]], "weights": [0, 1, 1]}})"), "middle weight of a quadratic"},
+      {with_item(R"({"bezier": {"points": [[0,0],[1,1],[2,0],[3,0]], "weights": [1, 0, 1, 1]}})"), "weight 0 is allowed only"},
+      {with_item(R"({"bezier": {"points": [[0,0],[1,1],[2,0]], "weights": [1, -0.5, 1]}})"), "must be a positive"},
       {with_item(R"({"bezier": {"points": [[0,0],[1,1],[2,0]], "weights": [1, -2, 1]}})"), "must be a positive"},
       {with_item(R"({"bezier": {"points": [[0,0],[1,1],[2,0]], "weights": [1, 1]}})"), "need as many weights"},
       {with_item(R"({"nurbs": {"degree": 0, "points": [[0,0],[1,1]]}})"), "degree"},
@@ -119,7 +122,10 @@ TEST(ShapeJson, BadInputGivesClearErrors) {
        "domain"},
       {with_item(R"({"nurbs": {"degree": 1, "points": [[0,0],[1,1],[2,0],[3,3]], "knots": [0,0,0.5,0.5,1,1]}})"),
        "multiplicity 2 > degree 1"},
-      {with_item(R"({"nurbs": {"degree": 2, "points": [[0,0],[1,1],[2,0]], "weights": [1, 0, 1]}})"), "weight"},
+      {with_item(R"({"nurbs": {"degree": 2, "points": [[0,0],[1,1],[2,0]], "weights": [0, 1, 1]}})"), "weight 0"},
+      {with_item(R"({"nurbs": {"degree": 3, "points": [[0,0],[1,1],[2,0],[3,0]], "weights": [1, 0, 1, 1]}})"), "weight 0"},
+      {with_item(R"({"nurbs": {"degree": 2, "points": [[0,0],[1,1],[2,0],[3,-1],[4,0]], "weights": [1, 1, 0, 1, 1],
+                     "knots": [0,0,0,1,1,2,2,2]}})"), "an end at infinity"},
       {with_item(R"({"nurbs": {"degree": 2, "points": [[0,0],[1,1],[2,0]], "wieghts": [1, 1, 1]}})"),
        "unknown key \"wieghts\""},
   };
@@ -134,6 +140,36 @@ TEST(ShapeJson, BadInputGivesClearErrors) {
       EXPECT_NE(std::string(e.what()).find("line "), std::string::npos) << "no position: " << e.what();
     }
   }
+}
+
+// DESIGN.md section 3: a rational quadratic with middle weight 0 (end weights
+// > 0) is its chord: the reader keeps it as a line, in a bezier and in a
+// NURBS piece whose middle control point has weight 0.
+TEST(ShapeJson, ZeroMiddleWeightIsTheChord) {
+  const ShapeDocument b = parse_shape_json(
+      R"({"shapes": [{"contours": [[{"bezier": {"points": [[0,0],[5,9],[10,0]], "weights": [2, 0, 0.5]}}]]}]})");
+  ASSERT_EQ(b.shapes[0].contours[0].pieces.size(), 1u);
+  const RationalBezier& line = b.shapes[0].contours[0].pieces[0];
+  ASSERT_EQ(line.degree(), 1);
+  EXPECT_EQ(line.points[0].x, 0.0);
+  EXPECT_EQ(line.points[1].x, 10.0);
+  EXPECT_EQ(line.points[1].y, 0.0);
+
+  // Two pieces (double knot at 1): the first has middle weight 0.
+  const ShapeDocument n = parse_shape_json(R"({"shapes": [{"contours": [[{"nurbs": {"degree": 2,
+      "points": [[0,0],[1,1],[2,0],[3,-1],[4,0]], "weights": [1,0,1,1,1], "knots": [0,0,0,1,1,2,2,2]}}]]}]})");
+  const auto& pieces = n.shapes[0].contours[0].pieces;
+  ASSERT_EQ(pieces.size(), 2u);
+  EXPECT_EQ(pieces[0].degree(), 1);
+  EXPECT_NEAR(pieces[0].points[1].x, 2.0, 1e-12);
+  EXPECT_EQ(pieces[1].degree(), 2);
+
+  // The API accepts the quadratic itself and draws its chord.
+  std::vector<Segment> segs;
+  append_quadratics(RationalBezier{{{0, 0}, {5, 9}, {10, 0}}, {1, 0, 1}}, 0.01, segs);
+  ASSERT_EQ(segs.size(), 1u);
+  EXPECT_EQ(segs[0].kind, Segment::Kind::Line);
+  EXPECT_THROW(append_quadratics(RationalBezier{{{0, 0}, {5, 9}, {10, 0}}, {0, 1, 1}}, 0.01, segs), Error);
 }
 
 TEST(ShapeJson, FixturesLoad) {
@@ -682,6 +718,120 @@ TEST(ShapeRender, LayoutErrors) {
   o.scale = 2;
   const ShapeImageLayout l = layout_shape_image(doc, o);
   EXPECT_EQ(l.width, 440);
+}
+
+// --- ImageStyle on shapes: transforms, auto, vbaa filter ----------------------
+
+// A w = 0.5 arc closed by its chord and a w = 1 arc (a parabola) with a hole
+// side, each its own shape, in a 120 x 60 unit view.
+const char* kStyledShapes = R"({"size": [240, 120], "view": [-10, -10, 230, 110], "shapes": [
+  {"contours": [[{"bezier": {"points": [[0, 0], [50, 100], [100, 0]], "weights": [1, 0.5, 1]}}, {"line": [[100, 0], [0, 0]]}]]},
+  {"contours": [[{"bezier": {"points": [[120, 0], [170, 100], [220, 0]], "weights": [1, 2, 1]}}, {"line": [[220, 0], [120, 0]]}]]}]})";
+
+struct StyledShape {
+  test::Coverage result, reference;
+  test::CoverageStats stats;
+  ShapeImageLayout layout;
+};
+
+// Draws the document in black and compares with the exact coverage of its
+// fill outlines placed and transformed as the layout says.
+StyledShape draw_styled(ShapeDocument doc, const ShapeImageOptions& options) {
+  for (Shape& sh : doc.shapes) sh.color = Color{0, 0, 0, 1};
+  StyledShape r;
+  r.layout = layout_shape_image(doc, options);
+  r.result = test::coverage_from_black_on_white(render_shape_image(gpu().renderer, doc, r.layout, options));
+  Placement untransformed = r.layout.placement;
+  untransformed.transform = Transform{};
+  Outline all;
+  for (const Shape& sh : doc.shapes) {
+    const Outline fill = fill_outline(sh, 1e-3);
+    for (const Contour& c : fill.contours()) all.contours().push_back(c);
+  }
+  r.reference = test::union_coverage(
+      test::transform_outline(test::place_outline(all, untransformed), r.layout.placement.transform), r.layout.width,
+      r.layout.height);
+  r.stats = test::compare(r.result, r.reference);
+  return r;
+}
+
+void expect_styled(const std::string& name, const StyledShape& r, double edge_limit, double ink_limit) {
+  std::printf("shape %-28s edge %.4f  max %.3f  ink %.4f  (%dx%d)\n", name.c_str(), r.stats.edge_mean_abs,
+              r.stats.max_abs, r.stats.ink_ratio, r.result.width, r.result.height);
+  const bool ok = r.stats.edge_mean_abs <= edge_limit && std::abs(r.stats.ink_ratio - 1.0) <= ink_limit;
+  if (!ok) test::write_comparison("shape-" + name, r.result, r.reference);
+  EXPECT_GT(r.stats.edge_pixels, 100u) << name;
+  EXPECT_LE(r.stats.edge_mean_abs, edge_limit) << name;
+  EXPECT_NEAR(r.stats.ink_ratio, 1.0, ink_limit) << name;
+}
+
+TEST(ShapeTransform, RotationPerspectiveSkewMatchExactCoverage) {
+  const ShapeDocument doc = parse_shape_json(kStyledShapes);
+  const struct {
+    const char* name;
+    Transform t;
+  } maps[] = {{"rotate30", Transform::rotation(30.0)},
+              {"perspective50", Transform::perspective(50.0, 400.0)},
+              {"skew-15,5_scale1.5,0.75", Transform::scale(1.5, 0.75) * Transform::skew(-15.0, 5.0)}};
+  for (const auto& m : maps) {
+    ShapeImageOptions options;
+    options.transform = m.t;
+    const StyledShape r = draw_styled(doc, options);
+    expect_styled(m.name, r, 0.01, 0.01);
+    EXPECT_GT(r.layout.largest_stretch, 0.99) << m.name;
+  }
+  ShapeImageOptions options;
+  options.transform = Transform::rotation(90.0);
+  const ShapeImageLayout turned = layout_shape_image(doc, options);
+  EXPECT_EQ(turned.width, 120);
+  EXPECT_EQ(turned.height, 240);
+  options.transform = Transform::perspective(85.0, 10.0);
+  EXPECT_THROW(layout_shape_image(doc, options), Error);  // behind the viewer
+  options.transform = Transform::scale(1e4, 1.0);
+  EXPECT_THROW(layout_shape_image(doc, options), Error);  // too large
+}
+
+// auto per shape from its on-screen size: vbaa for these (about 200 px), the
+// same image as vbaa and closer to the exact coverage than full; full when
+// the scale puts a shape above tolerance::kAutoVbaaMaxPx.
+TEST(ShapeAntialiasing, AutoPicksPerOnScreenSize) {
+  EXPECT_EQ(resolve_antialiasing(AntiAliasing::Auto, tolerance::kAutoVbaaMaxPx), AntiAliasing::Vbaa);
+  EXPECT_EQ(resolve_antialiasing(AntiAliasing::Auto, tolerance::kAutoVbaaMaxPx + 1), AntiAliasing::Full);
+  EXPECT_EQ(resolve_antialiasing(AntiAliasing::Msaa, 1e6), AntiAliasing::Msaa);
+  const ShapeDocument doc = parse_shape_json(kStyledShapes);
+  ShapeImageOptions options;
+  options.transform = Transform::rotation(20.0);
+  options.antialiasing = AntiAliasing::Auto;
+  const StyledShape autod = draw_styled(doc, options);
+  expect_styled("auto_rotate20", autod, 0.005, 0.01);
+  options.antialiasing = AntiAliasing::Vbaa;
+  const StyledShape vbaa = draw_styled(doc, options);
+  EXPECT_EQ(autod.result.value, vbaa.result.value) << "auto at about 200 px is not vbaa";
+  options.antialiasing = AntiAliasing::Full;
+  const StyledShape full = draw_styled(doc, options);
+  EXPECT_LT(vbaa.stats.edge_mean_abs, full.stats.edge_mean_abs);
+
+  // 4 px per unit: each shape is 400 px wide on screen.
+  options = ShapeImageOptions{};
+  options.scale = 4.0;
+  options.antialiasing = AntiAliasing::Auto;
+  const StyledShape big_auto = draw_styled(doc, options);
+  options.antialiasing = AntiAliasing::Full;
+  const StyledShape big_full = draw_styled(doc, options);
+  EXPECT_EQ(big_auto.result.value, big_full.result.value) << "auto at 400 px is not full";
+}
+
+TEST(ShapeAntialiasing, VbaaFilterRingIsApplied) {
+  const ShapeDocument doc = parse_shape_json(kStyledShapes);
+  ShapeImageOptions options;
+  options.antialiasing = AntiAliasing::Vbaa;
+  const StyledShape box = draw_styled(doc, options);
+  options.vbaa_ring = 0.5f;
+  const StyledShape ring = draw_styled(doc, options);
+  std::printf("shape vbaa box edge %.4f, ring 0.5 edge %.4f ink %.4f\n", box.stats.edge_mean_abs,
+              ring.stats.edge_mean_abs, ring.stats.ink_ratio);
+  EXPECT_GT(ring.stats.edge_mean_abs, box.stats.edge_mean_abs + 0.005);
+  EXPECT_NEAR(ring.stats.ink_ratio, 1.0, 0.02);
 }
 
 }  // namespace

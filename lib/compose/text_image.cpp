@@ -44,54 +44,23 @@ TextImageLayout layout_text_image(const Font& font, std::string_view text, const
                                                 std::to_string(static_cast<long long>(h)) +
                                                 " px; the largest side allowed is " +
                                                 std::to_string(static_cast<int>(tolerance::kMaxImageSidePx)));
-  layout.width = static_cast<int>(w);
-  layout.height = static_cast<int>(h);
   layout.placement.scale = scale;
   layout.placement.origin_x = options.margin_px;
   layout.placement.origin_y = options.margin_px + layout.ascender_px;
-  if (!options.transform.is_identity()) {
-    options.transform.validate();
-    const Transform t = options.transform.about({w / 2.0, h / 2.0});
-    Box box;
-    double stretch = 0.0;
-    for (Vec2 c : {Vec2{0, 0}, Vec2{w, 0}, Vec2{0, h}, Vec2{w, h}}) {
-      const double cw = t.w(c) / t.m[8];
-      if (!(cw > tolerance::kMinPerspectiveW))
-        throw Error(ErrorCode::InvalidArgument,
-                    "the transform puts part of the text behind the viewer (use a smaller perspective angle or a larger distance)");
-      box.add(t.apply(c));
-      stretch = std::max(stretch, t.largest_stretch(c));
-    }
-    const double tw = std::ceil(box.max.x - box.min.x), th = std::ceil(box.max.y - box.min.y);
-    if (!(tw >= 1.0 && th >= 1.0) || tw > tolerance::kMaxImageSidePx || th > tolerance::kMaxImageSidePx)
-      throw Error(ErrorCode::InvalidArgument, "the transformed image would be " + number(tw) + "x" + number(th) +
-                                                  " px; the largest side allowed is " +
-                                                  std::to_string(static_cast<int>(tolerance::kMaxImageSidePx)));
-    layout.width = static_cast<int>(tw);
-    layout.height = static_cast<int>(th);
-    layout.placement.transform = Transform::translation(-box.min.x, -box.min.y) * t;
-    layout.largest_stretch = stretch;
-  }
+  const ImageFrame frame = transform_frame(w, h, options.transform);
+  layout.width = frame.width;
+  layout.height = frame.height;
+  layout.placement.transform = frame.transform;
+  layout.largest_stretch = frame.largest_stretch;
   return layout;
 }
 
 Image render_text_image(Renderer& renderer, GlyphCache& cache, const Font& font, const TextImageLayout& layout,
                         const TextImageOptions& options) {
   DrawBatch batch = DrawBatch::from_text(cache, font, layout.line, options.size_px * layout.largest_stretch);
-  check_coverage_gamma(options.gamma);
+  // auto: per pixels per em on screen, as for paragraphs (image_style.hpp).
+  const DrawOptions draw = draw_options(options, options.foreground, options.size_px * layout.largest_stretch);
   renderer.begin(layout.width, layout.height, options.background, options.blending);
-  DrawOptions draw;
-  draw.color = options.foreground;
-  draw.antialiasing = options.antialiasing;
-  // auto: vbaa up to kAutoVbaaMaxPx on screen, full above (bench/quality_bench:
-  // vbaa's edge error is below full's at every size from 8 to 384 px).
-  if (draw.antialiasing == AntiAliasing::Auto)
-    draw.antialiasing = options.size_px * layout.largest_stretch <= tolerance::kAutoVbaaMaxPx ? AntiAliasing::Vbaa
-                                                                                              : AntiAliasing::Full;
-  draw.curve_mode = options.curve_mode;
-  draw.vbaa_ring = options.vbaa_ring;
-  draw.gamma = options.gamma;
-  draw.debug = options.debug;
   renderer.draw(batch, layout.placement, draw);
   return renderer.read_pixels();
 }

@@ -14,7 +14,7 @@
 
 namespace curvetext {
 
-ImageSize paragraph_image_size(const Paragraph& paragraph, const ParagraphImageOptions& options) {
+ImageFrame paragraph_image_frame(const Paragraph& paragraph, const ParagraphImageOptions& options) {
   if (!std::isfinite(options.margin_px) || options.margin_px < 0.0 || options.margin_px > tolerance::kMaxImageSidePx)
     throw Error(ErrorCode::InvalidArgument, "margin must be between 0 and the largest image side");
   const Rect box = paragraph.logical_bounds();
@@ -25,13 +25,19 @@ ImageSize paragraph_image_size(const Paragraph& paragraph, const ParagraphImageO
                                                 std::to_string(static_cast<long long>(h)) +
                                                 " px; the largest side allowed is " +
                                                 std::to_string(static_cast<int>(tolerance::kMaxImageSidePx)));
-  return {static_cast<int>(w), static_cast<int>(h)};
+  return transform_frame(w, h, options.transform);
+}
+
+ImageSize paragraph_image_size(const Paragraph& paragraph, const ParagraphImageOptions& options) {
+  const ImageFrame frame = paragraph_image_frame(paragraph, options);
+  return {frame.width, frame.height};
 }
 
 Image render_paragraph_image(Renderer& renderer, GlyphCache& cache, const Paragraph& paragraph,
                              const ParagraphImageOptions& options) {
-  const ImageSize size = paragraph_image_size(paragraph, options);
-  renderer.begin(size.width, size.height, options.background);
+  const ImageFrame frame = paragraph_image_frame(paragraph, options);
+  check_coverage_gamma(options.gamma);
+  renderer.begin(frame.width, frame.height, options.background, options.blending);
   for (const LayoutLine& line : paragraph.lines()) {
     for (const GlyphRun& run : line.runs) {
       if (run.glyphs.empty()) continue;
@@ -48,12 +54,11 @@ Image render_paragraph_image(Renderer& renderer, GlyphCache& cache, const Paragr
         sg.y_offset = -g.y / scale;
         shaped.glyphs.push_back(sg);
       }
-      DrawOptions draw;
-      draw.color = style.color;
-      draw.antialiasing = options.antialiasing;
-      draw.curve_mode = options.curve_mode;
-      Placement placement{scale, options.margin_px, options.margin_px};
-      renderer.draw(DrawBatch::from_text(cache, *run.font, shaped, run.size_px), placement, draw);
+      // Pixels per em on screen: the level of detail and what `auto` picks.
+      const double on_screen_px = run.size_px * frame.largest_stretch;
+      const DrawOptions draw = draw_options(options, style.color, on_screen_px);
+      const Placement placement{scale, options.margin_px, options.margin_px, frame.transform};
+      renderer.draw(DrawBatch::from_text(cache, *run.font, shaped, on_screen_px), placement, draw);
 
       if (!style.underline && !style.strikethrough) continue;
       // Bars from the font's post / OS/2 metrics, as thick as it says.
@@ -78,7 +83,7 @@ Image render_paragraph_image(Renderer& renderer, GlyphCache& cache, const Paragr
       };
       if (style.underline) bar(HB_OT_METRICS_TAG_UNDERLINE_OFFSET, HB_OT_METRICS_TAG_UNDERLINE_SIZE, -0.1);
       if (style.strikethrough) bar(HB_OT_METRICS_TAG_STRIKEOUT_OFFSET, HB_OT_METRICS_TAG_STRIKEOUT_SIZE, 0.3);
-      renderer.draw(DrawBatch::from_mesh(build_mesh(bars)), Placement{1.0, options.margin_px, options.margin_px},
+      renderer.draw(DrawBatch::from_mesh(build_mesh(bars)), Placement{1.0, options.margin_px, options.margin_px, frame.transform},
                     draw);
     }
   }

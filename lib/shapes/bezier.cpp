@@ -103,7 +103,9 @@ void validate_nurbs(const Nurbs& c) {
   if (!c.weights.empty()) {
     if (c.weights.size() != count)
       fail(std::to_string(count) + " control points but " + std::to_string(c.weights.size()) + " weights");
-    for (std::size_t i = 0; i < count; ++i) check_weight(c.weights[i], "NURBS weight " + std::to_string(i));
+    for (std::size_t i = 0; i < count; ++i)
+      if (!shapes_detail::is_zero_middle_weight(p, i, count, c.weights[i]))
+        check_weight(c.weights[i], "NURBS weight " + std::to_string(i));
   }
   const std::size_t want = count + p + 1;
   if (c.knots.size() != want)
@@ -162,6 +164,20 @@ std::vector<RationalBezier> nurbs_to_beziers(const Nurbs& c) {
     for (std::size_t k = 0; k <= p; ++k) {
       for (std::size_t r = 0; r < p; ++r) args[r] = r < p - k ? u[span] : u[span + 1];
       bez[k] = blossom(span);
+    }
+    if (p == 2) {
+      // Weight 0 (degree 2 only) is well defined where it lands on a Bezier
+      // middle point (the piece is its chord); at a piece's end it would put
+      // that end at infinity. Weights from [kMinWeight, kMaxWeight] blend to
+      // at least kMinWeight, so only a zero weight gets below it.
+      if (bez[0].w < shapes_detail::kMinWeight || bez[2].w < shapes_detail::kMinWeight)
+        throw Error(ErrorCode::InvalidArgument, "NURBS: a weight of 0 gives the piece over knots [" + number_text(u[span]) + ", " + number_text(u[span + 1]) +
+             "] an end at infinity; 0 is allowed only where a control point is a piece's middle point (its knots "
+             "doubled)");
+      if (bez[1].w < shapes_detail::kMinWeight) {
+        out.push_back(RationalBezier::line(from_h(bez[0]), from_h(bez[2])));
+        continue;
+      }
     }
     out.push_back(from_homogeneous(bez));
   }
@@ -293,13 +309,19 @@ void append_quadratics(const RationalBezier& curve, double tolerance, std::vecto
   if (!(tolerance > 0.0) || !std::isfinite(tolerance))
     throw Error(ErrorCode::InvalidArgument, "tolerance must be positive, got " + number_text(tolerance));
   for (Vec2 p : curve.points) check_point(p, "curve piece");
-  for (double w : curve.weights) check_weight(w, "curve piece");
+  for (std::size_t i = 0; i < curve.weights.size(); ++i)
+    if (!shapes_detail::is_zero_middle_weight(static_cast<std::size_t>(curve.degree()), i, curve.weights.size(), curve.weights[i]))
+      check_weight(curve.weights[i], "curve piece");
   const Vec2 p0 = curve.points.front(), p2 = curve.points.back();
   switch (curve.degree()) {
     case 1:
       out.push_back(Segment::line(p0, p2));
       return;
     case 2:
+      if (curve.weights[1] == 0.0) {  // DESIGN.md section 3: weight 0 is the chord
+        out.push_back(Segment::line(p0, p2));
+        return;
+      }
       // Reparametrising t -> t / (t + k (1 - t)) moves the end weights to 1
       // and leaves the middle weight w1 / sqrt(w0 w2): the same curve.
       out.push_back(Segment::conic(p0, curve.points[1], p2,

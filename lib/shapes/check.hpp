@@ -40,11 +40,21 @@ inline constexpr double kMinWeight = 1e-9;
 inline constexpr double kMaxWeight = 1e9;
 
 inline void check_weight(double w, const std::string& what) {
+  if (w == 0.0)
+    throw Error(ErrorCode::InvalidArgument,
+                what + ": weight 0 is allowed only as the middle weight of a quadratic (where it gives the chord)");
   if (!std::isfinite(w) || w <= 0.0)
     throw Error(ErrorCode::InvalidArgument, what + ": weight " + number_text(w) + " must be a positive finite number");
   if (w < kMinWeight || w > kMaxWeight)
     throw Error(ErrorCode::InvalidArgument, what + ": weight " + number_text(w) + " is outside [" +
                                                 number_text(kMinWeight) + ", " + number_text(kMaxWeight) + "]");
+}
+
+// DESIGN.md section 3: a rational quadratic with middle weight 0 (end
+// weights > 0) is its chord. True when piece `index` of a degree-2 curve
+// with `count` weights may be 0 (the middle one) and is.
+inline bool is_zero_middle_weight(std::size_t degree, std::size_t index, std::size_t count, double w) {
+  return degree == 2 && index > 0 && index + 1 < count && w == 0.0;
 }
 
 }  // namespace curvetext::shapes_detail

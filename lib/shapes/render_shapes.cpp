@@ -18,13 +18,32 @@ namespace {
 // the image.
 constexpr double kDefaultLongSidePx = 512.0;
 
+Box shape_box(const Shape& s) {
+  Box box;
+  for (const ShapeContour& c : s.contours)
+    for (const RationalBezier& b : c.pieces)
+      for (Vec2 p : b.points) box.add(p);
+  return box;
+}
+
 Box content_box(const ShapeDocument& doc) {
   Box box;
-  for (const Shape& s : doc.shapes)
-    for (const ShapeContour& c : s.contours)
-      for (const RationalBezier& b : c.pieces)
-        for (Vec2 p : b.points) box.add(p);
+  for (const Shape& s : doc.shapes) {
+    const Box b = shape_box(s);
+    if (!b.empty()) {
+      box.add(b.min);
+      box.add(b.max);
+    }
+  }
   return box;
+}
+
+// The larger side of the shape's control polygon box on screen, in pixels:
+// what `auto` picks by (as text by its pixels per em).
+double on_screen_size(const Shape& shape, const ShapeImageLayout& layout) {
+  const Box b = shape_box(shape);
+  if (b.empty()) return 0.0;
+  return std::max(b.max.x - b.min.x, b.max.y - b.min.y) * layout.placement.scale * layout.largest_stretch;
 }
 
 int image_side(double v, const char* what) {
@@ -80,13 +99,18 @@ ShapeImageLayout layout_shape_image(const ShapeDocument& doc, const ShapeImageOp
   if (!std::isfinite(layout.placement.origin_x) || !std::isfinite(layout.placement.origin_y) ||
       std::abs(layout.placement.origin_x) > 1e12 || std::abs(layout.placement.origin_y) > 1e12)
     throw Error(ErrorCode::InvalidArgument, "the view is too far from the origin at this scale");
+  const ImageFrame frame = transform_frame(layout.width, layout.height, options.transform);
+  layout.width = frame.width;
+  layout.height = frame.height;
+  layout.placement.transform = frame.transform;
+  layout.largest_stretch = frame.largest_stretch;
   return layout;
 }
 
 Image render_shape_image(Renderer& renderer, const ShapeDocument& doc, const ShapeImageLayout& layout,
                          const ShapeImageOptions& options) {
   // DESIGN.md section 3: 1/16 px at the scale drawn, in document units.
-  const double tolerance = tolerance::kCubicApproximationPx / layout.placement.scale;
+  const double tolerance = tolerance::kCubicApproximationPx / (layout.placement.scale * layout.largest_stretch);
   // Meshes first: geometry errors surface before anything is drawn.
   std::vector<Mesh> meshes;
   for (const Shape& shape : doc.shapes) {
@@ -99,12 +123,7 @@ Image render_shape_image(Renderer& renderer, const ShapeDocument& doc, const Sha
   for (std::size_t i = 0; i < meshes.size(); ++i) {
     if (meshes[i].empty()) continue;
     DrawBatch batch = DrawBatch::from_mesh(meshes[i]);
-    DrawOptions draw;
-    draw.color = doc.shapes[i].color;
-    draw.antialiasing = options.antialiasing;
-    draw.curve_mode = options.curve_mode;
-    draw.gamma = options.gamma;
-    draw.debug = options.debug;
+    const DrawOptions draw = draw_options(options, doc.shapes[i].color, on_screen_size(doc.shapes[i], layout));
     renderer.draw(batch, layout.placement, draw);
   }
   return renderer.read_pixels();

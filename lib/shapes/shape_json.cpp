@@ -97,6 +97,7 @@ void read_item(const Value& item, const std::string& path, ShapeContour& contour
                                      std::to_string(b.weights.size()));
       for (std::size_t i = 0; i < b.weights.size(); ++i) {
         try {
+          if (shapes_detail::is_zero_middle_weight(b.points.size() - 1, i, b.weights.size(), b.weights[i])) continue;
           check_weight(b.weights[i], p + ".weights[" + std::to_string(i) + "]");
         } catch (const Error& e) {
           fail(w->array[i], p + ".weights", e.what());
@@ -105,6 +106,8 @@ void read_item(const Value& item, const std::string& path, ShapeContour& contour
     } else {
       b.weights.assign(b.points.size(), 1.0);
     }
+    // A rational quadratic with middle weight 0 is its chord.
+    if (b.points.size() == 3 && b.weights[1] == 0.0) b = RationalBezier::line(b.points[0], b.points[2]);
     contour.pieces.push_back(std::move(b));
     return;
   }

@@ -189,7 +189,23 @@ expect_error "render: perspective 95 degrees" 1 "perspective" -- render --size 2
 expect_error "render: behind the viewer" 1 "behind" -- render --size 20 --text Hamburgefontsiv --perspective 80,20 -o "$tmp/out.png"
 expect_error "render: transformed image too large" 1 "largest side" -- render --size 20 --text hi --scale 1e5 -o "$tmp/out.png"
 expect_error "render: matrix with 3 numbers" 2 "6 or 9" -- render --size 20 --text hi --transform 1,2,3 -o "$tmp/out.png"
-expect_error "render: transform with paragraph" 2 "single lines" -- render --size 20 --text hi --rotate 3 --width 100 -o "$tmp/out.png"
+# Paragraphs take the same transforms: rotated, the image is the turned rectangle's bounding box.
+if timeout 120 "$CURVETEXT" render --size 16 --width 120 --text "A paragraph that wraps onto lines" --rotate 30 -o "$tmp/prot.png" 2>"$tmp/stderr" &&
+   timeout 120 "$CURVETEXT" render --size 16 --width 120 --text "A paragraph that wraps" --perspective 40 --skew 5 -o "$tmp/ppersp.png" 2>>"$tmp/stderr" &&
+   timeout 120 "$CURVETEXT" render --size 16 --width 120 --text "A paragraph that wraps" --scale 1.5,1 -o "$tmp/pscale.png" 2>>"$tmp/stderr"; then
+  read -r w h <<<"$(png_size "$tmp/prot.png")"
+  read -r sw sh <<<"$(png_size "$tmp/pscale.png")"
+  # Unturned: 152 px wide (120 + 2 margins); turned 30 degrees both sides grow; scaled 1.5 wide: 228.
+  if [ "$w" -gt 152 ] && [ "$h" -gt 152 ] && [ "$sw" -eq 228 ]; then ok "render paragraph transformed ${w}x${h}, scaled ${sw}x${sh}"
+  else bad "render paragraph --rotate 30: ${w}x${h}, --scale 1.5,1: ${sw}x${sh}"; fi
+else
+  bad "render paragraph with transforms failed: $(cat "$tmp/stderr")"
+fi
+expect_error "render: paragraph NaN rotation" 1 "finite" -- render --size 20 --text hi --rotate nan --width 100 -o "$tmp/out.png"
+expect_error "render: paragraph singular map" 1 "singular" -- render --size 20 --text hi --scale 0,1 --width 100 -o "$tmp/out.png"
+expect_error "render: paragraph behind the viewer" 1 "behind" -- render --size 20 --width 300 --text "Hamburgefontsiv and more" --perspective 80,20 -o "$tmp/out.png"
+expect_error "render: paragraph transformed image too large" 1 "largest side" -- render --size 20 --text hi --width 100 --scale 1e4 -o "$tmp/out.png"
+expect_error "render: perspective default distance twice" 2 "first" -- render --size 20 --text hi --perspective 10 --perspective 20 -o "$tmp/out.png"
 for mode in vbaa msaa auto; do
   if timeout 120 "$CURVETEXT" render --size 12 --text "Hamburg" --aa $mode --rotate 10 -o "$tmp/$mode.png" 2>"$tmp/stderr"; then
     ok "render --aa $mode"
@@ -225,7 +241,39 @@ expect_error "render: unknown blending" 1 "unknown blending 'gamma'" -- render -
 expect_error "render: unknown vbaa filter" 1 "unknown vbaa filter" -- render --size 20 --text hi --vbaa-filter gauss -o "$tmp/out.png"
 expect_error "render: NaN vbaa ring" 1 "unknown vbaa filter" -- render --size 20 --text hi --vbaa-filter nan -o "$tmp/out.png"
 expect_error "render: vbaa ring above 1" 1 "unknown vbaa filter" -- render --size 20 --text hi --vbaa-filter 2 -o "$tmp/out.png"
-expect_error "render: debug with paragraph" 2 "single lines" -- render --size 20 --text hi --debug --width 100 -o "$tmp/out.png"
+for extra in "--debug" "--blend linear --gamma 1.8" "--aa vbaa --vbaa-filter paper" "--aa auto" "--aa auto --scale 30"; do
+  # shellcheck disable=SC2086
+  if timeout 120 "$CURVETEXT" render --size 16 --width 120 --markup --text "<u>Hamburg</u> <s>and</s> more words" $extra -o "$tmp/popt.png" 2>"$tmp/stderr" &&
+     [ -s "$tmp/popt.png" ]; then
+    ok "render paragraph $extra"
+  else
+    bad "render paragraph $extra failed: $(cat "$tmp/stderr")"
+  fi
+done
+expect_error "render: paragraph NaN gamma" 1 "--gamma must be" -- render --size 20 --text hi --gamma nan --width 100 -o "$tmp/out.png"
+expect_error "render: paragraph unknown blending" 1 "unknown blending" -- render --size 20 --text hi --blend x --width 100 -o "$tmp/out.png"
+expect_error "render: paragraph unknown vbaa filter" 1 "unknown vbaa filter" -- render --size 20 --text hi --vbaa-filter -1 --width 100 -o "$tmp/out.png"
+# Shapes: auto, the vbaa filter and transforms (--scale stays pixels per unit there).
+for extra in "--aa auto" "--aa vbaa --vbaa-filter 0.25" "--rotate 30" "--perspective 40 --aa auto" "--skew 10,5 --transform 1,0,0,0,2,0" \
+             "--scale 4 --aa auto"; do
+  # shellcheck disable=SC2086
+  if timeout 120 "$CURVETEXT" shape --input "$shape_json" $extra -o "$tmp/sopt.png" 2>"$tmp/stderr" && [ -s "$tmp/sopt.png" ]; then
+    ok "shape $extra"
+  else
+    bad "shape $extra failed: $(cat "$tmp/stderr")"
+  fi
+done
+read -r w h <<<"$(png_size "$tmp/sopt.png")"
+if [ "$w" -eq 240 ] && [ "$h" -eq 160 ]; then ok "shape --scale 4 is pixels per unit (240x160)"; else bad "shape --scale 4: ${w}x${h}, want 240x160"; fi
+timeout 120 "$CURVETEXT" shape --input "$shape_json" --rotate 90 -o "$tmp/srot.png" 2>"$tmp/stderr"
+read -r w h <<<"$(png_size "$tmp/srot.png")"
+if [ "$w" -eq 40 ] && [ "$h" -eq 60 ]; then ok "shape --rotate 90 turns the 60x40 image (40x60)"; else bad "shape --rotate 90: ${w}x${h}, want 40x60"; fi
+expect_error "shape: NaN rotation" 1 "finite" -- shape --input "$shape_json" --rotate nan -o "$tmp/out.png"
+expect_error "shape: singular transform" 1 "singular" -- shape --input "$shape_json" --transform 1,0,0,0,0,0 -o "$tmp/out.png"
+expect_error "shape: behind the viewer" 1 "behind" -- shape --input "$shape_json" --perspective 85,10 -o "$tmp/out.png"
+expect_error "shape: transformed image too large" 1 "largest side" -- shape --input "$shape_json" --transform 1000,0,0,0,1,0 -o "$tmp/out.png"
+expect_error "shape: unknown vbaa filter" 1 "unknown vbaa filter" -- shape --input "$shape_json" --vbaa-filter big -o "$tmp/out.png"
+expect_error "shape: skew 90" 1 "skew" -- shape --input "$shape_json" --skew 90 -o "$tmp/out.png"
 expect_error "shape: NaN gamma" 1 "--gamma must be" -- shape --input "$shape_json" --gamma nan -o "$tmp/out.png"
 expect_error "shape: unknown blending" 1 "unknown blending" -- shape --input "$shape_json" --blend lin -o "$tmp/out.png"
 

@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "curvetext/error.hpp"
+
 namespace curvetext::test {
 
 Coverage coverage_from_black_on_white(const Image& image) {
@@ -95,6 +97,22 @@ Outline place_outline(const Outline& outline, const Placement& pl) {
   for (Contour& c : out.contours())
     for (Segment& s : c.segments)
       for (Vec2& p : s.p) p = map(p);
+  return out;
+}
+
+Outline transform_outline(const Outline& in, const Transform& t) {
+  Outline out = in;
+  for (Contour& c : out.contours())
+    for (Segment& s : c.segments) {
+      if (s.kind == Segment::Kind::Conic) {
+        const double w0 = t.w(s.p[0]), w1 = t.w(s.p[1]), w2 = t.w(s.p[2]);
+        s.weight = s.weight * w1 / std::sqrt(w0 * w2);
+      } else if (s.kind == Segment::Kind::Cubic && !t.is_affine()) {
+        throw Error(ErrorCode::InvalidArgument, "cubics under perspective are rational cubics");
+      }
+      const int n = s.kind == Segment::Kind::Line ? 2 : s.kind == Segment::Kind::Conic ? 3 : 4;
+      for (int i = 0; i < n; ++i) s.p[i] = t.apply(s.p[i]);
+    }
   return out;
 }
 

@@ -63,4 +63,10 @@ Outline line_outline(const Font& font, const ShapedLine& line);
 // Outline in pixel space -> the same with every point mapped by placement.
 Outline place_outline(const Outline& outline, const Placement& placement);
 
+// Pixel-space outline (y down) mapped by a projective transform (a conic
+// stays a conic: control points mapped, weight times w1 / sqrt(w0 w2)).
+// Lines and conics stay exact; cubics only under affine maps (throws
+// otherwise).
+Outline transform_outline(const Outline& outline, const Transform& transform);
+
 }  // namespace curvetext::test

@@ -7,6 +7,7 @@
 #include "curvetext/image.hpp"
 #include "curvetext/renderer.hpp"
 #include "curvetext/shapes.hpp"
+#include "style_options.hpp"
 
 namespace curvetext::cli {
 
@@ -27,10 +28,12 @@ int run_shape(const std::vector<std::string>& arguments) {
   std::optional<std::string> input, output;
   std::optional<Color> foreground;
   ShapeImageOptions options;
+  StyleCli style(/*scale_is_transform=*/false);
 
   Args args(arguments);
   while (args.next()) {
     const std::string& a = args.option();
+    if (style.parse(args, options)) continue;
     if (a == "--input" || a == "-i") input = args.value();
     else if (a == "-o" || a == "--output") output = args.value();
     else if (a == "--size") parse_size(args.value(), options.width, options.height);
@@ -39,16 +42,7 @@ int run_shape(const std::vector<std::string>& arguments) {
       if (!(options.scale > 0.0) || !std::isfinite(options.scale))
         throw Error(ErrorCode::InvalidArgument, "--scale must be a positive number of pixels per unit");
     }
-    else if (a == "--aa") options.antialiasing = parse_antialiasing(args.value());
-    else if (a == "--curve") options.curve_mode = parse_curve_mode(args.value());
     else if (a == "--fg") foreground = parse_color(args.value());
-    else if (a == "--bg") options.background = parse_color(args.value());
-    else if (a == "--blend") options.blending = parse_blending(args.value());
-    else if (a == "--gamma") {
-      options.gamma = static_cast<float>(parse_number(a, args.value()));
-      check_coverage_gamma(options.gamma, "--gamma");
-    }
-    else if (a == "--debug") options.debug = true;
     else throw UsageError{"unknown option " + a};
   }
   if (!input) throw UsageError{"--input FILE is required"};
@@ -58,6 +52,12 @@ int run_shape(const std::vector<std::string>& arguments) {
   if (foreground)
     for (Shape& s : doc.shapes) s.color = *foreground;
   // Everything that can be checked without a GL device is checked first.
+  if (style.perspective_pending()) {
+    const ShapeImageLayout plain = layout_shape_image(doc, options);
+    options.transform = style.transform(plain.width, plain.height);
+  } else {
+    options.transform = style.transform(0, 0);
+  }
   const ShapeImageLayout layout = layout_shape_image(doc, options);
   HeadlessContext context = HeadlessContext::create();
   Renderer renderer;

@@ -6,24 +6,33 @@
 // first baseline is at margin + A as in DESIGN.md section 6.
 #pragma once
 
+#include "curvetext/image_style.hpp"
 #include "curvetext/layout.hpp"
 #include "curvetext/renderer.hpp"
 
 namespace curvetext {
 
-struct ParagraphImageOptions {
+// Background, antialiasing, curve test, vbaa filter, blending, gamma, debug
+// view and transform: ImageStyle (image_style.hpp), as for single lines. The
+// transform is applied about the centre of the untransformed image, which
+// then grows to the transformed bounding box; `auto` picks per glyph run from
+// its pixels per em on screen, as render_text_image does for a line.
+struct ParagraphImageOptions : ImageStyle {
   double margin_px = 16.0;
-  Color background{1, 1, 1, 1};
-  AntiAliasing antialiasing = AntiAliasing::Full;
-  CurveMode curve_mode = CurveMode::Exact;
 };
 
 struct ImageSize {
   int width = 0, height = 0;
 };
 
-// Throws Error(InvalidArgument) when a side would exceed tolerance::kMaxImageSidePx.
+// The image's size (after options.transform). Throws Error(InvalidArgument)
+// when a side would exceed tolerance::kMaxImageSidePx, or for a transform
+// that transform_frame refuses.
 ImageSize paragraph_image_size(const Paragraph& paragraph, const ParagraphImageOptions& options);
+
+// The untransformed image (margins around the layout box) under
+// options.transform; same errors.
+ImageFrame paragraph_image_frame(const Paragraph& paragraph, const ParagraphImageOptions& options);
 
 // Draws with `renderer` (its GL context current).
 Image render_paragraph_image(Renderer& renderer, GlyphCache& cache, const Paragraph& paragraph,

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "curvetext/color.hpp"
+#include "curvetext/image_style.hpp"
 #include "curvetext/outline.hpp"
 #include "curvetext/renderer.hpp"
 
@@ -27,7 +28,9 @@ enum class FillRule { NonZero, EvenOdd };
 FillRule parse_fill_rule(std::string_view text);
 
 // A rational Bezier piece of degree points.size() - 1 >= 1, in homogeneous
-// form sum(w_i B_i(t) p_i) / sum(w_i B_i(t)). Every weight is > 0.
+// form sum(w_i B_i(t) p_i) / sum(w_i B_i(t)). Every weight is > 0, except
+// the middle weight of a quadratic, which may be 0 (the piece is its chord,
+// DESIGN.md section 3).
 struct RationalBezier {
   std::vector<Vec2> points;
   std::vector<double> weights;
@@ -79,7 +82,9 @@ struct Nurbs {
 };
 
 // Throws Error(InvalidArgument) naming the problem (bad degree, counts, knot
-// order or multiplicity, NaN/inf/huge values, weights <= 0).
+// order or multiplicity, NaN/inf/huge values, weights <= 0 except 0 at an
+// interior point of degree 2; nurbs_to_beziers refuses a 0 that lands on a
+// piece's end and turns a piece whose middle weight is 0 into its chord).
 void validate_nurbs(const Nurbs& curve);
 
 // Exact conversion into rational Bezier pieces of the same degree, one per
@@ -142,28 +147,28 @@ ShapeDocument parse_svg(std::string_view text);
 ShapeDocument read_shape_file(const std::string& path);
 
 // --- Drawing ----------------------------------------------------------------------
-struct ShapeImageOptions {
+// Background, antialiasing, curve test, vbaa filter, blending, gamma, debug
+// view and transform: ImageStyle (image_style.hpp), as for text. The
+// transform is applied about the centre of the untransformed image (width x
+// height), which then grows to the transformed bounding box. `auto` picks per
+// shape from the larger side of its bounding box on screen (vbaa up to
+// tolerance::kAutoVbaaMaxPx, full above).
+struct ShapeImageOptions : ImageStyle {
   int width = 0;       // 0: from the document (or the view at `scale`)
   int height = 0;
   double scale = 0.0;  // pixels per document unit; 0: fit the view into the image
-  Color background{1, 1, 1, 1};
-  AntiAliasing antialiasing = AntiAliasing::Full;
-  CurveMode curve_mode = CurveMode::Exact;
-  // Blending of the framebuffer (Renderer::begin), coverage gamma and the
-  // debug view (DrawOptions::gamma, DrawOptions::debug).
-  Blending blending = Blending::Srgb;
-  float gamma = 1.0f;
-  bool debug = false;
 };
 
 struct ShapeImageLayout {
   int width = 0;
   int height = 0;
-  Placement placement;  // document units (y-up) -> pixels
+  Placement placement;  // document units (y-up) -> pixels (then placement.transform)
+  double largest_stretch = 1.0;  // of placement.transform over the image
 };
 
 // Throws Error(InvalidArgument) for an empty document, an empty view, a scale
-// that is not positive and finite, or an image side above the limit.
+// that is not positive and finite, an image side above the limit, or a
+// transform that transform_frame refuses.
 ShapeImageLayout layout_shape_image(const ShapeDocument& doc, const ShapeImageOptions& options);
 
 // Draws every shape in order (one mesh, one batch, one colour each, blended

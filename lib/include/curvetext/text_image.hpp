@@ -10,30 +10,22 @@
 #include <string_view>
 
 #include "curvetext/font.hpp"
+#include "curvetext/image_style.hpp"
 #include "curvetext/renderer.hpp"
 #include "curvetext/shaping.hpp"
 
 namespace curvetext {
 
-struct TextImageOptions {
+// Background, antialiasing, curve test, vbaa filter, blending, gamma, debug
+// view and transform: ImageStyle (image_style.hpp), shared with paragraphs and
+// shapes. The transform is applied about the centre of the contract's image;
+// the image then becomes the bounding box of the transformed one (ceil of its
+// size), so nothing is cut off. Identity: the contract exactly.
+struct TextImageOptions : ImageStyle {
   double size_px = 32.0;
   double margin_px = 16.0;
   Color foreground{0, 0, 0, 1};
-  Color background{1, 1, 1, 1};
-  AntiAliasing antialiasing = AntiAliasing::Full;
-  CurveMode curve_mode = CurveMode::Exact;
-  // vbaa's filter ring (DrawOptions::vbaa_ring): 0 a box filter (default).
-  float vbaa_ring = 0.0f;
-  // Blending of the framebuffer (Renderer::begin), coverage gamma and the
-  // debug view (DrawOptions::gamma, DrawOptions::debug).
-  Blending blending = Blending::Srgb;
-  float gamma = 1.0f;
-  bool debug = false;
   ShapeOptions shaping;
-  // Applied about the centre of the contract's image; the image then becomes
-  // the bounding box of the transformed one (ceil of its size), so nothing is
-  // cut off. Identity: the contract exactly.
-  Transform transform;
 };
 
 struct TextImageLayout {

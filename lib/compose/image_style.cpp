@@ -1,0 +1,73 @@
+#include "curvetext/image_style.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "curvetext/error.hpp"
+#include "curvetext/geometry.hpp"
+#include "curvetext/tolerances.hpp"
+
+namespace curvetext {
+
+namespace {
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+}  // namespace
+
+AntiAliasing resolve_antialiasing(AntiAliasing aa, double on_screen_px) {
+  if (aa != AntiAliasing::Auto) return aa;
+  // bench/quality_bench: vbaa's edge error is below full's at every size
+  // from 8 to 384 px; above, nothing was measured and the offscreen texture
+  // grows with the square of the size.
+  return on_screen_px <= tolerance::kAutoVbaaMaxPx ? AntiAliasing::Vbaa : AntiAliasing::Full;
+}
+
+DrawOptions draw_options(const ImageStyle& style, Color color, double on_screen_px) {
+  check_coverage_gamma(style.gamma);
+  DrawOptions draw;
+  draw.color = color;
+  draw.antialiasing = resolve_antialiasing(style.antialiasing, on_screen_px);
+  draw.curve_mode = style.curve_mode;
+  draw.vbaa_ring = style.vbaa_ring;
+  draw.gamma = style.gamma;
+  draw.debug = style.debug;
+  return draw;
+}
+
+ImageFrame transform_frame(double w, double h, const Transform& transform) {
+  ImageFrame frame;
+  frame.width = static_cast<int>(std::ceil(w));
+  frame.height = static_cast<int>(std::ceil(h));
+  if (transform.is_identity()) return frame;
+  transform.validate();
+  const Transform t = transform.about({w / 2.0, h / 2.0});
+  Box box;
+  double stretch = 0.0;
+  for (Vec2 c : {Vec2{0, 0}, Vec2{w, 0}, Vec2{0, h}, Vec2{w, h}}) {
+    const double cw = t.w(c) / t.m[8];
+    if (!(cw > tolerance::kMinPerspectiveW))
+      throw Error(ErrorCode::InvalidArgument,
+                  "the transform puts part of the image behind the viewer (use a smaller perspective angle or a larger distance)");
+    box.add(t.apply(c));
+    stretch = std::max(stretch, t.largest_stretch(c));
+  }
+  // Rounding of cos/sin (a rotation by 90 degrees) must not add a pixel.
+  constexpr double kSlack = 1e-7;
+  const double tw = std::ceil(box.max.x - box.min.x - kSlack), th = std::ceil(box.max.y - box.min.y - kSlack);
+  if (!(tw >= 1.0 && th >= 1.0) || tw > tolerance::kMaxImageSidePx || th > tolerance::kMaxImageSidePx)
+    throw Error(ErrorCode::InvalidArgument, "the transformed image would be " + number(tw) + "x" + number(th) +
+                                                " px; the largest side allowed is " +
+                                                std::to_string(static_cast<int>(tolerance::kMaxImageSidePx)));
+  frame.width = static_cast<int>(tw);
+  frame.height = static_cast<int>(th);
+  frame.transform = Transform::translation(-box.min.x, -box.min.y) * t;
+  frame.largest_stretch = stretch;
+  return frame;
+}
+
+}  // namespace curvetext

@@ -1,0 +1,57 @@
+// What single lines (text_image.hpp), paragraphs (paragraph_image.hpp) and
+// shape documents (shapes.hpp) share when drawn to an image: antialiasing,
+// curve test, vbaa filter, blending, coverage gamma, the debug view and a
+// projective transform of the whole image. One place turns them into
+// DrawOptions and into the transformed image frame, so the three paths
+// behave alike.
+#pragma once
+
+#include "curvetext/color.hpp"
+#include "curvetext/renderer.hpp"
+#include "curvetext/transform.hpp"
+
+namespace curvetext {
+
+struct ImageStyle {
+  Color background{1, 1, 1, 1};
+  AntiAliasing antialiasing = AntiAliasing::Full;
+  CurveMode curve_mode = CurveMode::Exact;
+  // vbaa's filter ring (DrawOptions::vbaa_ring): 0 a box filter (default).
+  float vbaa_ring = 0.0f;
+  // Blending of the framebuffer (Renderer::begin), coverage gamma and the
+  // debug view (DrawOptions::gamma, DrawOptions::debug).
+  Blending blending = Blending::Srgb;
+  float gamma = 1.0f;
+  bool debug = false;
+  // Applied about the centre of the untransformed image; the image then
+  // becomes the bounding box of the transformed one (ceil of its size), so
+  // nothing is cut off. Identity: the untransformed image exactly.
+  Transform transform;
+};
+
+// `auto` for a block whose characteristic size on screen is `on_screen_px`
+// (text: pixels per em times the transform's largest stretch; shapes: the
+// larger side of the shape's bounding box on screen): vbaa up to
+// tolerance::kAutoVbaaMaxPx, full above (bench/quality_bench). Other modes
+// are returned as they are.
+AntiAliasing resolve_antialiasing(AntiAliasing aa, double on_screen_px);
+
+// The style's DrawOptions for one block drawn in `color` (auto resolved for
+// `on_screen_px`). Throws Error(InvalidArgument) for a gamma out of range.
+DrawOptions draw_options(const ImageStyle& style, Color color, double on_screen_px);
+
+// A width x height image under `transform` about its centre.
+struct ImageFrame {
+  int width = 0;
+  int height = 0;
+  Transform transform;           // untransformed image pixels -> final image pixels
+  double largest_stretch = 1.0;  // of `transform` over the image (for levels of detail)
+};
+
+// Identity: the same size (ceil) and transform. Otherwise the transformed
+// image's bounding box, moved to the origin. Throws Error(InvalidArgument) for
+// an invalid transform (Transform::validate), one that puts a corner behind
+// the viewer, or a side above tolerance::kMaxImageSidePx.
+ImageFrame transform_frame(double width, double height, const Transform& transform);
+
+}  // namespace curvetext
