@@ -369,7 +369,7 @@ class Packer {
     // Curved triangles across an edge of this one: the curve can come closer
     // than a pixel to this triangle's pixel centres (near the curve's ends,
     // and anywhere along flat curves), so full AA fades by it too.
-    std::array<CurveEdge, 2> near_curves{};
+    std::array<CurveEdge, 3> near_curves{};
     int curve_count = 0;
     auto has = [&](int ci) {
       for (int k = 0; k < curve_count; ++k)
@@ -382,7 +382,7 @@ class Packer {
       if (!ce || !bary_ok_[static_cast<std::size_t>(ce->curve)]) continue;
       has_neighbour_[static_cast<std::size_t>(ce->curve)] = 1;
       for (int li : lines) neighbour_lines_.emplace_back(ce->curve, li);
-      if (curve_count < 2 && !has(ce->curve)) near_curves[static_cast<std::size_t>(curve_count++)] = *ce;
+      if (curve_count < 3 && !has(ce->curve)) near_curves[static_cast<std::size_t>(curve_count++)] = *ce;
     }
     // Curves that touch this triangle only at a vertex, as lines through a
     // vertex (interior_lines): at small sizes triangles are smaller than a
@@ -410,19 +410,23 @@ class Packer {
     std::sort(touching.begin(), touching.end(),
               [](const auto& x, const auto& y) { return x.first < y.first; });
     for (const auto& t : touching) {
-      if (curve_count >= 2) break;
+      if (curve_count >= 3) break;
       near_curves[static_cast<std::size_t>(curve_count++)] = t.second;
     }
-    // Line slots: four in a_coef (two for kind 4, whose other two carry the
-    // second curve), then two in a_fade. Shared boundary edges come first.
-    const std::size_t coef_slots = curve_count == 2 ? 2 : 4;
+    // A third curve takes kind 5's a_fade, so only where no line needs it.
+    if (curve_count == 3 && lines.size() > 2) curve_count = 2;
+    // Line slots: four in a_coef (two for kinds 4 and 5, whose other two
+    // carry the second curve), then two in a_fade (none for kind 5, whose
+    // a_fade carries the third curve). Shared boundary edges come first.
+    const std::size_t coef_slots = curve_count >= 2 ? 2 : 4;
     std::array<int, 4> slots{-1, -1, -1, -1};
     IndexList fade;
     for (std::size_t k = 0; k < lines.size(); ++k) {
       if (k < coef_slots) slots[k] = lines[k];
-      else fade.push_back(lines[k]);
+      else if (curve_count < 3) fade.push_back(lines[k]);
     }
-    const int kind = curve_count == 2 ? kNextToTwoCurves
+    const int kind = curve_count == 3 ? kNextToThreeCurves
+                     : curve_count == 2 ? kNextToTwoCurves
                      : curve_count == 1 ? kNextToCurve
                      : !lines.empty()   ? kEdge
                                         : kSolid;
@@ -482,9 +486,9 @@ class Packer {
     return true;
   }
 
-  // Writes the kind 3/4 curve data (see vertex_format.hpp) over the slots
+  // Writes the kind 3-5 curve data (see vertex_format.hpp) over the slots
   // that interior triangles leave unused. After set_slots.
-  void set_near_curves(Vertex& v, Vec2 x, const std::array<CurveEdge, 2>& curves, int count) const {
+  void set_near_curves(Vertex& v, Vec2 x, const std::array<CurveEdge, 3>& curves, int count) const {
     auto tau = [&](const CurveEdge& ce, float& t1, float& t2, float& w) {
       const CurvedTriangle& ct = mesh_.curves[static_cast<std::size_t>(ce.curve)];
       Bary g;
@@ -496,9 +500,14 @@ class Packer {
     tau(curves[0], v.pos[2], v.pos[3], v.info[1]);
     v.info[2] = 0.0f;
     int codes = curves[0].edge;
-    if (count == 2) {
+    if (count >= 2) {
       tau(curves[1], v.coef[2], v.coef[3], v.info[2]);
       codes += 3 * curves[1].edge;
+    }
+    if (count == 3) {
+      tau(curves[2], v.fade[0], v.fade[1], v.fade[2]);
+      v.fade[3] = 0.0f;
+      codes += 9 * curves[2].edge;
     }
     v.info[3] = static_cast<float>(codes);
   }
