@@ -228,21 +228,42 @@ class Packer {
     return -1;
   }
 
-  // True when the whole triangle lies inside the half-plane of `line` and
-  // projects within the segment, so the line's distance only fades pixels
-  // that really are near that boundary segment.
+  // True when the whole triangle lies inside the half-plane of `line` and,
+  // along the line, within the segment or past an end where the shape stays
+  // in the half-plane, so the line's distance only fades pixels that really
+  // are near that boundary. Past an end the next edge must be a line that
+  // ends inside the half-plane (a convex or straight join): the end cap of
+  // a slanted stroke, whose triangles then know both sides of the stroke
+  // (without it a hairline's pixels took one side's coverage only, about
+  // twice the ink).
   bool safe_for(int line, const std::array<Vec2, 3>& p) const {
     const auto& bl = mesh_.boundary_lines[static_cast<std::size_t>(line)];
     const Vec2 a = pt(bl[0]), b = pt(bl[1]);
     const Vec2 d = b - a;
     const double len2 = dot(d, d);
     const double eps = 1e-9 * std::max(1.0, std::sqrt(len2));
+    const LineFn& f = lines_[static_cast<std::size_t>(line)];
+    bool before = false, after = false;
     for (const Vec2& x : p) {
-      if (lines_[static_cast<std::size_t>(line)](x) < -eps) return false;
+      if (f(x) < -eps) return false;
       const double s = dot(x - a, d);
-      if (s < -eps * std::sqrt(len2) || s > len2 + eps * std::sqrt(len2)) return false;
+      before = before || s < -eps * std::sqrt(len2);
+      after = after || s > len2 + eps * std::sqrt(len2);
     }
+    if (before && !stays_inside(line, corners_[bl[0]].in, bl[0], corners_[bl[0]].count_in)) return false;
+    if (after && !stays_inside(line, corners_[bl[1]].out, bl[1], corners_[bl[1]].count_out)) return false;
     return true;
+  }
+
+  // True when `next`, the only boundary line joining `line` at vertex v, has
+  // its other end inside the half-plane of `line`.
+  bool stays_inside(int line, int next, std::uint32_t v, int count) const {
+    if (next < 0 || count != 1 || next == line) return false;
+    const auto& nb = mesh_.boundary_lines[static_cast<std::size_t>(next)];
+    const Vec2 far = pt(nb[0] == v ? nb[1] : nb[0]);
+    const auto& bl = mesh_.boundary_lines[static_cast<std::size_t>(line)];
+    const double eps = 1e-9 * std::max(1.0, distance(pt(bl[0]), pt(bl[1])));
+    return lines_[static_cast<std::size_t>(line)](far) >= -eps;
   }
 
   static Vertex make(Vec2 p, Vec2 offset, int kind) {
