@@ -238,13 +238,13 @@ class Packer {
   }
 
   // True when the whole triangle lies inside the half-plane of `line` and,
-  // along the line, within the segment or past an end where the shape stays
-  // in the half-plane, so the line's distance only fades pixels that really
-  // are near that boundary. Past an end the next edge must be a line that
-  // ends inside the half-plane (a convex or straight join): the end cap of
-  // a slanted stroke, whose triangles then know both sides of the stroke
-  // (without it a hairline's pixels took one side's coverage only, about
-  // twice the ink).
+  // along the line, within the segment or past an end only where that is
+  // harmless, so the line's distance fades pixels that really are near that
+  // boundary: within a 45-degree cone past the end (see below), or where the
+  // next edge stays in the half-plane (a convex or straight join: the end
+  // cap of a slanted stroke). Without this the triangles of a hairline or a
+  // thin frame, which reach past the far side's ends, knew only one side and
+  // took its coverage alone (about twice the ink).
   bool safe_for(int line, const std::array<Vec2, 3>& p) const {
     const auto& bl = mesh_.boundary_lines[static_cast<std::size_t>(line)];
     const Vec2 a = pt(bl[0]), b = pt(bl[1]);
@@ -252,29 +252,57 @@ class Packer {
     const double len2 = dot(d, d);
     const double eps = 1e-9 * std::max(1.0, std::sqrt(len2));
     const LineFn& f = lines_[static_cast<std::size_t>(line)];
+    const double len = std::sqrt(len2);
     for (const Vec2& x : p) {
-      if (f(x) < -eps) return false;
+      const double inside = f(x);
+      if (inside < -eps) return false;
       const double s = dot(x - a, d);
-      if (s < -eps * std::sqrt(len2)) {
+      // Past an end by no more than x lies inside the line (a 45-degree
+      // cone from the end; a half-plane, so the triangle's vertices decide):
+      // only pixels within about a pixel of that end can be faded by the
+      // line's extension, where the outline turns anyway.
+      if (s < -eps * len) {
+        if (-s / len <= inside) continue;
         if (!past_end_ok(line, corners_[bl[0]].in, bl[0], corners_[bl[0]].count_in, x)) return false;
-      } else if (s > len2 + eps * std::sqrt(len2)) {
+      } else if (s > len2 + eps * len) {
+        if ((s - len2) / len <= inside) continue;
         if (!past_end_ok(line, corners_[bl[1]].out, bl[1], corners_[bl[1]].count_out, x)) return false;
       }
     }
     return true;
   }
 
-  // For x past the end v of `line`: true when `next`, the only boundary line
-  // joining `line` at v, ends inside the half-plane of `line` (a convex or
-  // straight join) and x projects within `next`'s segment, so x is no
-  // farther past the end than that edge reaches.
+  // For x past the end v of `line`: true when the outline goes on at v with
+  // one edge (`next`, the only boundary line joining `line` there, or else
+  // the only curve with an end at v) that stays inside the half-plane of
+  // `line` (a convex or straight join), and x projects within that edge's
+  // chord, so x is no farther past the end than the edge reaches.
   bool past_end_ok(int line, int next, std::uint32_t v, int count, Vec2 x) const {
-    if (next < 0 || count != 1 || next == line) return false;
-    const auto& nb = mesh_.boundary_lines[static_cast<std::size_t>(next)];
-    const Vec2 near = pt(v), far = pt(nb[0] == v ? nb[1] : nb[0]);
     const auto& bl = mesh_.boundary_lines[static_cast<std::size_t>(line)];
     const double eps = 1e-9 * std::max(1.0, distance(pt(bl[0]), pt(bl[1])));
-    if (lines_[static_cast<std::size_t>(line)](far) < -eps) return false;
+    const LineFn& f = lines_[static_cast<std::size_t>(line)];
+    const Vec2 near = pt(v);
+    Vec2 far{};
+    if (next < 0 && count == 0) {
+      // The outline goes on with a curve (a rounded corner): the one curve
+      // with an end at v, whose hull must lie in the half-plane.
+      int found = -1;
+      for (const int* it = curves_at_.begin(v); it != curves_at_.end(v); ++it) {
+        const CurvedTriangle& ct = mesh_.curves[static_cast<std::size_t>(*it)];
+        if (ct.p0 != v && ct.p2 != v) continue;
+        if (found >= 0) return false;
+        found = *it;
+      }
+      if (found < 0) return false;
+      const CurvedTriangle& ct = mesh_.curves[static_cast<std::size_t>(found)];
+      if (f(pt(ct.control)) < -eps) return false;
+      far = pt(ct.p0 == v ? ct.p2 : ct.p0);
+    } else {
+      if (next < 0 || count != 1 || next == line) return false;
+      const auto& nb = mesh_.boundary_lines[static_cast<std::size_t>(next)];
+      far = pt(nb[0] == v ? nb[1] : nb[0]);
+    }
+    if (f(far) < -eps) return false;
     const Vec2 e = far - near;
     const double e2 = dot(e, e);
     const double s = dot(x - near, e);
