@@ -192,11 +192,19 @@ struct ParagraphBuilder {
   }
 
   // Shapes paragraph code points [a, b) as one run.
+  // One HarfBuzz buffer per thread, reset for each call: creating one per
+  // item allocated its glyph arrays again every time (about 4% of laying out
+  // a Hebrew paragraph). Its contents are copied out before the next call.
+  static hb_buffer_t* scratch_buffer() {
+    thread_local detail::HbBufferPtr buffer(hb_buffer_create());
+    hb_buffer_reset(buffer.get());
+    return buffer.get();
+  }
+
   std::vector<Glyph> shape(std::size_t a, std::size_t b, std::uint8_t level, hb_script_t script, const Font& font,
                            std::size_t style_index) const {
     const ResolvedStyle& r = resolved[style_index];
-    detail::HbBufferPtr buffer(hb_buffer_create());
-    hb_buffer_t* buf = buffer.get();
+    hb_buffer_t* buf = scratch_buffer();
     hb_buffer_set_direction(buf, level % 2 ? HB_DIRECTION_RTL : HB_DIRECTION_LTR);
     hb_buffer_set_script(buf, script);
     if (r.language != HB_LANGUAGE_INVALID) hb_buffer_set_language(buf, r.language);
@@ -229,8 +237,7 @@ struct ParagraphBuilder {
   // Glyphs for a single character string (ellipsis, hyphen) in `font`.
   std::vector<Glyph> shape_string(const std::u32string& s, const Font& font, std::size_t style_index,
                                   std::uint8_t level) const {
-    detail::HbBufferPtr buffer(hb_buffer_create());
-    hb_buffer_t* buf = buffer.get();
+    hb_buffer_t* buf = scratch_buffer();
     hb_buffer_add_utf32(buf, reinterpret_cast<const std::uint32_t*>(s.data()), static_cast<int>(s.size()), 0,
                         static_cast<int>(s.size()));
     hb_buffer_set_direction(buf, level % 2 ? HB_DIRECTION_RTL : HB_DIRECTION_LTR);
@@ -256,9 +263,11 @@ struct ParagraphBuilder {
     const std::size_t n = para.size();
     // Script runs: Common and Inherited take the script of the text around them.
     std::vector<hb_script_t> script(n, HB_SCRIPT_COMMON);
+    std::vector<bool> neutral_script(n, false);  // Common or Inherited, for the font choice below
     hb_script_t last = HB_SCRIPT_COMMON;
     for (std::size_t i = 0; i < n; ++i) {
       const hb_script_t s = script_of(para[i]);
+      neutral_script[i] = s == HB_SCRIPT_COMMON || s == HB_SCRIPT_INHERITED;
       if (s != HB_SCRIPT_COMMON && s != HB_SCRIPT_INHERITED && s != HB_SCRIPT_UNKNOWN) last = s;
       script[i] = (s == HB_SCRIPT_COMMON || s == HB_SCRIPT_INHERITED || s == HB_SCRIPT_UNKNOWN) ? last : s;
     }
@@ -268,35 +277,40 @@ struct ParagraphBuilder {
       else script[i] = next;
     }
     // A font per grapheme cluster.
-    // Fonts by index (a few per paragraph), not a shared_ptr per code point.
+    // Fonts by index (a few per paragraph), not a shared_ptr per code point;
+    // the loop passes raw pointers (no reference counting per cluster), the
+    // shared_ptrs live in `used`.
     std::vector<std::shared_ptr<const Font>> used;
     std::vector<std::uint32_t> keep(n, 0);
-    std::shared_ptr<const Font> previous;
+    std::size_t previous = static_cast<std::size_t>(-1);  // index into used
     std::size_t previous_style = static_cast<std::size_t>(-1);
+    auto index_of = [&](const std::shared_ptr<const Font>& f) {
+      std::size_t index = 0;
+      while (index < used.size() && used[index] != f) ++index;
+      if (index == used.size()) used.push_back(f);
+      return index;
+    };
     for (std::size_t a = 0; a < n;) {
       std::size_t b = a + 1;
       while (b < n && !grapheme[b]) ++b;
       const std::size_t si = style_of[p0 + a];
       const ResolvedStyle& r = resolved[si];
-      std::shared_ptr<const Font> chosen;
-      const hb_script_t own = script_of(para[a]);
-      const bool neutral = own == HB_SCRIPT_COMMON || own == HB_SCRIPT_INHERITED || ignorable_for_coverage(para[a]);
+      std::size_t chosen = static_cast<std::size_t>(-1);
+      const bool neutral = neutral_script[a] || ignorable_for_coverage(para[a]);
       // Spaces, digits and punctuation stay with the font before them when it
       // has them, so a run of Arabic words is not cut at every space.
-      if (neutral && previous && previous_style == si && covers(*previous, a, b)) chosen = previous;
-      for (std::size_t k = 0; !chosen && k < r.chain.size(); ++k)
-        if (covers(*r.chain[k], a, b)) chosen = r.chain[k];
-      if (!chosen) {
+      if (neutral && previous < used.size() && previous_style == si && covers(*used[previous], a, b))
+        chosen = previous;
+      for (std::size_t k = 0; chosen == static_cast<std::size_t>(-1) && k < r.chain.size(); ++k)
+        if (covers(*r.chain[k], a, b)) chosen = index_of(r.chain[k]);
+      if (chosen == static_cast<std::size_t>(-1)) {
         std::size_t c = a;
         while (c + 1 < b && ignorable_for_coverage(para[c])) ++c;
         auto f = fonts.fallback(para[c], r.language_tag, style(si).variations);
-        chosen = f && covers(*f, a, b) ? f : (f ? f : r.chain.front());
+        chosen = index_of(f ? f : r.chain.front());
       }
-      std::size_t index = 0;
-      while (index < used.size() && used[index] != chosen) ++index;
-      if (index == used.size()) used.push_back(chosen);
-      for (std::size_t i = a; i < b; ++i) keep[i] = static_cast<std::uint32_t>(index);
-      previous = std::move(chosen);
+      for (std::size_t i = a; i < b; ++i) keep[i] = static_cast<std::uint32_t>(chosen);
+      previous = chosen;
       previous_style = si;
       a = b;
     }
