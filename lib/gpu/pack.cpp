@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "curvetext/tolerances.hpp"
 #include "gpu/vertex_format.hpp"
 
 namespace curvetext::gpu {
@@ -258,14 +259,14 @@ class Packer {
       if (inside < -eps) return false;
       const double s = dot(x - a, d);
       // Past an end by no more than x lies inside the line (a 45-degree
-      // cone from the end; a half-plane, so the triangle's vertices decide):
-      // only pixels within about a pixel of that end can be faded by the
-      // line's extension, where the outline turns anyway.
+      // cone from the end; a half-plane, so the triangle's vertices decide)
+      // and a tenth of the line's length: only pixels near that end can be
+      // faded by the line's extension, where the outline turns anyway.
       if (s < -eps * len) {
-        if (-s / len <= inside) continue;
+        if (-s / len <= std::min(inside, tolerance::kFadePastEndFraction * len)) continue;
         if (!past_end_ok(line, corners_[bl[0]].in, bl[0], corners_[bl[0]].count_in, x)) return false;
       } else if (s > len2 + eps * len) {
-        if ((s - len2) / len <= inside) continue;
+        if ((s - len2) / len <= std::min(inside, tolerance::kFadePastEndFraction * len)) continue;
         if (!past_end_ok(line, corners_[bl[1]].out, bl[1], corners_[bl[1]].count_out, x)) return false;
       }
     }

@@ -49,6 +49,16 @@ inline constexpr float kFringeWidthPx = 0.7072f;
 // with this one). In pixels; the shaders' CURVETEXT_THIRD_CURVE_MIN_CHORD_PX.
 inline constexpr float kThirdCurveMinChordPx = 2.0f;
 
+// Full AA packing (lib/gpu/pack.cpp, safe_for): a boundary line fades a
+// triangle that reaches past the line's end by at most this fraction of the
+// line's length (and by no more than the triangle lies inside the line).
+// Unbounded, the bar under a hieroglyph's feet, cut into segments of 5-24
+// units where the feet join it, was faded under the feet (Noto Sans Egyptian
+// Hieroglyphs glyph 335: a line of pixels 0.33 too light); 0.1 keeps that at
+// its former 0.30 and still lets the slivers of a thin frame know both its
+// sides (Noto Sans Symbols2 glyphs 2159, 2188). Dimensionless.
+inline constexpr double kFadePastEndFraction = 0.1;
+
 // Border around a block's projected bounding box in the vbaa / msaa offscreen
 // pass, in pixels: the full-AA fringe (kFringeWidthPx) plus the filter's ring
 // of one texel, rounded up.
