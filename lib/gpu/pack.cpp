@@ -97,27 +97,36 @@ struct FringeEdge {
   int curve = -1;  // curve index
 };
 
+// One per thread, reused across meshes: its arrays keep their capacity, so
+// packing a glyph allocates nothing once they are warm.
 class Packer {
  public:
-  Packer(const Mesh& mesh, std::vector<Vertex>& out) : mesh_(mesh), out_(out) {}
-
-  void run() {
-    out_.reserve(out_.size() + 3 * mesh_.triangles.size() + 15 * mesh_.curves.size() +
-                 6 * mesh_.boundary_lines.size());
+  void run(const Mesh& mesh, std::vector<Vertex>& out) {
+    mesh_ = &mesh;
+    out_ = &out;
+    lines_.clear();
+    edges_.clear();
+    out_->reserve(out_->size() + 3 * mesh_->triangles.size() + 15 * mesh_->curves.size() +
+                  6 * mesh_->boundary_lines.size());
     prepare_lines();
     prepare_curve_edges();
-    for (const auto& tri : mesh_.triangles) {
-      interior(tri);
-      remember_boundary_triangle(tri);
+    triangle_lines_.resize(mesh_->triangles.size());
+    for (std::size_t t = 0; t < mesh_->triangles.size(); ++t) {
+      const auto& tri = mesh_->triangles[t];
+      triangle_lines_[t] = interior_lines(tri);
+      interior(tri, triangle_lines_[t]);
+      remember_boundary_triangle(tri, static_cast<std::uint32_t>(t));
     }
     group_curve_neighbours();
-    for (std::size_t i = 0; i < mesh_.curves.size(); ++i) curve(i);
+    for (std::size_t i = 0; i < mesh_->curves.size(); ++i) curve(i);
     collect_fringe_edges();
     for (const FringeEdge& e : edges_) fringe(e);
+    mesh_ = nullptr;
+    out_ = nullptr;
   }
 
  private:
-  Vec2 pt(std::uint32_t i) const { return mesh_.points[i]; }
+  Vec2 pt(std::uint32_t i) const { return mesh_->points[i]; }
 
   struct CurveEdge {
     int curve = -1;
@@ -125,11 +134,11 @@ class Packer {
   };
 
   void prepare_lines() {
-    const std::size_t n = mesh_.points.size();
+    const std::size_t n = mesh_->points.size();
     corners_.assign(n, Corner{});
-    lines_.reserve(mesh_.boundary_lines.size());
-    for (std::size_t i = 0; i < mesh_.boundary_lines.size(); ++i) {
-      const auto& bl = mesh_.boundary_lines[i];
+    lines_.reserve(mesh_->boundary_lines.size());
+    for (std::size_t i = 0; i < mesh_->boundary_lines.size(); ++i) {
+      const auto& bl = mesh_->boundary_lines[i];
       const Vec2 a = pt(bl[0]), b = pt(bl[1]);
       const double len = distance(a, b);
       LineFn f{a, len > 0 ? left_normal(b - a) / len : Vec2{}};
@@ -142,13 +151,13 @@ class Packer {
       ++cb.count_in;
     }
     lines_from_.build(n, [&](auto emit) {
-      for (std::size_t i = 0; i < mesh_.boundary_lines.size(); ++i) {
+      for (std::size_t i = 0; i < mesh_->boundary_lines.size(); ++i) {
         if (lines_[i].n == Vec2{}) continue;  // zero length: not an edge of anything
-        emit(mesh_.boundary_lines[i][0], static_cast<int>(i));
+        emit(mesh_->boundary_lines[i][0], static_cast<int>(i));
       }
     });
-    boundary_triangle_.assign(mesh_.boundary_lines.size(), {});
-    has_boundary_triangle_.assign(mesh_.boundary_lines.size(), 0);
+    boundary_triangle_.assign(mesh_->boundary_lines.size(), {});
+    has_boundary_triangle_.assign(mesh_->boundary_lines.size(), 0);
   }
 
   // The boundary line a->b or, failing that, b->a (the latest added of
@@ -158,7 +167,7 @@ class Packer {
       const std::uint32_t to = from == a ? b : a;
       int found = -1;
       for (const int* it = lines_from_.begin(from); it != lines_from_.end(from); ++it) {
-        if (mesh_.boundary_lines[static_cast<std::size_t>(*it)][1] == to) found = *it;
+        if (mesh_->boundary_lines[static_cast<std::size_t>(*it)][1] == to) found = *it;
       }
       if (found >= 0) return found;
     }
@@ -178,13 +187,13 @@ class Packer {
   // The hull edge each curved triangle shares with the interior mesh: the
   // chord of a convex curve, the legs of a concave one.
   void prepare_curve_edges() {
-    const std::size_t n = mesh_.points.size();
-    barys_.resize(mesh_.curves.size());
-    bary_ok_.resize(mesh_.curves.size());
-    for (std::size_t i = 0; i < mesh_.curves.size(); ++i) bary_ok_[i] = compute_bary(mesh_.curves[i], barys_[i]);
+    const std::size_t n = mesh_->points.size();
+    barys_.resize(mesh_->curves.size());
+    bary_ok_.resize(mesh_->curves.size());
+    for (std::size_t i = 0; i < mesh_->curves.size(); ++i) bary_ok_[i] = compute_bary(mesh_->curves[i], barys_[i]);
     curves_at_.build(n, [&](auto emit) {
-      for (std::size_t i = 0; i < mesh_.curves.size(); ++i) {
-        const CurvedTriangle& ct = mesh_.curves[i];
+      for (std::size_t i = 0; i < mesh_->curves.size(); ++i) {
+        const CurvedTriangle& ct = mesh_->curves[i];
         for (std::uint32_t v : {ct.p0, ct.control, ct.p2}) emit(v, static_cast<int>(i));
       }
     });
@@ -192,8 +201,8 @@ class Packer {
       auto add = [&](std::uint32_t a, std::uint32_t b, CurveEdge ce) {
         emit(std::min(a, b), std::pair<std::uint32_t, CurveEdge>{std::max(a, b), ce});
       };
-      for (std::size_t i = 0; i < mesh_.curves.size(); ++i) {
-        const CurvedTriangle& ct = mesh_.curves[i];
+      for (std::size_t i = 0; i < mesh_->curves.size(); ++i) {
+        const CurvedTriangle& ct = mesh_->curves[i];
         const int ci = static_cast<int>(i);
         if (ct.convex) {
           add(ct.p0, ct.p2, {ci, kChord});
@@ -203,13 +212,13 @@ class Packer {
         }
       }
     });
-    has_neighbour_.assign(mesh_.curves.size(), 0);
+    has_neighbour_.assign(mesh_->curves.size(), 0);
     neighbour_lines_.clear();
   }
 
   // Per curve, in order, the lines of the interior triangles across its edges.
   void group_curve_neighbours() {
-    neighbour_rows_.build(mesh_.curves.size(), [&](auto emit) {
+    neighbour_rows_.build(mesh_->curves.size(), [&](auto emit) {
       for (const auto& [ci, li] : neighbour_lines_) emit(static_cast<std::uint32_t>(ci), li);
     });
   }
@@ -218,8 +227,8 @@ class Packer {
   int convex_partner(int line, std::uint32_t v) const {
     const Corner& c = corners_[v];
     if (c.count_in != 1 || c.count_out != 1) return -1;  // touching loops: ambiguous
-    const auto& in = mesh_.boundary_lines[static_cast<std::size_t>(c.in)];
-    const auto& out = mesh_.boundary_lines[static_cast<std::size_t>(c.out)];
+    const auto& in = mesh_->boundary_lines[static_cast<std::size_t>(c.in)];
+    const auto& out = mesh_->boundary_lines[static_cast<std::size_t>(c.out)];
     const Vec2 din = pt(in[1]) - pt(in[0]);
     const Vec2 dout = pt(out[1]) - pt(out[0]);
     if (cross(din, dout) <= 0) return -1;  // reflex or straight: the product rule would be wrong
@@ -232,7 +241,7 @@ class Packer {
   // projects within the segment, so the line's distance only fades pixels
   // that really are near that boundary segment.
   bool safe_for(int line, const std::array<Vec2, 3>& p) const {
-    const auto& bl = mesh_.boundary_lines[static_cast<std::size_t>(line)];
+    const auto& bl = mesh_->boundary_lines[static_cast<std::size_t>(line)];
     const Vec2 a = pt(bl[0]), b = pt(bl[1]);
     const Vec2 d = b - a;
     const double len2 = dot(d, d);
@@ -285,12 +294,12 @@ class Packer {
     }
   }
 
-  void remember_boundary_triangle(const std::array<std::uint32_t, 3>& tri) {
+  void remember_boundary_triangle(const std::array<std::uint32_t, 3>& tri, std::uint32_t t) {
     for (int e = 0; e < 3; ++e) {
       const std::uint32_t a = tri[static_cast<std::size_t>(e)], b = tri[static_cast<std::size_t>((e + 1) % 3)];
       const int line = line_between(a, b);
       if (line < 0) continue;
-      boundary_triangle_[static_cast<std::size_t>(line)] = tri;
+      boundary_triangle_[static_cast<std::size_t>(line)] = t;
       has_boundary_triangle_[static_cast<std::size_t>(line)] = 1;
     }
   }
@@ -326,7 +335,7 @@ class Packer {
   // chord of a convex curve, a leg of a concave one), if any: the side of
   // the curve an interior triangle touching it at a vertex is on.
   bool touching_edge(int ci, const std::array<Vec2, 3>& p, CurveEdge& out) const {
-    const CurvedTriangle& ct = mesh_.curves[static_cast<std::size_t>(ci)];
+    const CurvedTriangle& ct = mesh_->curves[static_cast<std::size_t>(ci)];
     Bary g;
     if (!bary(ci, g)) return false;
     // Barycentrics are relative to the hull, so a fixed tolerance suits.
@@ -354,7 +363,7 @@ class Packer {
 
   // Distance from x to the hull edge `ce` names (a segment).
   double hull_edge_distance(const CurveEdge& ce, Vec2 x) const {
-    const CurvedTriangle& ct = mesh_.curves[static_cast<std::size_t>(ce.curve)];
+    const CurvedTriangle& ct = mesh_->curves[static_cast<std::size_t>(ce.curve)];
     const Vec2 a = pt(ce.edge == kLegToP2 ? ct.control : ct.p0);
     const Vec2 b = pt(ce.edge == kLegFromP0 ? ct.control : ct.p2);
     const Vec2 d = b - a;
@@ -363,9 +372,8 @@ class Packer {
     return distance(x, a + d * s);
   }
 
-  void interior(const std::array<std::uint32_t, 3>& tri) {
+  void interior(const std::array<std::uint32_t, 3>& tri, const IndexList& lines) {
     const std::array<Vec2, 3> p{pt(tri[0]), pt(tri[1]), pt(tri[2])};
-    const IndexList lines = interior_lines(tri);
     // Curved triangles across an edge of this one: the curve can come closer
     // than a pixel to this triangle's pixel centres (near the curve's ends,
     // and anywhere along flat curves), so full AA fades by it too.
@@ -396,7 +404,7 @@ class Packer {
     std::vector<std::pair<double, CurveEdge>>& touching = touching_scratch_;
     touching.clear();
     const Vec2 centroid = (p[0] + p[1] + p[2]) / 3.0;
-    for (int e = 0; e < 3; ++e) {
+    for (int e = 0; e < 3 && curve_count < 2; ++e) {  // two across edges: no slot left
       const std::uint32_t vertex = tri[static_cast<std::size_t>(e)];
       for (const int* it = curves_at_.begin(vertex); it != curves_at_.end(vertex); ++it) {
         const int ci = *it;
@@ -432,7 +440,7 @@ class Packer {
       if (kind != kSolid) set_slots(v, x, Vec2{}, slots);
       set_fade(v, x, Vec2{}, fade);
       if (curve_count > 0) set_near_curves(v, x, near_curves, curve_count);
-      out_.push_back(v);
+      out_->push_back(v);
     }
   }
 
@@ -442,7 +450,7 @@ class Packer {
   // other side of a serif thinner than a pixel).
   IndexList curve_fade_lines(std::size_t ci) const {
     IndexList out;
-    const CurvedTriangle& ct = mesh_.curves[ci];
+    const CurvedTriangle& ct = mesh_->curves[ci];
     const std::array<Vec2, 3> hull{pt(ct.p0), pt(ct.control), pt(ct.p2)};
     auto add = [&](int li) {
       if (li >= 0 && out.size() < 2 && !out.contains(li)) out.push_back(li);
@@ -456,7 +464,7 @@ class Packer {
         if (!in_half_plane(li, hull)) continue;
         // The line's far end must be on the curve's filled side of its
         // tangent (the leg) at `end`: otherwise the corner is reflex.
-        const auto& bl = mesh_.boundary_lines[static_cast<std::size_t>(li)];
+        const auto& bl = mesh_->boundary_lines[static_cast<std::size_t>(li)];
         const Vec2 far = pt(bl[0] == end ? bl[1] : bl[0]);
         const Vec2 e = pt(end), ctrl = pt(ct.control);
         const double side_far = cross(ctrl - e, far - e);
@@ -475,7 +483,7 @@ class Packer {
   bool in_half_plane(int line, const std::array<Vec2, 3>& p) const {
     const LineFn& f = lines_[static_cast<std::size_t>(line)];
     if (f.n == Vec2{}) return false;
-    const auto& bl = mesh_.boundary_lines[static_cast<std::size_t>(line)];
+    const auto& bl = mesh_->boundary_lines[static_cast<std::size_t>(line)];
     const double eps = 1e-9 * std::max(1.0, distance(pt(bl[0]), pt(bl[1])));
     for (const Vec2& x : p)
       if (f(x) < -eps) return false;
@@ -486,7 +494,7 @@ class Packer {
   // that interior triangles leave unused. After set_slots.
   void set_near_curves(Vertex& v, Vec2 x, const std::array<CurveEdge, 2>& curves, int count) const {
     auto tau = [&](const CurveEdge& ce, float& t1, float& t2, float& w) {
-      const CurvedTriangle& ct = mesh_.curves[static_cast<std::size_t>(ce.curve)];
+      const CurvedTriangle& ct = mesh_->curves[static_cast<std::size_t>(ce.curve)];
       Bary g;
       bary(ce.curve, g);
       t1 = static_cast<float>(g.tau1(x));
@@ -549,7 +557,7 @@ class Packer {
   }
 
   void curve(std::size_t i) {
-    const CurvedTriangle& ct = mesh_.curves[i];
+    const CurvedTriangle& ct = mesh_->curves[i];
     Bary g;
     if (!bary(static_cast<int>(i), g)) return;  // a flat hull has no area to draw
     // Exact hull barycentrics (not recomputed) so the corners are crisp.
@@ -563,9 +571,9 @@ class Packer {
     set_fade(v0, g.a, Vec2{}, fade);
     set_fade(v1, g.b, Vec2{}, fade);
     set_fade(v2, g.c, Vec2{}, fade);
-    out_.push_back(v0);
-    out_.push_back(v1);
-    out_.push_back(v2);
+    out_->push_back(v0);
+    out_->push_back(v1);
+    out_->push_back(v2);
   }
 
   static Vec2 outward_normal(Vec2 a, Vec2 b, Vec2 away_from) {
@@ -578,14 +586,14 @@ class Packer {
   }
 
   void collect_fringe_edges() {
-    for (std::size_t i = 0; i < mesh_.boundary_lines.size(); ++i) {
-      const auto& bl = mesh_.boundary_lines[i];
+    for (std::size_t i = 0; i < mesh_->boundary_lines.size(); ++i) {
+      const auto& bl = mesh_->boundary_lines[i];
       const LineFn& f = lines_[i];
       if (f.n == Vec2{}) continue;
       edges_.push_back(FringeEdge{bl[0], bl[1], f.n * -1.0, static_cast<int>(i), -1});
     }
-    for (std::size_t i = 0; i < mesh_.curves.size(); ++i) {
-      const CurvedTriangle& ct = mesh_.curves[i];
+    for (std::size_t i = 0; i < mesh_->curves.size(); ++i) {
+      const CurvedTriangle& ct = mesh_->curves[i];
       Bary g;
       const int ci = static_cast<int>(i);
       if (!bary(ci, g)) continue;
@@ -598,7 +606,7 @@ class Packer {
         edges_.push_back(FringeEdge{ct.p0, ct.p2, outward_normal(g.a, g.c, g.b), -1, ci});
       }
     }
-    incident_.assign(mesh_.points.size(), Incident{});
+    incident_.assign(mesh_->points.size(), Incident{});
     for (std::size_t i = 0; i < edges_.size(); ++i) {
       incident_[edges_[i].a].add(static_cast<int>(i));
       incident_[edges_[i].b].add(static_cast<int>(i));
@@ -645,7 +653,7 @@ class Packer {
       // behind it uses as well (all of them contain that triangle).
       const auto line = static_cast<std::size_t>(e.line);
       if (has_boundary_triangle_[line]) {
-        for (int li : interior_lines(boundary_triangle_[line])) add(li);
+        for (int li : triangle_lines_[boundary_triangle_[line]]) add(li);
       }
       // Three moving slots in a_coef (c3 has no derivative), two in a_fade.
       std::array<int, 4> slots{-1, -1, -1, -1};
@@ -658,23 +666,23 @@ class Packer {
         Vertex v = make(p, o, kEdge);
         set_slots(v, p, o, slots);
         set_fade(v, p, o, fade);
-        out_.push_back(v);
+        out_->push_back(v);
       }
     } else {
-      const CurvedTriangle& ct = mesh_.curves[static_cast<std::size_t>(e.curve)];
+      const CurvedTriangle& ct = mesh_->curves[static_cast<std::size_t>(e.curve)];
       Bary g;
       if (!bary(e.curve, g)) return;
       const IndexList fade = curve_fade_lines(static_cast<std::size_t>(e.curve));
       for (const auto& [p, o] : corners) {
         Vertex v = curve_vertex(ct, g, p, o);
         set_fade(v, p, o, fade);
-        out_.push_back(v);
+        out_->push_back(v);
       }
     }
   }
 
-  const Mesh& mesh_;
-  std::vector<Vertex>& out_;
+  const Mesh* mesh_ = nullptr;
+  std::vector<Vertex>* out_ = nullptr;
   // Fringe edges at a vertex: how many, and the first two.
   struct Incident {
     int count = 0;
@@ -698,8 +706,9 @@ class Packer {
   std::vector<std::pair<int, int>> neighbour_lines_;
   VertexRows<int> neighbour_rows_;
   std::vector<char> has_neighbour_;        // per curve: an interior triangle across its edge
-  // The interior triangle each boundary line is an edge of.
-  std::vector<std::array<std::uint32_t, 3>> boundary_triangle_;
+  // The interior triangle (index) each boundary line is an edge of.
+  std::vector<std::uint32_t> boundary_triangle_;
+  std::vector<IndexList> triangle_lines_;  // per triangle: interior_lines()
   std::vector<char> has_boundary_triangle_;
   std::vector<FringeEdge> edges_;
   std::vector<Incident> incident_;         // per point
@@ -709,7 +718,8 @@ class Packer {
 }  // namespace
 
 void pack_mesh(const Mesh& mesh, std::vector<Vertex>& out) {
-  Packer(mesh, out).run();
+  thread_local Packer packer;
+  packer.run(mesh, out);
 }
 
 void append_translated(const std::vector<Vertex>& in, Vec2 offset, std::vector<Vertex>& out) {
