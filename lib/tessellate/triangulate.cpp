@@ -442,12 +442,15 @@ bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& t
     // The diagonal lies in the triangle's box, so edges and vertices outside
     // it are skipped without predicates.
     const Vec2 corners[3] = {a, b, c};
-    auto blocks = [&](std::size_t p) {
-      const Vec2 pp = loop[p], pq = loop[next[p]];
+    // An edge can only meet the diagonal inside the diagonal's own box (a
+    // subset of the triangle's): an exact test that skips most predicates.
+    const double ac_min_x = std::min(a.x, c.x), ac_max_x = std::max(a.x, c.x);
+    const double ac_min_y = std::min(a.y, c.y), ac_max_y = std::max(a.y, c.y);
+    auto blocks = [&](std::size_t p, const LiveEdges::Entry& e) {
+      const Vec2 pp = loop[p];
       const bool p_outside_box = pp.x < min_x || pp.x > max_x || pp.y < min_y || pp.y > max_y;
-      if (!(std::max(pp.x, pq.x) < min_x || std::min(pp.x, pq.x) > max_x || std::max(pp.y, pq.y) < min_y ||
-            std::min(pp.y, pq.y) > max_y) &&
-          bridge_blocked_by(a, c, pp, pq))
+      if (!(e.x1 < ac_min_x || e.x0 > ac_max_x || e.y1 < ac_min_y || e.y0 > ac_max_y) &&
+          bridge_blocked_by(a, c, pp, loop[next[p]]))
         return true;
       if (p_outside_box) return false;
       int corner = -1;
@@ -457,7 +460,9 @@ bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& t
       if (corner < 0) {
         // Any other vertex in the closed triangle blocks (strictness avoids
         // T-junctions and zero-area triangles).
-        return point_in_triangle(a, b, c, pp) != Where::Outside;
+        // point_in_triangle(a, b, c, pp) != Outside, with orient2d(a, b, c) > 0
+        // known from the top of is_ear.
+        return orient2d(a, b, pp) >= 0 && orient2d(b, c, pp) >= 0 && orient2d(c, a, pp) >= 0;
       }
       // A repeat of a corner (bridge or pinch vertex): its edges must not
       // enter the triangle from that corner.
@@ -477,7 +482,7 @@ bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& t
     for (const LiveEdges::Entry& e : live.entries()) {
       if (e.x1 < min_x || e.x0 > max_x || e.y1 < min_y || e.y0 > max_y) continue;
       if (e.p == ia || e.p == ib || e.p == ic) continue;
-      if (blocks(e.p)) return false;
+      if (blocks(e.p, e)) return false;
     }
     return true;
   };
