@@ -361,15 +361,17 @@ class Packer {
     return false;
   }
 
-  // Distance from x to the hull edge `ce` names (a segment).
-  double hull_edge_distance(const CurveEdge& ce, Vec2 x) const {
+  // Squared distance from x to the hull edge `ce` names (a segment): only
+  // compared, so no square root (std::hypot was ~1.5% of mesh preparation).
+  double hull_edge_distance2(const CurveEdge& ce, Vec2 x) const {
     const CurvedTriangle& ct = mesh_->curves[static_cast<std::size_t>(ce.curve)];
     const Vec2 a = pt(ce.edge == kLegToP2 ? ct.control : ct.p0);
     const Vec2 b = pt(ce.edge == kLegFromP0 ? ct.control : ct.p2);
     const Vec2 d = b - a;
     const double len2 = dot(d, d);
     const double s = len2 > 0 ? std::clamp(dot(x - a, d) / len2, 0.0, 1.0) : 0.0;
-    return distance(x, a + d * s);
+    const Vec2 off = x - (a + d * s);
+    return dot(off, off);
   }
 
   void interior(const std::array<std::uint32_t, 3>& tri, const IndexList& lines) {
@@ -412,7 +414,7 @@ class Packer {
         if (has(ci) || !touching_edge(ci, p, ce)) continue;
         bool seen = false;
         for (const auto& t : touching) seen = seen || t.second.curve == ci;
-        if (!seen) touching.emplace_back(hull_edge_distance(ce, centroid), ce);
+        if (!seen) touching.emplace_back(hull_edge_distance2(ce, centroid), ce);
       }
     }
     std::sort(touching.begin(), touching.end(),
