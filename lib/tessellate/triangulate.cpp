@@ -546,10 +546,12 @@ class EdgeTable {
     bool fixed = false;  // a constrained (outline) edge: never flipped
   };
 
-  explicit EdgeTable(std::size_t expected) {
+  // Empties the table for about `expected` edges, keeping its memory.
+  void reset(std::size_t expected) {
     std::size_t capacity = 16;
     while (capacity < 2 * expected + 16) capacity *= 2;
     slots_.assign(capacity, Faces{});
+    used_ = 0;
   }
 
   static std::uint64_t pack(EdgeKey k) { return (std::uint64_t{k.first} << 32) | k.second; }
@@ -606,8 +608,11 @@ class EdgeTable {
 
 void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std::uint32_t, 3>>& triangles,
                     const std::vector<EdgeKey>& constrained) {
-  EdgeTable edges(3 * triangles.size());
-  std::vector<EdgeKey> stack;
+  // Scratch reused across calls (no allocation per glyph once warm).
+  thread_local EdgeTable edges;
+  thread_local std::vector<EdgeKey> stack;
+  edges.reset(3 * triangles.size());
+  stack.clear();
   stack.reserve(3 * triangles.size());
   for (std::uint32_t t = 0; t < triangles.size(); ++t) {
     for (int k = 0; k < 3; ++k) {
