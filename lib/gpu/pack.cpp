@@ -118,6 +118,14 @@ class Packer {
       remember_boundary_triangle(tri, static_cast<std::uint32_t>(t));
     }
     group_curve_neighbours();
+    // Per curve, once: its fade lines and whether the shape is solid beyond
+    // its chord (each of its up to 15 vertices needs them).
+    curve_fade_.resize(mesh_->curves.size());
+    solid_beyond_.resize(mesh_->curves.size());
+    for (std::size_t i = 0; i < mesh_->curves.size(); ++i) {
+      curve_fade_[i] = curve_fade_lines(i);
+      solid_beyond_[i] = solid_beyond_chord(mesh_->curves[i]);
+    }
     for (std::size_t i = 0; i < mesh_->curves.size(); ++i) curve(i);
     collect_fringe_edges();
     for (const FringeEdge& e : edges_) fringe(e);
@@ -546,12 +554,13 @@ class Packer {
     return ce && has_neighbour_[static_cast<std::size_t>(ce->curve)];
   }
 
-  Vertex curve_vertex(const CurvedTriangle& ct, const Bary& g, Vec2 p, Vec2 offset) const {
+  // `ci`: the index of `ct`.
+  Vertex curve_vertex(std::size_t ci, const CurvedTriangle& ct, const Bary& g, Vec2 p, Vec2 offset) const {
     Vertex v = make(p, offset, kCurve);
     v.coef[0] = static_cast<float>(g.tau1(p));
     v.coef[1] = static_cast<float>(g.tau2(p));
     v.coef[2] = ct.convex ? 1.0f : -1.0f;
-    v.coef[3] = solid_beyond_chord(ct) ? 1.0f : 0.0f;
+    v.coef[3] = solid_beyond_[ci] ? 1.0f : 0.0f;
     v.info[1] = static_cast<float>(ct.weight);
     v.info[2] = static_cast<float>(dot(g.grad1(), offset));
     v.info[3] = static_cast<float>(dot(g.grad2(), offset));
@@ -563,13 +572,13 @@ class Packer {
     Bary g;
     if (!bary(static_cast<int>(i), g)) return;  // a flat hull has no area to draw
     // Exact hull barycentrics (not recomputed) so the corners are crisp.
-    Vertex v0 = curve_vertex(ct, g, g.a, Vec2{});
-    Vertex v1 = curve_vertex(ct, g, g.b, Vec2{});
-    Vertex v2 = curve_vertex(ct, g, g.c, Vec2{});
+    Vertex v0 = curve_vertex(i, ct, g, g.a, Vec2{});
+    Vertex v1 = curve_vertex(i, ct, g, g.b, Vec2{});
+    Vertex v2 = curve_vertex(i, ct, g, g.c, Vec2{});
     v0.coef[0] = 0.0f; v0.coef[1] = 0.0f;
     v1.coef[0] = 1.0f; v1.coef[1] = 0.0f;
     v2.coef[0] = 0.0f; v2.coef[1] = 1.0f;
-    const IndexList fade = curve_fade_lines(i);
+    const IndexList& fade = curve_fade_[i];
     set_fade(v0, g.a, Vec2{}, fade);
     set_fade(v1, g.b, Vec2{}, fade);
     set_fade(v2, g.c, Vec2{}, fade);
@@ -674,9 +683,9 @@ class Packer {
       const CurvedTriangle& ct = mesh_->curves[static_cast<std::size_t>(e.curve)];
       Bary g;
       if (!bary(e.curve, g)) return;
-      const IndexList fade = curve_fade_lines(static_cast<std::size_t>(e.curve));
+      const IndexList& fade = curve_fade_[static_cast<std::size_t>(e.curve)];
       for (const auto& [p, o] : corners) {
-        Vertex v = curve_vertex(ct, g, p, o);
+        Vertex v = curve_vertex(static_cast<std::size_t>(e.curve), ct, g, p, o);
         set_fade(v, p, o, fade);
         out_->push_back(v);
       }
@@ -711,6 +720,8 @@ class Packer {
   // The interior triangle (index) each boundary line is an edge of.
   std::vector<std::uint32_t> boundary_triangle_;
   std::vector<IndexList> triangle_lines_;  // per triangle: interior_lines()
+  std::vector<IndexList> curve_fade_;      // per curve: curve_fade_lines()
+  std::vector<char> solid_beyond_;         // per curve: solid_beyond_chord()
   std::vector<char> has_boundary_triangle_;
   std::vector<FringeEdge> edges_;
   std::vector<Incident> incident_;         // per point
