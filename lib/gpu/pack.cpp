@@ -647,9 +647,13 @@ class Packer {
     const Vec2 oa = offset_at(e, e.a), ob = offset_at(e, e.b);
     // Quad a, b, b', a' as triangles (a, b, b') and (a, b', a'); the offset
     // vertices share base positions with a and b and move only when t > 0.
-    const std::array<std::pair<Vec2, Vec2>, 6> corners{
-        std::pair{a, Vec2{}}, std::pair{b, Vec2{}}, std::pair{b, ob},
-        std::pair{a, Vec2{}}, std::pair{b, ob},     std::pair{a, oa}};
+    // Four distinct vertices, each computed once and emitted in that order.
+    const std::array<std::pair<Vec2, Vec2>, 4> corners{std::pair{a, Vec2{}}, std::pair{b, Vec2{}},
+                                                       std::pair{b, ob}, std::pair{a, oa}};
+    std::array<Vertex, 4> quad;
+    auto emit = [&] {
+      for (const int k : {0, 1, 2, 0, 2, 3}) out_->push_back(quad[static_cast<std::size_t>(k)]);
+    };
     if (e.line >= 0) {
       IndexList lines;
       lines.push_back(e.line);
@@ -673,22 +677,25 @@ class Packer {
         if (k < 3) slots[k] = lines[k];
         else fade.push_back(lines[k]);
       }
-      for (const auto& [p, o] : corners) {
-        Vertex v = make(p, o, kEdge);
+      for (std::size_t k = 0; k < 4; ++k) {
+        const auto& [p, o] = corners[k];
+        Vertex& v = quad[k];
+        v = make(p, o, kEdge);
         set_slots(v, p, o, slots);
         set_fade(v, p, o, fade);
-        out_->push_back(v);
       }
+      emit();
     } else {
       const CurvedTriangle& ct = mesh_->curves[static_cast<std::size_t>(e.curve)];
       Bary g;
       if (!bary(e.curve, g)) return;
       const IndexList& fade = curve_fade_[static_cast<std::size_t>(e.curve)];
-      for (const auto& [p, o] : corners) {
-        Vertex v = curve_vertex(static_cast<std::size_t>(e.curve), ct, g, p, o);
-        set_fade(v, p, o, fade);
-        out_->push_back(v);
+      for (std::size_t k = 0; k < 4; ++k) {
+        const auto& [p, o] = corners[k];
+        quad[k] = curve_vertex(static_cast<std::size_t>(e.curve), ct, g, p, o);
+        set_fade(quad[k], p, o, fade);
       }
+      emit();
     }
   }
 
