@@ -409,11 +409,17 @@ bool hulls_overlap(const Vec2* p, int np, const Vec2* q, int nq) {
   return np == 3 && nq == 3 && triangle_interiors_intersect(p, q);
 }
 
-bool separate_hulls(std::vector<Ring>& rings) {
+bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
+  // A piece's hull with what the sweep needs, copied out of the rings so the
+  // pair loop reads one compact array.
   struct HullRef {
     Box box;
-    std::uint32_t ring;
-    std::uint32_t piece;
+    Vec2 hull[3];  // a, b (line) or a, control, b (conic)
+    int n;         // 2 or 3
+    int depth;
+    double weight;
+    std::size_t mark;  // index into split_marks
+    Vec2 end() const { return hull[n - 1]; }
   };
   for (int pass = 0; pass <= tolerance::kMaxHullSubdivisionDepth; ++pass) {
     for (Ring& ring : rings) {
@@ -429,57 +435,67 @@ bool separate_hulls(std::vector<Ring>& rings) {
     mark_base.assign(rings.size() + 1, 0);
     for (std::size_t r = 0; r < rings.size(); ++r) mark_base[r + 1] = mark_base[r] + rings[r].size();
     split_marks.assign(mark_base.back(), 0);
-    for (std::uint32_t r = 0; r < rings.size(); ++r) {
-      for (std::uint32_t i = 0; i < rings[r].size(); ++i) {
-        HullRef ref{{}, r, i};
-        ref.box.add(rings[r][i].a);
-        ref.box.add(ring_end(rings[r], i));
-        if (rings[r][i].conic) ref.box.add(rings[r][i].control);
+    for (std::size_t r = 0; r < rings.size(); ++r) {
+      const Ring& ring = rings[r];
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        const Piece& piece = ring[i];
+        HullRef ref;
+        ref.hull[0] = piece.a;
+        ref.n = piece.conic ? 3 : 2;
+        if (piece.conic) ref.hull[1] = piece.control;
+        ref.hull[ref.n - 1] = i + 1 < ring.size() ? ring[i + 1].a : ring[0].a;
+        ref.box = Box{};
+        for (int k = 0; k < ref.n; ++k) ref.box.add(ref.hull[k]);
+        ref.depth = piece.depth;
+        ref.weight = piece.weight;
+        ref.mark = mark_base[r] + i;
         refs.push_back(ref);
       }
     }
     std::sort(refs.begin(), refs.end(), [](const HullRef& a, const HullRef& b) { return a.box.min.x < b.box.min.x; });
     bool any = false;
     bool overlap_left = false;  // an overlap seen in this pass
-    auto hull_of = [&](const HullRef& ref, Vec2* out) {
-      const Piece& piece = rings[ref.ring][ref.piece];
-      out[0] = piece.a;
-      if (piece.conic) {
-        out[1] = piece.control;
-        out[2] = ring_end(rings[ref.ring], ref.piece);
-        return 3;
-      }
-      out[1] = ring_end(rings[ref.ring], ref.piece);
-      return 2;
-    };
+    // rings_cross(rings, true) over the same pairs; it stands when this pass
+    // is the last (no conic split). Once true, nothing more to look for.
+    bool cross_seen = crossing == nullptr;
     for (std::size_t i = 0; i < refs.size(); ++i) {
-      const Piece& pi = rings[refs[i].ring][refs[i].piece];
-      for (std::size_t j = i + 1; j < refs.size() && refs[j].box.min.x <= refs[i].box.max.x; ++j) {
-        const Piece& pj = rings[refs[j].ring][refs[j].piece];
-        if (!pi.conic && !pj.conic) continue;
+      const HullRef& ri = refs[i];
+      const bool ci = ri.n == 3;
+      for (std::size_t j = i + 1; j < refs.size() && refs[j].box.min.x <= ri.box.max.x; ++j) {
+        const HullRef& rj = refs[j];
+        const bool cj = rj.n == 3;
+        if (!ci && !cj) {
+          if (!cross_seen && boxes_overlap(ri.box, rj.box)) {
+            cross_seen = lines_cross(ri.hull[0], ri.hull[1], rj.hull[0], rj.hull[1]);
+          }
+          continue;
+        }
+        const Vec2 ai = ri.hull[0], ei = ri.end(), aj = rj.hull[0], ej = rj.end();
+        const bool same_ends = (ai == aj && ei == ej) || (ai == ej && ei == aj);
+        // A conic and a piece with the same end points: their chords would
+        // coincide, rings_cross's answer is true (the boxes overlap).
+        cross_seen = cross_seen || same_ends;
         // Identical curves (duplicated contours) overlap at every depth;
         // splitting them is useless, the crossing resolver merges them.
-        if (pi.conic && pj.conic && pi.control == pj.control && pi.weight == pj.weight) {
-          const Vec2 ei = ring_end(rings[refs[i].ring], refs[i].piece), ej = ring_end(rings[refs[j].ring], refs[j].piece);
-          if ((pi.a == pj.a && ei == ej) || (pi.a == ej && ei == pj.a)) continue;
-        }
-        if (!boxes_overlap(refs[i].box, refs[j].box)) continue;
-        Vec2 hi[3], hj[3];
-        const int ni = hull_of(refs[i], hi), nj = hull_of(refs[j], hj);
-        if (!hulls_overlap(hi, ni, hj, nj)) continue;
+        if (same_ends && ci && cj && ri.hull[1] == rj.hull[1] && ri.weight == rj.weight) continue;
+        if (!boxes_overlap(ri.box, rj.box)) continue;
+        if (!hulls_overlap(ri.hull, ri.n, rj.hull, rj.n)) continue;
         // Subdividing a conic shrinks its hull towards the arc; lines stay.
-        if (pi.conic && pi.depth < tolerance::kMaxHullSubdivisionDepth) {
-          split_marks[mark_base[refs[i].ring] + refs[i].piece] = 1;
+        if (ci && ri.depth < tolerance::kMaxHullSubdivisionDepth) {
+          split_marks[ri.mark] = 1;
           any = true;
         }
-        if (pj.conic && pj.depth < tolerance::kMaxHullSubdivisionDepth) {
-          split_marks[mark_base[refs[j].ring] + refs[j].piece] = 1;
+        if (cj && rj.depth < tolerance::kMaxHullSubdivisionDepth) {
+          split_marks[rj.mark] = 1;
           any = true;
         }
         overlap_left = true;
       }
     }
-    if (!any) return !overlap_left;
+    if (!any) {
+      if (!overlap_left && crossing) *crossing = cross_seen;
+      return !overlap_left;
+    }
     for (std::size_t r = 0; r < rings.size(); ++r) {
       const char* marks = split_marks.data() + mark_base[r];
       if (std::find(marks, marks + rings[r].size(), char{1}) == marks + rings[r].size()) continue;  // nothing to split
@@ -714,11 +730,12 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
   }
   std::vector<Ring> rings =
       has_cubic ? clean_rings(to_quadratic_outline(outline, options.cubic_tolerance)) : clean_rings(outline);
-  const bool separated = separate_hulls(rings);
+  bool crossing = false;
+  const bool separated = separate_hulls(rings, &crossing);
   // Crossing, overlapping or edge-sharing contours: resolve them into
-  // non-crossing rings of the nonzero fill first (skipped, after one sweep,
-  // for the usual glyph whose contours do not meet).
-  if (kResolveCrossingContours && rings_cross(rings, separated)) {
+  // non-crossing rings of the nonzero fill first (skipped for the usual
+  // glyph whose contours do not meet; separate_hulls's sweep already told).
+  if (kResolveCrossingContours && (separated ? crossing : rings_cross(rings, false))) {
     rings = resolve_crossings(rings);
     separate_hulls(rings);
   }
