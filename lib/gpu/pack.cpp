@@ -145,12 +145,21 @@ class Packer {
     const std::size_t n = mesh_->points.size();
     corners_.assign(n, Corner{});
     lines_.reserve(mesh_->boundary_lines.size());
+    slabs_.clear();
+    slabs_.reserve(mesh_->boundary_lines.size());
     for (std::size_t i = 0; i < mesh_->boundary_lines.size(); ++i) {
       const auto& bl = mesh_->boundary_lines[i];
       const Vec2 a = pt(bl[0]), b = pt(bl[1]);
       const double len = distance(a, b);
       LineFn f{a, len > 0 ? left_normal(b - a) / len : Vec2{}};
       lines_.push_back(f);
+      LineSlab slab;
+      slab.d = b - a;
+      slab.len2 = dot(slab.d, slab.d);
+      slab.eps = 1e-9 * std::max(1.0, std::sqrt(slab.len2));
+      slab.slack = slab.eps * std::sqrt(slab.len2);
+      slab.half_plane_eps = 1e-9 * std::max(1.0, len);
+      slabs_.push_back(slab);
       Corner& ca = corners_[bl[0]];
       ca.out = static_cast<int>(i);
       ++ca.count_out;
@@ -249,15 +258,12 @@ class Packer {
   // projects within the segment, so the line's distance only fades pixels
   // that really are near that boundary segment.
   bool safe_for(int line, const std::array<Vec2, 3>& p) const {
-    const auto& bl = mesh_->boundary_lines[static_cast<std::size_t>(line)];
-    const Vec2 a = pt(bl[0]), b = pt(bl[1]);
-    const Vec2 d = b - a;
-    const double len2 = dot(d, d);
-    const double eps = 1e-9 * std::max(1.0, std::sqrt(len2));
+    const LineFn& f = lines_[static_cast<std::size_t>(line)];
+    const LineSlab& l = slabs_[static_cast<std::size_t>(line)];
     for (const Vec2& x : p) {
-      if (lines_[static_cast<std::size_t>(line)](x) < -eps) return false;
-      const double s = dot(x - a, d);
-      if (s < -eps * std::sqrt(len2) || s > len2 + eps * std::sqrt(len2)) return false;
+      if (f(x) < -l.eps) return false;
+      const double s = dot(x - f.p, l.d);
+      if (s < -l.slack || s > l.len2 + l.slack) return false;
     }
     return true;
   }
@@ -344,8 +350,9 @@ class Packer {
   // the curve an interior triangle touching it at a vertex is on.
   bool touching_edge(int ci, const std::array<Vec2, 3>& p, CurveEdge& out) const {
     const CurvedTriangle& ct = mesh_->curves[static_cast<std::size_t>(ci)];
-    Bary g;
-    if (!bary(ci, g)) return false;
+    const Bary* hull = bary(ci);
+    if (!hull) return false;
+    const Bary& g = *hull;
     // Barycentrics are relative to the hull, so a fixed tolerance suits.
     const double eps = 1e-9;
     auto all_outside = [&](auto coord) {
@@ -493,8 +500,7 @@ class Packer {
   bool in_half_plane(int line, const std::array<Vec2, 3>& p) const {
     const LineFn& f = lines_[static_cast<std::size_t>(line)];
     if (f.n == Vec2{}) return false;
-    const auto& bl = mesh_->boundary_lines[static_cast<std::size_t>(line)];
-    const double eps = 1e-9 * std::max(1.0, distance(pt(bl[0]), pt(bl[1])));
+    const double eps = slabs_[static_cast<std::size_t>(line)].half_plane_eps;
     for (const Vec2& x : p)
       if (f(x) < -eps) return false;
     return true;
@@ -505,8 +511,7 @@ class Packer {
   void set_near_curves(Vertex& v, Vec2 x, const std::array<CurveEdge, 2>& curves, int count) const {
     auto tau = [&](const CurveEdge& ce, float& t1, float& t2, float& w) {
       const CurvedTriangle& ct = mesh_->curves[static_cast<std::size_t>(ce.curve)];
-      Bary g;
-      bary(ce.curve, g);
+      const Bary& g = barys_[static_cast<std::size_t>(ce.curve)];
       t1 = static_cast<float>(g.tau1(x));
       t2 = static_cast<float>(g.tau2(x));
       w = static_cast<float>(ct.weight);
@@ -528,21 +533,28 @@ class Packer {
     double area2 = 0.0;
     double tau1(Vec2 x) const { return cross(x - a, c - a) / area2; }
     double tau2(Vec2 x) const { return cross(b - a, x - a) / area2; }
-    Vec2 grad1() const { return Vec2{(c - a).y, -(c - a).x} / area2; }
-    Vec2 grad2() const { return Vec2{-(b - a).y, (b - a).x} / area2; }
+    // Filled in by compute_bary (divisions done once per curve): the
+    // gradients of tau1 and tau2, and (tau1, tau2) at a, b and c.
+    Vec2 grad1{}, grad2{};
+    std::array<std::array<double, 2>, 3> at_vertex{};
   };
 
   // Computed once per curve (compute_bary) and looked up.
-  bool bary(int ci, Bary& out) const {
-    out = barys_[static_cast<std::size_t>(ci)];
-    return bary_ok_[static_cast<std::size_t>(ci)] != 0;
+  // Null for a degenerate hull.
+  const Bary* bary(int ci) const {
+    return bary_ok_[static_cast<std::size_t>(ci)] ? &barys_[static_cast<std::size_t>(ci)] : nullptr;
   }
 
   bool compute_bary(const CurvedTriangle& ct, Bary& out) const {
     out = Bary{pt(ct.p0), pt(ct.control), pt(ct.p2)};
     out.area2 = cross(out.b - out.a, out.c - out.a);
     const double scale = dot(out.b - out.a, out.b - out.a) + dot(out.c - out.a, out.c - out.a);
-    return std::isfinite(out.area2) && std::fabs(out.area2) > 1e-12 * scale;
+    if (!(std::isfinite(out.area2) && std::fabs(out.area2) > 1e-12 * scale)) return false;
+    out.grad1 = Vec2{(out.c - out.a).y, -(out.c - out.a).x} / out.area2;
+    out.grad2 = Vec2{-(out.b - out.a).y, (out.b - out.a).x} / out.area2;
+    const Vec2 corners[3] = {out.a, out.b, out.c};
+    for (int k = 0; k < 3; ++k) out.at_vertex[static_cast<std::size_t>(k)] = {out.tau1(corners[k]), out.tau2(corners[k])};
+    return true;
   }
 
   // True when an interior triangle lies across the chord of convex curve
@@ -554,27 +566,30 @@ class Packer {
     return ce && has_neighbour_[static_cast<std::size_t>(ce->curve)];
   }
 
-  // `ci`: the index of `ct`.
-  Vertex curve_vertex(std::size_t ci, const CurvedTriangle& ct, const Bary& g, Vec2 p, Vec2 offset) const {
+  // `ci`: the index of `ct`; p is its hull vertex number `k` (0: p0, 1:
+  // control, 2: p2).
+  Vertex curve_vertex(std::size_t ci, const CurvedTriangle& ct, const Bary& g, int k, Vec2 offset) const {
+    const Vec2 p = k == 0 ? g.a : k == 1 ? g.b : g.c;
     Vertex v = make(p, offset, kCurve);
-    v.coef[0] = static_cast<float>(g.tau1(p));
-    v.coef[1] = static_cast<float>(g.tau2(p));
+    v.coef[0] = static_cast<float>(g.at_vertex[static_cast<std::size_t>(k)][0]);
+    v.coef[1] = static_cast<float>(g.at_vertex[static_cast<std::size_t>(k)][1]);
     v.coef[2] = ct.convex ? 1.0f : -1.0f;
     v.coef[3] = solid_beyond_[ci] ? 1.0f : 0.0f;
     v.info[1] = static_cast<float>(ct.weight);
-    v.info[2] = static_cast<float>(dot(g.grad1(), offset));
-    v.info[3] = static_cast<float>(dot(g.grad2(), offset));
+    v.info[2] = static_cast<float>(dot(g.grad1, offset));
+    v.info[3] = static_cast<float>(dot(g.grad2, offset));
     return v;
   }
 
   void curve(std::size_t i) {
     const CurvedTriangle& ct = mesh_->curves[i];
-    Bary g;
-    if (!bary(static_cast<int>(i), g)) return;  // a flat hull has no area to draw
+    const Bary* hull = bary(static_cast<int>(i));
+    if (!hull) return;  // a flat hull has no area to draw
+    const Bary& g = *hull;
     // Exact hull barycentrics (not recomputed) so the corners are crisp.
-    Vertex v0 = curve_vertex(i, ct, g, g.a, Vec2{});
-    Vertex v1 = curve_vertex(i, ct, g, g.b, Vec2{});
-    Vertex v2 = curve_vertex(i, ct, g, g.c, Vec2{});
+    Vertex v0 = curve_vertex(i, ct, g, 0, Vec2{});
+    Vertex v1 = curve_vertex(i, ct, g, 1, Vec2{});
+    Vertex v2 = curve_vertex(i, ct, g, 2, Vec2{});
     v0.coef[0] = 0.0f; v0.coef[1] = 0.0f;
     v1.coef[0] = 1.0f; v1.coef[1] = 0.0f;
     v2.coef[0] = 0.0f; v2.coef[1] = 1.0f;
@@ -605,9 +620,10 @@ class Packer {
     }
     for (std::size_t i = 0; i < mesh_->curves.size(); ++i) {
       const CurvedTriangle& ct = mesh_->curves[i];
-      Bary g;
       const int ci = static_cast<int>(i);
-      if (!bary(ci, g)) continue;
+      const Bary* hull = bary(ci);
+      if (!hull) continue;
+      const Bary& g = *hull;
       if (ct.convex) {
         // Outside the shape lies beyond the hull's legs.
         edges_.push_back(FringeEdge{ct.p0, ct.control, outward_normal(g.a, g.b, g.c), -1, ci});
@@ -687,12 +703,16 @@ class Packer {
       emit();
     } else {
       const CurvedTriangle& ct = mesh_->curves[static_cast<std::size_t>(e.curve)];
-      Bary g;
-      if (!bary(e.curve, g)) return;
+      const Bary* hull = bary(e.curve);
+      if (!hull) return;
+      const Bary& g = *hull;
       const IndexList& fade = curve_fade_[static_cast<std::size_t>(e.curve)];
+      // The edge's ends are vertices of the curve's hull.
+      auto hull_vertex = [&](std::uint32_t v) { return v == ct.p0 ? 0 : v == ct.control ? 1 : 2; };
+      const int ka = hull_vertex(e.a), kb = hull_vertex(e.b);
       for (std::size_t k = 0; k < 4; ++k) {
         const auto& [p, o] = corners[k];
-        quad[k] = curve_vertex(static_cast<std::size_t>(e.curve), ct, g, p, o);
+        quad[k] = curve_vertex(static_cast<std::size_t>(e.curve), ct, g, k == 0 || k == 3 ? ka : kb, o);
         set_fade(quad[k], p, o, fade);
       }
       emit();
@@ -712,6 +732,15 @@ class Packer {
   };
 
   std::vector<LineFn> lines_;
+  // Per boundary line, the constants of safe_for and in_half_plane.
+  struct LineSlab {
+    Vec2 d{};             // b - a
+    double len2 = 0.0;    // |d|^2
+    double eps = 0.0;     // 1e-9 * max(1, |d|): distance slack
+    double slack = 0.0;   // eps * |d|: slack of the projection dot(x - a, d)
+    double half_plane_eps = 0.0;
+  };
+  std::vector<LineSlab> slabs_;
   std::vector<Corner> corners_;            // per point
   VertexRows<int> lines_from_;             // per point: boundary lines starting there
   // Per lower vertex of a curve hull edge: (upper vertex, edge).
