@@ -376,11 +376,14 @@ bool hulls_clearly_apart(const Vec2* p, int np, const Vec2* q, int nq) {
     }
     const int o = certain_side(t[0], t[1], t[2]);
     if (o != 1 && o != -1) return false;
-    for (int k = 0; k < 3; ++k) {
-      if (separates(t[k], t[(k + 1) % 3], o, other, no)) return true;
-    }
-    return false;
+    // The chord (t[2], t[0]) first: at a smooth join of consecutive pieces
+    // the legs through the shared vertex are collinear with the neighbour's
+    // (undecided), while the chord separates.
+    return separates(t[2], t[0], o, other, no) || separates(t[0], t[1], o, other, no) ||
+           separates(t[1], t[2], o, other, no);
   };
+  // A conic's hull first, for the same reason.
+  if (np == 2 && nq == 3) return by_edges_of(q, nq, p, np) || by_edges_of(p, np, q, nq);
   return by_edges_of(p, np, q, nq) || by_edges_of(q, nq, p, np);
 }
 
