@@ -10,6 +10,7 @@
 #include <cstring>
 #include <map>
 #include <set>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -44,18 +45,21 @@ bool simplify_pass(Ring& ring) {
   bool changed = false;
   const double merge2 = tolerance::kMergeDistanceFontUnits * tolerance::kMergeDistanceFontUnits;
   // Zero-length pieces (repeated points, conics that return to their start).
+  // Compacted in place; piece i ends where piece i + 1 starts, which is not
+  // yet overwritten (the write index never passes the read index), except
+  // the wrap-around to piece 0, kept aside.
   {
-    Ring kept;
-    kept.reserve(ring.size());
+    const Vec2 first = ring.empty() ? Vec2{} : ring[0].a;
+    std::size_t kept = 0;
     for (std::size_t i = 0; i < ring.size(); ++i) {
-      const Vec2 d = ring_end(ring, i) - ring[i].a;
+      const Vec2 d = (i + 1 < ring.size() ? ring[i + 1].a : first) - ring[i].a;
       if (dot(d, d) <= merge2) {
         changed = true;
         continue;
       }
-      kept.push_back(ring[i]);
+      ring[kept++] = ring[i];
     }
-    ring.swap(kept);
+    ring.resize(kept);
   }
   // Conics whose control point is on (or within the flatness tolerance of) the
   // chord's line. Inside the chord span the curve is the chord. Outside it the
@@ -73,7 +77,8 @@ bool simplify_pass(Ring& ring) {
   // Consecutive lines: exactly collinear and going on -> one line; going back
   // (a spike, within the flatness tolerance) -> the spike tip is removed.
   if (ring.size() >= 2) {
-    std::vector<char> drop(ring.size(), 0);
+    thread_local std::vector<char> drop;  // scratch, reused across calls
+    drop.assign(ring.size(), 0);
     for (std::size_t i = 0; i < ring.size(); ++i) {
       const std::size_t j = (i + 1) % ring.size();
       // At the wrap-around the piece after j may already be gone, which would
@@ -90,12 +95,11 @@ bool simplify_pass(Ring& ring) {
         changed = true;
       }
     }
-    Ring kept;
-    kept.reserve(ring.size());
+    std::size_t kept = 0;
     for (std::size_t i = 0; i < ring.size(); ++i) {
-      if (!drop[i]) kept.push_back(ring[i]);
+      if (!drop[i]) ring[kept++] = ring[i];
     }
-    ring.swap(kept);
+    ring.resize(kept);
   }
   return changed;
 }
@@ -134,7 +138,8 @@ namespace {
 // True when some position occurs twice among `count` points given by `at`.
 template <class PointAt>
 bool has_repeated_position(std::size_t count, PointAt at) {
-  std::vector<std::pair<double, double>> sorted(count);
+  thread_local std::vector<std::pair<double, double>> sorted;  // scratch, reused across calls
+  sorted.resize(count);
   for (std::size_t i = 0; i < count; ++i) sorted[i] = {at(i).x, at(i).y};
   std::sort(sorted.begin(), sorted.end());
   return std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
@@ -206,15 +211,22 @@ std::vector<Ring> clean_rings(const Outline& quadratic) {
     // because merging a straight run through a split vertex would leave that
     // vertex in the middle of an edge of the sub-ring, a T-junction against
     // the other sub-ring that touches it there.
-    for (Ring& loop : split_at_repeated_vertices(ring)) {
+    auto keep = [&](Ring& loop) {
       const bool has_conic = std::any_of(loop.begin(), loop.end(), [](const Piece& p) { return p.conic; });
-      if (loop.size() < 2 || (loop.size() == 2 && !has_conic)) continue;  // a lone back-and-forth: no area
+      if (loop.size() < 2 || (loop.size() == 2 && !has_conic)) return;  // a lone back-and-forth: no area
       // A ring without area is dropped only when it is a flat run of lines:
       // a self-crossing ring (a bow-tie) can have zero signed area and still
       // fill its lobes, which the crossing resolver sorts out.
-      if (ring_area(loop) == 0.0 && (!kResolveCrossingContours || all_collinear(loop))) continue;
+      if (ring_area(loop) == 0.0 && (!kResolveCrossingContours || all_collinear(loop))) return;
       rings.push_back(std::move(loop));
+    };
+    // The usual ring passes through each vertex once: kept as it is, without
+    // the copy split_at_repeated_vertices would make.
+    if (!has_repeated_position(ring.size(), [&](std::size_t i) { return ring[i].a; })) {
+      keep(ring);
+      continue;
     }
+    for (Ring& loop : split_at_repeated_vertices(ring)) keep(loop);
   }
   return rings;
 }
@@ -560,52 +572,67 @@ bool ring_inside(const Ring& inner, const Ring& outer) {
   return false;  // every chord on the other ring: a duplicate, not nested
 }
 
-Ring reversed(const Ring& ring) {
-  Ring out;
-  out.reserve(ring.size());
-  for (std::size_t k = ring.size(); k-- > 0;) {
-    Piece p = ring[k];
-    p.a = ring_end(ring, k);
-    out.push_back(p);
-  }
-  return out;
+// Reverses the direction of a ring in place: piece k of the result is piece
+// n - 1 - k traversed backwards, so it starts where that piece ended.
+void reverse_ring(Ring& ring) {
+  const std::size_t n = ring.size();
+  if (n == 0) return;
+  std::reverse(ring.begin(), ring.end());
+  // Now ring[k] is the old piece n - 1 - k, whose end is the old piece
+  // n - k's start, i.e. the new ring[k - 1].a (cyclically): shift the starts.
+  const Vec2 last = ring[n - 1].a;
+  for (std::size_t k = n - 1; k > 0; --k) ring[k].a = ring[k - 1].a;
+  ring[0].a = last;
 }
 
 }  // namespace
 
 std::vector<Region> nest_rings(std::vector<Ring> rings) {
   const std::size_t n = rings.size();
-  std::vector<double> area(n);
-  std::vector<Box> box(n);
+  // Scratch reused across calls (no allocation per glyph once warm).
+  thread_local std::vector<double> area;
+  thread_local std::vector<Box> box;
+  area.resize(n);
+  box.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     area[i] = ring_area(rings[i]);
     box[i] = ring_box(rings[i]);
   }
-  // containers[i]: rings that contain ring i.
-  std::vector<std::vector<std::size_t>> containers(n);
+  // The rings that contain ring i: container_list[container_start[i] ..
+  // container_start[i + 1]).
+  thread_local std::vector<std::size_t> container_start, container_list;
+  container_start.assign(n + 1, 0);
+  container_list.clear();
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t j = 0; j < n; ++j) {
       if (i == j || !box_contains(box[j], box[i]) || std::fabs(area[j]) < std::fabs(area[i])) continue;
-      if (ring_inside(rings[i], rings[j])) containers[i].push_back(j);
+      if (ring_inside(rings[i], rings[j])) container_list.push_back(j);
     }
+    container_start[i + 1] = container_list.size();
   }
+  auto containers = [&](std::size_t i) {
+    return std::span<const std::size_t>(container_list.data() + container_start[i],
+                                        container_start[i + 1] - container_start[i]);
+  };
   // Nonzero rule: winding just outside ring i is the sum of the orientations
   // of the rings around it; just inside it adds its own orientation. The ring
   // bounds the fill only where exactly one of the two is non-zero.
   enum class Role { Drop, Outer, Hole };
-  std::vector<Role> role(n, Role::Drop);
+  thread_local std::vector<Role> role;
+  role.assign(n, Role::Drop);
   for (std::size_t i = 0; i < n; ++i) {
     int outside = 0;
-    for (std::size_t j : containers[i]) outside += area[j] > 0 ? 1 : -1;
+    for (std::size_t j : containers(i)) outside += area[j] > 0 ? 1 : -1;
     const int inside = outside + (area[i] > 0 ? 1 : -1);
     if ((outside != 0) == (inside != 0)) continue;
     role[i] = inside != 0 ? Role::Outer : Role::Hole;
     // Normalise: filled side on the left (outer counter-clockwise, holes clockwise).
     const bool ccw = area[i] > 0;
-    if ((role[i] == Role::Outer) != ccw) rings[i] = reversed(rings[i]);
+    if ((role[i] == Role::Outer) != ccw) reverse_ring(rings[i]);
   }
   std::vector<Region> regions;
-  std::vector<std::size_t> region_of(n, n);
+  thread_local std::vector<std::size_t> region_of;
+  region_of.assign(n, n);
   for (std::size_t i = 0; i < n; ++i) {
     if (role[i] != Role::Outer) continue;
     region_of[i] = regions.size();
@@ -615,7 +642,7 @@ std::vector<Region> nest_rings(std::vector<Ring> rings) {
     if (role[i] != Role::Hole) continue;
     // The innermost outer ring around a hole is its container.
     std::size_t best = n;
-    for (std::size_t j : containers[i]) {
+    for (std::size_t j : containers(i)) {
       if (role[j] == Role::Outer && (best == n || std::fabs(area[j]) < std::fabs(area[best]))) best = j;
     }
     if (best == n) continue;  // cannot happen for non-crossing rings
@@ -753,9 +780,12 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
   PointIndex index(2 * piece_count);
   mesh.boundary_lines.reserve(piece_count);
   mesh.curves.reserve(piece_count);
-  std::vector<EdgeKey> constrained;  // outline edges: never flipped (sorted below)
+  // Scratch reused across calls (no allocation per glyph once warm).
+  thread_local std::vector<EdgeKey> constrained;  // outline edges: never flipped (sorted below)
+  constrained.clear();
   constrained.reserve(2 * piece_count);
-  std::vector<std::array<Vec2, 3>> triangle_points;
+  thread_local std::vector<std::array<Vec2, 3>> triangle_points;
+  triangle_points.clear();
   triangle_points.reserve(2 * piece_count + 8);  // about two triangles per loop vertex
   for (const Region& region : regions) {
     auto polygonise = [&](const Ring& ring) {
