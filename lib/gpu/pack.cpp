@@ -113,9 +113,12 @@ class Packer {
     triangle_lines_.resize(mesh_->triangles.size());
     for (std::size_t t = 0; t < mesh_->triangles.size(); ++t) {
       const auto& tri = mesh_->triangles[t];
-      triangle_lines_[t] = interior_lines(tri);
+      // The boundary line along each edge (or -1), looked up once.
+      const std::array<int, 3> edge_lines{line_between(tri[0], tri[1]), line_between(tri[1], tri[2]),
+                                          line_between(tri[2], tri[0])};
+      triangle_lines_[t] = interior_lines(tri, edge_lines);
       interior(tri, triangle_lines_[t]);
-      remember_boundary_triangle(tri, static_cast<std::uint32_t>(t));
+      remember_boundary_triangle(edge_lines, static_cast<std::uint32_t>(t));
     }
     group_curve_neighbours();
     // Per curve, once: its fade lines and whether the shape is solid beyond
@@ -308,10 +311,8 @@ class Packer {
     }
   }
 
-  void remember_boundary_triangle(const std::array<std::uint32_t, 3>& tri, std::uint32_t t) {
-    for (int e = 0; e < 3; ++e) {
-      const std::uint32_t a = tri[static_cast<std::size_t>(e)], b = tri[static_cast<std::size_t>((e + 1) % 3)];
-      const int line = line_between(a, b);
+  void remember_boundary_triangle(const std::array<int, 3>& edge_lines, std::uint32_t t) {
+    for (const int line : edge_lines) {
       if (line < 0) continue;
       boundary_triangle_[static_cast<std::size_t>(line)] = t;
       has_boundary_triangle_[static_cast<std::size_t>(line)] = 1;
@@ -320,16 +321,14 @@ class Packer {
 
   // The boundary lines an interior triangle fades by, in priority order:
   // its own boundary edges, then lines through its vertices (when safe).
-  IndexList interior_lines(const std::array<std::uint32_t, 3>& tri) const {
+  // `edge_lines`: line_between() of the edges (0, 1), (1, 2), (2, 0).
+  IndexList interior_lines(const std::array<std::uint32_t, 3>& tri, const std::array<int, 3>& edge_lines) const {
     const std::array<Vec2, 3> p{pt(tri[0]), pt(tri[1]), pt(tri[2])};
     IndexList lines;
     auto add = [&](int line) {
       if (line >= 0 && !lines.contains(line)) lines.push_back(line);
     };
-    for (int e = 0; e < 3; ++e) {
-      const std::uint32_t a = tri[static_cast<std::size_t>(e)], b = tri[static_cast<std::size_t>((e + 1) % 3)];
-      add(line_between(a, b));
-    }
+    for (const int line : edge_lines) add(line);
     // Boundary lines through a vertex of this triangle: a thin or shallow
     // triangle that touches a line only at a vertex still holds pixel centres
     // within a pixel of it (and at convex corners the product of both lines
