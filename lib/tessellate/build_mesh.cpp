@@ -765,9 +765,13 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
   // Crossing, overlapping or edge-sharing contours: resolve them into
   // non-crossing rings of the nonzero fill first (skipped for the usual
   // glyph whose contours do not meet; separate_hulls's sweep already told).
+  // Pieces of separated, non-crossing rings meet only at common vertices,
+  // which lets ear_clip treat loops without repeated positions as simple.
+  bool simple_edges = separated && !crossing;
   if (kResolveCrossingContours && (separated ? crossing : rings_cross(rings, false))) {
     rings = resolve_crossings(rings);
     separate_hulls(rings);
+    simple_edges = false;
   }
   std::vector<Region> regions = nest_rings(std::move(rings));
 
@@ -823,7 +827,7 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
     // Where loops touch at vertices, re-link them first so that each polygon
     // handed to the ear clipper has one filled sector per corner.
     for (PolygonLoops& polygon : relink_touching_loops(std::move(outer), std::move(holes))) {
-      ear_clip(bridge_holes(std::move(polygon.outer), std::move(polygon.holes)), triangle_points);
+      ear_clip(bridge_holes(std::move(polygon.outer), std::move(polygon.holes)), triangle_points, simple_edges);
     }
   }
   mesh.triangles.reserve(triangle_points.size());
