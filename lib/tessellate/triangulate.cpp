@@ -691,8 +691,18 @@ void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std:
   }
   // Constrained edges are marked once in the table instead of being looked up
   // in `constrained` for every candidate popped from the stack.
+  // Those not in the mesh (possible after remove_folds or a fallback ear)
+  // are the only ones a flip could create: fixed edges never flip, so the
+  // others are never removed and re-created. Kept apart (sorted, usually
+  // empty) so that a new edge is looked up there instead of in all of them.
+  thread_local std::vector<EdgeKey> missing;
+  missing.clear();
   for (const EdgeKey& key : constrained) {
-    if (EdgeTable::Faces* e = edges.find(key)) e->fixed = true;
+    if (EdgeTable::Faces* e = edges.find(key)) {
+      e->fixed = true;
+    } else {
+      missing.push_back(key);
+    }
   }
   // Lawson's algorithm terminates with exact predicates; ours are not exact
   // (incircle_sign falls back to long double near zero), so the flip count is capped to guarantee an end.
@@ -709,16 +719,21 @@ void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std:
     }
     return false;
   };
+  // Returns the edge's entry (null if none).
   auto replace_face = [&](EdgeKey key, std::uint32_t from, std::uint32_t to) {
     EdgeTable::Faces* e = edges.find(key);
-    if (!e) return;
+    if (!e) return e;
     for (int k = 0; k < 2; ++k) {
       if (e->face[k] == from) {
         e->face[k] = to;
-        return;
+        break;
       }
     }
+    return e;
   };
+  // An edge that is fixed or not shared by two triangles stays so: popping
+  // it would do nothing, so it is not pushed.
+  auto flippable = [](const EdgeTable::Faces* e) { return e && e->count == 2 && !e->fixed; };
   while (!stack.empty() && flips_left > 0) {
     const EdgeKey key = stack.back();
     stack.pop_back();
@@ -743,13 +758,13 @@ void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std:
     new_edge.face[0] = t1;
     new_edge.face[1] = t2;
     new_edge.count = 2;
-    new_edge.fixed = std::binary_search(constrained.begin(), constrained.end(), cd);
-    replace_face(edge_key(a, d), t2, t1);
-    replace_face(edge_key(b, c), t1, t2);
+    new_edge.fixed = !missing.empty() && std::binary_search(missing.begin(), missing.end(), cd);
+    const bool push_ad = flippable(replace_face(edge_key(a, d), t2, t1));
+    const bool push_bc = flippable(replace_face(edge_key(b, c), t1, t2));
     --flips_left;
-    stack.push_back(edge_key(a, d));
+    if (push_ad) stack.push_back(edge_key(a, d));
     stack.push_back(edge_key(d, b));
-    stack.push_back(edge_key(b, c));
+    if (push_bc) stack.push_back(edge_key(b, c));
     stack.push_back(edge_key(c, a));
   }
 }
