@@ -485,15 +485,16 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
           }
           continue;
         }
+        // (Pieces with the same end points have overlapping boxes.)
+        if (!boxes_overlap(ri.box, rj.box)) continue;
         const Vec2 ai = ri.hull[0], ei = ri.end(), aj = rj.hull[0], ej = rj.end();
         const bool same_ends = (ai == aj && ei == ej) || (ai == ej && ei == aj);
         // A conic and a piece with the same end points: their chords would
-        // coincide, rings_cross's answer is true (the boxes overlap).
+        // coincide, rings_cross's answer is true.
         cross_seen = cross_seen || same_ends;
         // Identical curves (duplicated contours) overlap at every depth;
         // splitting them is useless, the crossing resolver merges them.
         if (same_ends && ci && cj && ri.hull[1] == rj.hull[1] && ri.weight == rj.weight) continue;
-        if (!boxes_overlap(ri.box, rj.box)) continue;
         if (!hulls_overlap(ri.hull, ri.n, rj.hull, rj.n)) continue;
         // Subdividing a conic shrinks its hull towards the arc; lines stay.
         if (ci && ri.depth < tolerance::kMaxHullSubdivisionDepth) {
