@@ -796,11 +796,15 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
     auto polygonise = [&](const Ring& ring) {
       std::vector<Vec2> loop;
       loop.reserve(ring.size() * 2);
+      // Piece i starts where piece i - 1 ends: its index is carried over
+      // (the same lookups in the same order, minus the repeats).
+      std::uint32_t next_ia = ring.empty() ? 0 : index(ring[0].a);
       for (std::size_t i = 0; i < ring.size(); ++i) {
         const Piece& p = ring[i];
         const Vec2 a = p.a, b = ring_end(ring, i);
         loop.push_back(a);
-        const std::uint32_t ia = index(a), ib = index(b);
+        const std::uint32_t ia = next_ia, ib = index(b);
+        next_ia = ib;
         if (!p.conic) {
           mesh.boundary_lines.push_back({ia, ib});
           constrained.push_back(edge_key(ia, ib));
