@@ -473,20 +473,23 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
     // rings_cross(rings, true) over the same pairs; it stands when this pass
     // is the last (no conic split). Once true, nothing more to look for.
     bool cross_seen = crossing == nullptr;
+    // The boxes again in a compact array: most pairs the sweep meets are
+    // rejected by their boxes alone.
+    thread_local std::vector<Box> boxes;
+    boxes.resize(refs.size());
+    for (std::size_t k = 0; k < refs.size(); ++k) boxes[k] = refs[k].box;
     for (std::size_t i = 0; i < refs.size(); ++i) {
-      const HullRef& ri = refs[i];
-      const bool ci = ri.n == 3;
-      for (std::size_t j = i + 1; j < refs.size() && refs[j].box.min.x <= ri.box.max.x; ++j) {
+      const Box bi = boxes[i];
+      for (std::size_t j = i + 1; j < boxes.size() && boxes[j].min.x <= bi.max.x; ++j) {
+        // (Pieces with the same end points have overlapping boxes.)
+        if (!boxes_overlap(bi, boxes[j])) continue;
+        const HullRef& ri = refs[i];
         const HullRef& rj = refs[j];
-        const bool cj = rj.n == 3;
+        const bool ci = ri.n == 3, cj = rj.n == 3;
         if (!ci && !cj) {
-          if (!cross_seen && boxes_overlap(ri.box, rj.box)) {
-            cross_seen = lines_cross(ri.hull[0], ri.hull[1], rj.hull[0], rj.hull[1]);
-          }
+          if (!cross_seen) cross_seen = lines_cross(ri.hull[0], ri.hull[1], rj.hull[0], rj.hull[1]);
           continue;
         }
-        // (Pieces with the same end points have overlapping boxes.)
-        if (!boxes_overlap(ri.box, rj.box)) continue;
         const Vec2 ai = ri.hull[0], ei = ri.end(), aj = rj.hull[0], ej = rj.end();
         const bool same_ends = (ai == aj && ei == ej) || (ai == ej && ei == aj);
         // A conic and a piece with the same end points: their chords would
