@@ -11,7 +11,7 @@ uniform int u_debug;        // 0 off, 1 discarded curve pixels shown, 2 triangle
 
 varying vec4 v_coef;
 varying vec4 v_info;
-varying vec2 v_tau;
+varying vec3 v_tau;
 varying vec2 v_fade;
 
 // Exact area of the unit pixel square (centred on the fragment) on the inside
@@ -180,6 +180,7 @@ const float kNearCurvePx = 0.75;
 // A pixel's box reaches at most sqrt(2)/2 px from its centre (rounded up):
 // tolerance::kFringeWidthPx, defined by the renderer when compiling.
 const float kPixelReachPx = CURVETEXT_PIXEL_REACH_PX;
+const float kThirdCurveMinChordPx = CURVETEXT_THIRD_CURVE_MIN_CHORD_PX;
 
 // Folds in, for an interior triangle (kinds 3, 4), a curve across one of its
 // edges or touching it at a vertex. `code` is the hull edge the triangle lies
@@ -265,9 +266,11 @@ void main() {
       fold(coverage, nacc, a, n);
     }
   } else if (u_aa == 2) {
-    // Interior triangles next to one (kind 3) or two (kind 4) curved
-    // triangles; solid unless antialiasing is full, as in the paper.
+    // Interior triangles next to one (kind 3), two (kind 4) or three (kind
+    // 5) curved triangles; solid unless antialiasing is full, as in the paper.
     float codes = floor(v_info.w + 0.5);
+    float code_c = floor(codes / 9.0 + 0.01);
+    codes -= 9.0 * code_c;
     float code_b = floor(codes / 3.0 + 0.01);
     float code_a = codes - 3.0 * code_b;
     fold_line(coverage, nacc, v_coef.x);
@@ -279,10 +282,20 @@ void main() {
     } else {
       fold_near_curve(coverage, nacc, v_coef.z, v_coef.w, v_info.z, code_b);
     }
+    if (kind > 4.5) {
+      // The third curve only where its chord spans a few pixels (see
+      // tolerance::kThirdCurveMinChordPx): the position along the chord
+      // (as in beyond_hull_px) changes by 1 over the chord's length.
+      vec2 g1 = vec2(dFdx(v_fade.x), dFdy(v_fade.x));
+      vec2 g2 = vec2(dFdx(v_fade.y), dFdy(v_fade.y));
+      float k = -dot(g1, g2) / max(dot(g1, g1), 1e-30);
+      float chord_px = 1.0 / max(length(g2 + k * g1), 1e-30);
+      if (chord_px >= kThirdCurveMinChordPx) fold_near_curve(coverage, nacc, v_fade.x, v_fade.y, v_tau.z, code_c);
+    }
   }
-  // Every kind: the far side of a feature thinner than a pixel, or a corner's
-  // other line (see a_fade in vertex_format.hpp); full AA only.
-  if (u_aa == 2) {
+  // Every kind but 5: the far side of a feature thinner than a pixel, or a
+  // corner's other line (see a_fade in vertex_format.hpp); full AA only.
+  if (u_aa == 2 && kind < 4.5) {
     fold_line(coverage, nacc, v_fade.x);
     fold_line(coverage, nacc, v_fade.y);
   }

@@ -13,7 +13,7 @@ uniform float u_fringe_px;    // fringe width in pixels (0 unless AA is full)
 
 varying vec4 v_coef;
 varying vec4 v_info;  // a_info: (kind, weight, ...) see vertex_format.hpp
-varying vec2 v_tau;   // kinds 3, 4: (tau1, tau2) of the neighbouring curve A
+varying vec3 v_tau;   // kinds 3-5: (tau1, tau2) of the neighbouring curve A; kind 5: w of curve C
 varying vec2 v_fade;  // distances to the two a_fade lines
 
 // Vertices shared between triangles must land on identical positions, or
@@ -34,17 +34,19 @@ void main() {
   float det = abs(jac[0].x * jac[1].y - jac[1].x * jac[0].y);
   float hi = sqrt(0.5 * (ss + sqrt(max(ss * ss - 4.0 * det * det, 0.0))));
   float t = u_fringe_px > 0.0 ? u_fringe_px * hi / max(det, 1e-30) : 0.0;
-  // Kinds 3 and 4 (interior triangles next to curves) never move; their
-  // offset slot carries curve A's barycentrics instead.
+  // Kinds 3-5 (interior triangles next to curves) never move; their
+  // offset slot carries curve A's barycentrics instead, and kind 5's a_fade
+  // curve C's (tau1, tau2, w) instead of two lines.
   bool next_to_curve = a_info.x > 2.5;
+  bool three_curves = a_info.x > 4.5;
   vec2 p = next_to_curve ? a_pos.xy : a_pos.xy + a_pos.zw * t;
-  v_tau = next_to_curve ? a_pos.zw : vec2(0.0);
+  v_tau = next_to_curve ? vec3(a_pos.zw, three_curves ? a_fade.z : 0.0) : vec3(0.0);
   // For edges (kind 1) the weight slot carries the derivative of c2.
   float dc2 = (a_info.x > 0.5 && a_info.x < 1.5) ? a_info.y : 0.0;
   vec4 dcoef = next_to_curve ? vec4(0.0) : vec4(a_info.z, a_info.w, dc2, 0.0);
   v_coef = a_coef + dcoef * t;
   v_info = a_info;
-  v_fade = a_fade.xy + a_fade.zw * t;
+  v_fade = three_curves ? a_fade.xy : a_fade.xy + a_fade.zw * t;
   vec3 q = u_transform * vec3(p, 1.0);
   // Homogeneous clip coordinates: the GPU divides by q.z after clipping and
   // interpolates the varyings perspective-correctly (affine in outline units).

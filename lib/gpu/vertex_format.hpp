@@ -26,8 +26,8 @@
 //           chord side is filled, -1 the outer side), c3 = 1 where an
 //           interior triangle lies across a convex curve's chord (the shape
 //           is solid beyond it, over the chord's span), else 0.
-//   kind 3, 4: an interior triangle sharing an edge or a vertex with one
-//           (3) or two (4) curved triangles, wholly beyond that curve's chord
+//   kind 3, 4, 5: an interior triangle sharing an edge or a vertex with one
+//           (3), two (4) or three (5) curved triangles, wholly beyond that curve's chord
 //           (convex) or leg (concave) (full AA fades it near those curves, which can
 //           be closer than a pixel to it). Such triangles never move, so the
 //           offset and derivative slots are reused:
@@ -35,7 +35,13 @@
 //                      control triangle, extrapolated affinely to this vertex
 //             a_coef = kind 3: four line distances as kind 1;
 //                      kind 4: (line 0, line 1, tau1 B, tau2 B)
-//             a_info = (kind, w A, w B, shared edges: edge A + 3 * edge B)
+//             a_info = (kind, w A, w B, shared edges: edge A + 3 * edge B
+//                      + 9 * edge C)
+//             a_fade = kind 5: (tau1 C, tau2 C, w C, 0), as it never moves
+//                      (a triangle spanning a stroke: the curve across an
+//                      edge on the far side, and the two curves of a smooth
+//                      join at a vertex on the near side, which a pixel
+//                      centred by the join needs both of); else two lines
 //           with edge 0 the chord (tau1 = 0; the curve is convex), 1 the leg
 //           p0-control (tau2 = 0) and 2 the leg control-p2 (tau0 = 0) (both
 //           concave). The shared edge determines the filled side.
@@ -58,7 +64,8 @@ struct Vertex {
 };
 static_assert(sizeof(Vertex) == 64, "the shader's attribute layout assumes 64-byte vertices");
 
-enum VertexKind : int { kSolid = 0, kEdge = 1, kCurve = 2, kNextToCurve = 3, kNextToTwoCurves = 4 };
+enum VertexKind : int { kSolid = 0, kEdge = 1, kCurve = 2, kNextToCurve = 3, kNextToTwoCurves = 4,
+                        kNextToThreeCurves = 5 };
 
 // Which edge of a curve's control triangle an interior triangle shares.
 enum SharedCurveEdge : int { kChord = 0, kLegFromP0 = 1, kLegToP2 = 2 };

@@ -39,6 +39,16 @@ inline constexpr double kConicFlatnessRelative = 1e-9;
 // lib/gpu/renderer.cpp): how far a pixel's box reaches past a curve's hull.
 inline constexpr float kFringeWidthPx = 0.7072f;
 
+// Full AA: an interior triangle next to three curves (vertex kind 5, see
+// lib/gpu/vertex_format.hpp) folds in the third only where that curve's chord
+// spans at least this many pixels. At larger sizes it is the other curve of a
+// smooth join at the triangle's vertex, which pixels centred by the join need
+// (quality_bench: pixels off by > 0.15 at 24-384 px, 523 -> 421); on smaller
+// curves the extra fold only adds the approximation error of fold() (the
+// 10 px edge error rose from 0.0249 to 0.0264 with no limit, and is 0.0249
+// with this one). In pixels; the shaders' CURVETEXT_THIRD_CURVE_MIN_CHORD_PX.
+inline constexpr float kThirdCurveMinChordPx = 2.0f;
+
 // Border around a block's projected bounding box in the vbaa / msaa offscreen
 // pass, in pixels: the full-AA fringe (kFringeWidthPx) plus the filter's ring
 // of one texel, rounded up.
