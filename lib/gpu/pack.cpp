@@ -119,15 +119,13 @@ class Packer {
       for (std::size_t t = 0; t < mesh_->triangles.size(); ++t)
         for (std::uint32_t v : mesh_->triangles[t]) emit(v, static_cast<std::uint32_t>(t));
     });
+    prepare_triangle_edges();
     triangle_lines_.resize(mesh_->triangles.size());
     for (std::size_t t = 0; t < mesh_->triangles.size(); ++t) {
       const auto& tri = mesh_->triangles[t];
-      // The boundary line along each edge (or -1), looked up once.
-      const std::array<int, 3> edge_lines{line_between(tri[0], tri[1]), line_between(tri[1], tri[2]),
-                                          line_between(tri[2], tri[0])};
-      triangle_lines_[t] = interior_lines(tri, edge_lines);
+      triangle_lines_[t] = interior_lines(static_cast<std::uint32_t>(t));
       interior(tri, triangle_lines_[t]);
-      remember_boundary_triangle(edge_lines, static_cast<std::uint32_t>(t));
+      remember_boundary_triangle(edge_lines_[t], static_cast<std::uint32_t>(t));
     }
     group_curve_neighbours();
     // Per curve, once: its fade lines and whether the shape is solid beyond
@@ -386,13 +384,39 @@ class Packer {
   // The boundary lines an interior triangle fades by, in priority order:
   // its own boundary edges, then lines through its vertices (when safe).
   // `edge_lines`: line_between() of the edges (0, 1), (1, 2), (2, 0).
-  IndexList interior_lines(const std::array<std::uint32_t, 3>& tri, const std::array<int, 3>& edge_lines) const {
+  // Per triangle edge (k: tri[k] -> tri[k + 1]), computed once per mesh:
+  // the boundary line along it (line_between, or -1) and, for edges that are
+  // not boundary lines, the triangles holding both its ends, in the order
+  // triangles_at_ lists them (the triangle itself among them).
+  void prepare_triangle_edges() {
+    const auto& tris = mesh_->triangles;
+    edge_lines_.resize(tris.size());
+    for (std::size_t t = 0; t < tris.size(); ++t) {
+      const auto& tri = tris[t];
+      edge_lines_[t] = {line_between(tri[0], tri[1]), line_between(tri[1], tri[2]), line_between(tri[2], tri[0])};
+    }
+    across_.build(3 * tris.size(), [&](auto emit) {
+      for (std::size_t t = 0; t < tris.size(); ++t) {
+        for (std::size_t k = 0; k < 3; ++k) {
+          if (edge_lines_[t][k] >= 0) continue;
+          const std::uint32_t a = tris[t][k], b = tris[t][(k + 1) % 3];
+          for (const std::uint32_t* it = triangles_at_.begin(a); it != triangles_at_.end(a); ++it) {
+            const auto& other = tris[*it];
+            if (std::find(other.begin(), other.end(), b) != other.end()) emit(static_cast<std::uint32_t>(3 * t + k), *it);
+          }
+        }
+      }
+    });
+  }
+
+  IndexList interior_lines(std::uint32_t t) const {
+    const auto& tri = mesh_->triangles[t];
     const std::array<Vec2, 3> p{pt(tri[0]), pt(tri[1]), pt(tri[2])};
     IndexList lines;
     auto add = [&](int line) {
       if (line >= 0 && !lines.contains(line)) lines.push_back(line);
     };
-    for (const int line : edge_lines) add(line);
+    for (const int line : edge_lines_[t]) add(line);
     // Boundary lines through a vertex of this triangle: a thin or shallow
     // triangle that touches a line only at a vertex still holds pixel centres
     // within a pixel of it (and at convex corners the product of both lines
@@ -413,21 +437,24 @@ class Packer {
     // 0.0057 without, 0.0288/0.0211/0.0106/0.0093/0.0048 with.
     if (lines.size() < kMinKnownLines) {
       std::array<std::array<std::uint32_t, 3>, 16> ring{};
+      std::array<std::uint32_t, 16> ring_index{};  // ring[r] is mesh_->triangles[ring_index[r]]
       std::size_t ring_count = 0, frontier_begin = 0;
+      ring_index[ring_count] = t;
       ring[ring_count++] = tri;
       for (int step = 0; step < kLineSearchSteps; ++step) {
         const std::size_t frontier_end = ring_count;
         for (std::size_t r = frontier_begin; r < frontier_end; ++r) {
-          const auto cur = ring[r];
-          for (int e = 0; e < 3; ++e) {
-            const std::uint32_t a = cur[static_cast<std::size_t>(e)], b = cur[static_cast<std::size_t>((e + 1) % 3)];
-            if (line_between(a, b) >= 0) continue;
-            for (const std::uint32_t* it = triangles_at_.begin(a); it != triangles_at_.end(a); ++it) {
+          const std::uint32_t cur = ring_index[r];
+          for (std::uint32_t e = 0; e < 3; ++e) {
+            if (edge_lines_[cur][e] >= 0) continue;
+            for (const std::uint32_t* it = across_.begin(3 * cur + e); it != across_.end(3 * cur + e); ++it) {
               const auto& other = mesh_->triangles[*it];
-              if (std::find(other.begin(), other.end(), b) == other.end()) continue;
-              bool seen = false;
-              for (std::size_t q = 0; q < ring_count; ++q) seen = seen || ring[q] == other;
-              if (!seen && ring_count < ring.size()) ring[ring_count++] = other;
+              std::size_t q = 0;
+              while (q < ring_count && ring[q] != other) ++q;
+              if (q == ring_count && ring_count < ring.size()) {  // not seen yet
+                ring_index[ring_count] = *it;
+                ring[ring_count++] = other;
+              }
             }
           }
         }
@@ -437,7 +464,7 @@ class Packer {
       std::size_t found_count = 0;
       for (std::size_t r = 1; r < ring_count; ++r) {
         for (int k = 0; k < 3; ++k) {
-          const int line = line_between(ring[r][static_cast<std::size_t>(k)], ring[r][static_cast<std::size_t>((k + 1) % 3)]);
+          const int line = edge_lines_[ring_index[r]][static_cast<std::size_t>(k)];
           if (line < 0 || lines.contains(line) || found_count == found.size()) continue;
           bool dup = false;
           for (std::size_t q = 0; q < found_count; ++q) dup = dup || found[q].second == line;
@@ -864,6 +891,8 @@ class Packer {
   // Per lower vertex of a curve hull edge: (upper vertex, edge).
   VertexRows<std::pair<std::uint32_t, CurveEdge>> curve_edges_;
   VertexRows<std::uint32_t> triangles_at_;  // per point: interior triangles with it as a vertex
+  std::vector<std::array<int, 3>> edge_lines_;  // per triangle edge: line_between()
+  VertexRows<std::uint32_t> across_;        // per triangle edge (3 t + k): see prepare_triangle_edges
   VertexRows<int> curves_at_;              // per point: curves whose hull has it as a vertex
   std::vector<Bary> barys_;                // per curve
   std::vector<char> bary_ok_;              // per curve: hull not degenerate
