@@ -46,6 +46,9 @@ Vec2 Segment::end() const {
 void Outline::move_to(Vec2 p) {
   close();
   contours_.emplace_back();
+  // Glyph contours have tens of segments: start with room for a few dozen
+  // rather than growing one segment at a time (1, 2, 4, ... reallocations).
+  contours_.back().segments.reserve(32);
   start_ = pen_ = p;
   open_ = true;
 }

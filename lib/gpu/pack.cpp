@@ -103,31 +103,49 @@ struct FringeEdge {
   int curve = -1;  // curve index
 };
 
+// One per thread, reused across meshes: its arrays keep their capacity, so
+// packing a glyph allocates nothing once they are warm.
 class Packer {
  public:
-  Packer(const Mesh& mesh, std::vector<Vertex>& out) : mesh_(mesh), out_(out) {}
-
-  void run() {
-    out_.reserve(out_.size() + 3 * mesh_.triangles.size() + 15 * mesh_.curves.size() +
-                 6 * mesh_.boundary_lines.size());
+  void run(const Mesh& mesh, std::vector<Vertex>& out) {
+    mesh_ = &mesh;
+    out_ = &out;
+    lines_.clear();
+    edges_.clear();
+    out_->reserve(out_->size() + 3 * mesh_->triangles.size() + 15 * mesh_->curves.size() +
+                  6 * mesh_->boundary_lines.size());
     prepare_lines();
     prepare_curve_edges();
-    triangles_at_.build(mesh_.points.size(), [&](auto emit) {
-      for (std::size_t t = 0; t < mesh_.triangles.size(); ++t)
-        for (std::uint32_t v : mesh_.triangles[t]) emit(v, static_cast<std::uint32_t>(t));
+    triangles_at_.build(mesh_->points.size(), [&](auto emit) {
+      for (std::size_t t = 0; t < mesh_->triangles.size(); ++t)
+        for (std::uint32_t v : mesh_->triangles[t]) emit(v, static_cast<std::uint32_t>(t));
     });
-    for (const auto& tri : mesh_.triangles) {
-      interior(tri);
-      remember_boundary_triangle(tri);
+    prepare_triangle_edges();
+    triangle_lines_.resize(mesh_->triangles.size());
+    for (std::size_t t = 0; t < mesh_->triangles.size(); ++t) {
+      const auto& tri = mesh_->triangles[t];
+      triangle_lines_[t] = interior_lines(static_cast<std::uint32_t>(t));
+      interior(tri, triangle_lines_[t]);
+      remember_boundary_triangle(edge_lines_[t], static_cast<std::uint32_t>(t));
     }
     group_curve_neighbours();
-    for (std::size_t i = 0; i < mesh_.curves.size(); ++i) curve(i);
+    // Per curve, once: its fade lines and whether the shape is solid beyond
+    // its chord (each of its up to 15 vertices needs them).
+    curve_fade_.resize(mesh_->curves.size());
+    solid_beyond_.resize(mesh_->curves.size());
+    for (std::size_t i = 0; i < mesh_->curves.size(); ++i) {
+      curve_fade_[i] = curve_fade_lines(i);
+      solid_beyond_[i] = solid_beyond_chord(mesh_->curves[i]);
+    }
+    for (std::size_t i = 0; i < mesh_->curves.size(); ++i) curve(i);
     collect_fringe_edges();
     for (const FringeEdge& e : edges_) fringe(e);
+    mesh_ = nullptr;
+    out_ = nullptr;
   }
 
  private:
-  Vec2 pt(std::uint32_t i) const { return mesh_.points[i]; }
+  Vec2 pt(std::uint32_t i) const { return mesh_->points[i]; }
 
   struct CurveEdge {
     int curve = -1;
@@ -135,15 +153,25 @@ class Packer {
   };
 
   void prepare_lines() {
-    const std::size_t n = mesh_.points.size();
+    const std::size_t n = mesh_->points.size();
     corners_.assign(n, Corner{});
-    lines_.reserve(mesh_.boundary_lines.size());
-    for (std::size_t i = 0; i < mesh_.boundary_lines.size(); ++i) {
-      const auto& bl = mesh_.boundary_lines[i];
+    lines_.reserve(mesh_->boundary_lines.size());
+    slabs_.clear();
+    slabs_.reserve(mesh_->boundary_lines.size());
+    for (std::size_t i = 0; i < mesh_->boundary_lines.size(); ++i) {
+      const auto& bl = mesh_->boundary_lines[i];
       const Vec2 a = pt(bl[0]), b = pt(bl[1]);
       const double len = distance(a, b);
       LineFn f{a, len > 0 ? left_normal(b - a) / len : Vec2{}};
       lines_.push_back(f);
+      LineSlab slab;
+      slab.d = b - a;
+      slab.len2 = dot(slab.d, slab.d);
+      slab.len = std::sqrt(slab.len2);
+      slab.eps = 1e-9 * std::max(1.0, slab.len);
+      slab.slack = slab.eps * slab.len;
+      slab.half_plane_eps = 1e-9 * std::max(1.0, len);
+      slabs_.push_back(slab);
       Corner& ca = corners_[bl[0]];
       ca.out = static_cast<int>(i);
       ++ca.count_out;
@@ -152,13 +180,13 @@ class Packer {
       ++cb.count_in;
     }
     lines_from_.build(n, [&](auto emit) {
-      for (std::size_t i = 0; i < mesh_.boundary_lines.size(); ++i) {
+      for (std::size_t i = 0; i < mesh_->boundary_lines.size(); ++i) {
         if (lines_[i].n == Vec2{}) continue;  // zero length: not an edge of anything
-        emit(mesh_.boundary_lines[i][0], static_cast<int>(i));
+        emit(mesh_->boundary_lines[i][0], static_cast<int>(i));
       }
     });
-    boundary_triangle_.assign(mesh_.boundary_lines.size(), {});
-    has_boundary_triangle_.assign(mesh_.boundary_lines.size(), 0);
+    boundary_triangle_.assign(mesh_->boundary_lines.size(), {});
+    has_boundary_triangle_.assign(mesh_->boundary_lines.size(), 0);
   }
 
   // The boundary line a->b or, failing that, b->a (the latest added of
@@ -168,7 +196,7 @@ class Packer {
       const std::uint32_t to = from == a ? b : a;
       int found = -1;
       for (const int* it = lines_from_.begin(from); it != lines_from_.end(from); ++it) {
-        if (mesh_.boundary_lines[static_cast<std::size_t>(*it)][1] == to) found = *it;
+        if (mesh_->boundary_lines[static_cast<std::size_t>(*it)][1] == to) found = *it;
       }
       if (found >= 0) return found;
     }
@@ -188,13 +216,13 @@ class Packer {
   // The hull edge each curved triangle shares with the interior mesh: the
   // chord of a convex curve, the legs of a concave one.
   void prepare_curve_edges() {
-    const std::size_t n = mesh_.points.size();
-    barys_.resize(mesh_.curves.size());
-    bary_ok_.resize(mesh_.curves.size());
-    for (std::size_t i = 0; i < mesh_.curves.size(); ++i) bary_ok_[i] = compute_bary(mesh_.curves[i], barys_[i]);
+    const std::size_t n = mesh_->points.size();
+    barys_.resize(mesh_->curves.size());
+    bary_ok_.resize(mesh_->curves.size());
+    for (std::size_t i = 0; i < mesh_->curves.size(); ++i) bary_ok_[i] = compute_bary(mesh_->curves[i], barys_[i]);
     curves_at_.build(n, [&](auto emit) {
-      for (std::size_t i = 0; i < mesh_.curves.size(); ++i) {
-        const CurvedTriangle& ct = mesh_.curves[i];
+      for (std::size_t i = 0; i < mesh_->curves.size(); ++i) {
+        const CurvedTriangle& ct = mesh_->curves[i];
         for (std::uint32_t v : {ct.p0, ct.control, ct.p2}) emit(v, static_cast<int>(i));
       }
     });
@@ -202,8 +230,8 @@ class Packer {
       auto add = [&](std::uint32_t a, std::uint32_t b, CurveEdge ce) {
         emit(std::min(a, b), std::pair<std::uint32_t, CurveEdge>{std::max(a, b), ce});
       };
-      for (std::size_t i = 0; i < mesh_.curves.size(); ++i) {
-        const CurvedTriangle& ct = mesh_.curves[i];
+      for (std::size_t i = 0; i < mesh_->curves.size(); ++i) {
+        const CurvedTriangle& ct = mesh_->curves[i];
         const int ci = static_cast<int>(i);
         if (ct.convex) {
           add(ct.p0, ct.p2, {ci, kChord});
@@ -213,13 +241,13 @@ class Packer {
         }
       }
     });
-    has_neighbour_.assign(mesh_.curves.size(), 0);
+    has_neighbour_.assign(mesh_->curves.size(), 0);
     neighbour_lines_.clear();
   }
 
   // Per curve, in order, the lines of the interior triangles across its edges.
   void group_curve_neighbours() {
-    neighbour_rows_.build(mesh_.curves.size(), [&](auto emit) {
+    neighbour_rows_.build(mesh_->curves.size(), [&](auto emit) {
       for (const auto& [ci, li] : neighbour_lines_) emit(static_cast<std::uint32_t>(ci), li);
     });
   }
@@ -228,8 +256,8 @@ class Packer {
   int convex_partner(int line, std::uint32_t v) const {
     const Corner& c = corners_[v];
     if (c.count_in != 1 || c.count_out != 1) return -1;  // touching loops: ambiguous
-    const auto& in = mesh_.boundary_lines[static_cast<std::size_t>(c.in)];
-    const auto& out = mesh_.boundary_lines[static_cast<std::size_t>(c.out)];
+    const auto& in = mesh_->boundary_lines[static_cast<std::size_t>(c.in)];
+    const auto& out = mesh_->boundary_lines[static_cast<std::size_t>(c.out)];
     const Vec2 din = pt(in[1]) - pt(in[0]);
     const Vec2 dout = pt(out[1]) - pt(out[0]);
     if (cross(din, dout) <= 0) return -1;  // reflex or straight: the product rule would be wrong
@@ -247,26 +275,22 @@ class Packer {
   // thin frame, which reach past the far side's ends, knew only one side and
   // took its coverage alone (about twice the ink).
   bool safe_for(int line, const std::array<Vec2, 3>& p) const {
-    const auto& bl = mesh_.boundary_lines[static_cast<std::size_t>(line)];
-    const Vec2 a = pt(bl[0]), b = pt(bl[1]);
-    const Vec2 d = b - a;
-    const double len2 = dot(d, d);
-    const double eps = 1e-9 * std::max(1.0, std::sqrt(len2));
+    const auto& bl = mesh_->boundary_lines[static_cast<std::size_t>(line)];
     const LineFn& f = lines_[static_cast<std::size_t>(line)];
-    const double len = std::sqrt(len2);
+    const LineSlab& l = slabs_[static_cast<std::size_t>(line)];
     for (const Vec2& x : p) {
       const double inside = f(x);
-      if (inside < -eps) return false;
-      const double s = dot(x - a, d);
+      if (inside < -l.eps) return false;
+      const double s = dot(x - f.p, l.d);
       // Past an end by no more than x lies inside the line (a 45-degree
       // cone from the end; a half-plane, so the triangle's vertices decide)
       // and a tenth of the line's length: only pixels near that end can be
       // faded by the line's extension, where the outline turns anyway.
-      if (s < -eps * len) {
-        if (-s / len <= std::min(inside, tolerance::kFadePastEndFraction * len)) continue;
+      if (s < -l.slack) {
+        if (-s / l.len <= std::min(inside, tolerance::kFadePastEndFraction * l.len)) continue;
         if (!past_end_ok(line, corners_[bl[0]].in, bl[0], corners_[bl[0]].count_in, x)) return false;
-      } else if (s > len2 + eps * len) {
-        if ((s - len2) / len <= std::min(inside, tolerance::kFadePastEndFraction * len)) continue;
+      } else if (s > l.len2 + l.slack) {
+        if ((s - l.len2) / l.len <= std::min(inside, tolerance::kFadePastEndFraction * l.len)) continue;
         if (!past_end_ok(line, corners_[bl[1]].out, bl[1], corners_[bl[1]].count_out, x)) return false;
       }
     }
@@ -279,8 +303,7 @@ class Packer {
   // `line` (a convex or straight join), and x projects within that edge's
   // chord, so x is no farther past the end than the edge reaches.
   bool past_end_ok(int line, int next, std::uint32_t v, int count, Vec2 x) const {
-    const auto& bl = mesh_.boundary_lines[static_cast<std::size_t>(line)];
-    const double eps = 1e-9 * std::max(1.0, distance(pt(bl[0]), pt(bl[1])));
+    const double eps = slabs_[static_cast<std::size_t>(line)].half_plane_eps;
     const LineFn& f = lines_[static_cast<std::size_t>(line)];
     const Vec2 near = pt(v);
     Vec2 far{};
@@ -289,18 +312,18 @@ class Packer {
       // with an end at v, whose hull must lie in the half-plane.
       int found = -1;
       for (const int* it = curves_at_.begin(v); it != curves_at_.end(v); ++it) {
-        const CurvedTriangle& ct = mesh_.curves[static_cast<std::size_t>(*it)];
+        const CurvedTriangle& ct = mesh_->curves[static_cast<std::size_t>(*it)];
         if (ct.p0 != v && ct.p2 != v) continue;
         if (found >= 0) return false;
         found = *it;
       }
       if (found < 0) return false;
-      const CurvedTriangle& ct = mesh_.curves[static_cast<std::size_t>(found)];
+      const CurvedTriangle& ct = mesh_->curves[static_cast<std::size_t>(found)];
       if (f(pt(ct.control)) < -eps) return false;
       far = pt(ct.p0 == v ? ct.p2 : ct.p0);
     } else {
       if (next < 0 || count != 1 || next == line) return false;
-      const auto& nb = mesh_.boundary_lines[static_cast<std::size_t>(next)];
+      const auto& nb = mesh_->boundary_lines[static_cast<std::size_t>(next)];
       far = pt(nb[0] == v ? nb[1] : nb[0]);
     }
     if (f(far) < -eps) return false;
@@ -351,28 +374,50 @@ class Packer {
     }
   }
 
-  void remember_boundary_triangle(const std::array<std::uint32_t, 3>& tri) {
-    for (int e = 0; e < 3; ++e) {
-      const std::uint32_t a = tri[static_cast<std::size_t>(e)], b = tri[static_cast<std::size_t>((e + 1) % 3)];
-      const int line = line_between(a, b);
+  void remember_boundary_triangle(const std::array<int, 3>& edge_lines, std::uint32_t t) {
+    for (const int line : edge_lines) {
       if (line < 0) continue;
-      boundary_triangle_[static_cast<std::size_t>(line)] = tri;
+      boundary_triangle_[static_cast<std::size_t>(line)] = t;
       has_boundary_triangle_[static_cast<std::size_t>(line)] = 1;
     }
   }
 
   // The boundary lines an interior triangle fades by, in priority order:
   // its own boundary edges, then lines through its vertices (when safe).
-  IndexList interior_lines(const std::array<std::uint32_t, 3>& tri) const {
+  // `edge_lines`: line_between() of the edges (0, 1), (1, 2), (2, 0).
+  // Per triangle edge (k: tri[k] -> tri[k + 1]), computed once per mesh:
+  // the boundary line along it (line_between, or -1) and, for edges that are
+  // not boundary lines, the triangles holding both its ends, in the order
+  // triangles_at_ lists them (the triangle itself among them).
+  void prepare_triangle_edges() {
+    const auto& tris = mesh_->triangles;
+    edge_lines_.resize(tris.size());
+    for (std::size_t t = 0; t < tris.size(); ++t) {
+      const auto& tri = tris[t];
+      edge_lines_[t] = {line_between(tri[0], tri[1]), line_between(tri[1], tri[2]), line_between(tri[2], tri[0])};
+    }
+    across_.build(3 * tris.size(), [&](auto emit) {
+      for (std::size_t t = 0; t < tris.size(); ++t) {
+        for (std::size_t k = 0; k < 3; ++k) {
+          if (edge_lines_[t][k] >= 0) continue;
+          const std::uint32_t a = tris[t][k], b = tris[t][(k + 1) % 3];
+          for (const std::uint32_t* it = triangles_at_.begin(a); it != triangles_at_.end(a); ++it) {
+            const auto& other = tris[*it];
+            if (std::find(other.begin(), other.end(), b) != other.end()) emit(static_cast<std::uint32_t>(3 * t + k), *it);
+          }
+        }
+      }
+    });
+  }
+
+  IndexList interior_lines(std::uint32_t t) const {
+    const auto& tri = mesh_->triangles[t];
     const std::array<Vec2, 3> p{pt(tri[0]), pt(tri[1]), pt(tri[2])};
     IndexList lines;
     auto add = [&](int line) {
       if (line >= 0 && !lines.contains(line)) lines.push_back(line);
     };
-    for (int e = 0; e < 3; ++e) {
-      const std::uint32_t a = tri[static_cast<std::size_t>(e)], b = tri[static_cast<std::size_t>((e + 1) % 3)];
-      add(line_between(a, b));
-    }
+    for (const int line : edge_lines_[t]) add(line);
     // Boundary lines through a vertex of this triangle: a thin or shallow
     // triangle that touches a line only at a vertex still holds pixel centres
     // within a pixel of it (and at convex corners the product of both lines
@@ -393,21 +438,24 @@ class Packer {
     // 0.0057 without, 0.0288/0.0211/0.0106/0.0093/0.0048 with.
     if (lines.size() < kMinKnownLines) {
       std::array<std::array<std::uint32_t, 3>, 16> ring{};
+      std::array<std::uint32_t, 16> ring_index{};  // ring[r] is mesh_->triangles[ring_index[r]]
       std::size_t ring_count = 0, frontier_begin = 0;
+      ring_index[ring_count] = t;
       ring[ring_count++] = tri;
       for (int step = 0; step < kLineSearchSteps; ++step) {
         const std::size_t frontier_end = ring_count;
         for (std::size_t r = frontier_begin; r < frontier_end; ++r) {
-          const auto cur = ring[r];
-          for (int e = 0; e < 3; ++e) {
-            const std::uint32_t a = cur[static_cast<std::size_t>(e)], b = cur[static_cast<std::size_t>((e + 1) % 3)];
-            if (line_between(a, b) >= 0) continue;
-            for (const std::uint32_t* it = triangles_at_.begin(a); it != triangles_at_.end(a); ++it) {
-              const auto& other = mesh_.triangles[*it];
-              if (std::find(other.begin(), other.end(), b) == other.end()) continue;
-              bool seen = false;
-              for (std::size_t q = 0; q < ring_count; ++q) seen = seen || ring[q] == other;
-              if (!seen && ring_count < ring.size()) ring[ring_count++] = other;
+          const std::uint32_t cur = ring_index[r];
+          for (std::uint32_t e = 0; e < 3; ++e) {
+            if (edge_lines_[cur][e] >= 0) continue;
+            for (const std::uint32_t* it = across_.begin(3 * cur + e); it != across_.end(3 * cur + e); ++it) {
+              const auto& other = mesh_->triangles[*it];
+              std::size_t q = 0;
+              while (q < ring_count && ring[q] != other) ++q;
+              if (q == ring_count && ring_count < ring.size()) {  // not seen yet
+                ring_index[ring_count] = *it;
+                ring[ring_count++] = other;
+              }
             }
           }
         }
@@ -417,7 +465,7 @@ class Packer {
       std::size_t found_count = 0;
       for (std::size_t r = 1; r < ring_count; ++r) {
         for (int k = 0; k < 3; ++k) {
-          const int line = line_between(ring[r][static_cast<std::size_t>(k)], ring[r][static_cast<std::size_t>((k + 1) % 3)]);
+          const int line = edge_lines_[ring_index[r]][static_cast<std::size_t>(k)];
           if (line < 0 || lines.contains(line) || found_count == found.size()) continue;
           bool dup = false;
           for (std::size_t q = 0; q < found_count; ++q) dup = dup || found[q].second == line;
@@ -437,9 +485,10 @@ class Packer {
   // chord of a convex curve, a leg of a concave one), if any: the side of
   // the curve an interior triangle touching it at a vertex is on.
   bool touching_edge(int ci, const std::array<Vec2, 3>& p, CurveEdge& out) const {
-    const CurvedTriangle& ct = mesh_.curves[static_cast<std::size_t>(ci)];
-    Bary g;
-    if (!bary(ci, g)) return false;
+    const CurvedTriangle& ct = mesh_->curves[static_cast<std::size_t>(ci)];
+    const Bary* hull = bary(ci);
+    if (!hull) return false;
+    const Bary& g = *hull;
     // Barycentrics are relative to the hull, so a fixed tolerance suits.
     const double eps = 1e-9;
     auto all_outside = [&](auto coord) {
@@ -463,20 +512,21 @@ class Packer {
     return false;
   }
 
-  // Distance from x to the hull edge `ce` names (a segment).
-  double hull_edge_distance(const CurveEdge& ce, Vec2 x) const {
-    const CurvedTriangle& ct = mesh_.curves[static_cast<std::size_t>(ce.curve)];
+  // Squared distance from x to the hull edge `ce` names (a segment): only
+  // compared, so no square root (std::hypot was ~1.5% of mesh preparation).
+  double hull_edge_distance2(const CurveEdge& ce, Vec2 x) const {
+    const CurvedTriangle& ct = mesh_->curves[static_cast<std::size_t>(ce.curve)];
     const Vec2 a = pt(ce.edge == kLegToP2 ? ct.control : ct.p0);
     const Vec2 b = pt(ce.edge == kLegFromP0 ? ct.control : ct.p2);
     const Vec2 d = b - a;
     const double len2 = dot(d, d);
     const double s = len2 > 0 ? std::clamp(dot(x - a, d) / len2, 0.0, 1.0) : 0.0;
-    return distance(x, a + d * s);
+    const Vec2 off = x - (a + d * s);
+    return dot(off, off);
   }
 
-  void interior(const std::array<std::uint32_t, 3>& tri) {
+  void interior(const std::array<std::uint32_t, 3>& tri, const IndexList& lines) {
     const std::array<Vec2, 3> p{pt(tri[0]), pt(tri[1]), pt(tri[2])};
-    const IndexList lines = interior_lines(tri);
     // Curved triangles across an edge of this one: the curve can come closer
     // than a pixel to this triangle's pixel centres (near the curve's ends,
     // and anywhere along flat curves), so full AA fades by it too.
@@ -507,7 +557,7 @@ class Packer {
     std::vector<std::pair<double, CurveEdge>>& touching = touching_scratch_;
     touching.clear();
     const Vec2 centroid = (p[0] + p[1] + p[2]) / 3.0;
-    for (int e = 0; e < 3; ++e) {
+    for (int e = 0; e < 3 && curve_count < 3; ++e) {  // three across edges: no slot left
       const std::uint32_t vertex = tri[static_cast<std::size_t>(e)];
       for (const int* it = curves_at_.begin(vertex); it != curves_at_.end(vertex); ++it) {
         const int ci = *it;
@@ -515,7 +565,7 @@ class Packer {
         if (has(ci) || !touching_edge(ci, p, ce)) continue;
         bool seen = false;
         for (const auto& t : touching) seen = seen || t.second.curve == ci;
-        if (!seen) touching.emplace_back(hull_edge_distance(ce, centroid), ce);
+        if (!seen) touching.emplace_back(hull_edge_distance2(ce, centroid), ce);
       }
     }
     std::sort(touching.begin(), touching.end(),
@@ -547,7 +597,7 @@ class Packer {
       if (kind != kSolid) set_slots(v, x, Vec2{}, slots);
       set_fade(v, x, Vec2{}, fade);
       if (curve_count > 0) set_near_curves(v, x, near_curves, curve_count);
-      out_.push_back(v);
+      out_->push_back(v);
     }
   }
 
@@ -557,7 +607,7 @@ class Packer {
   // other side of a serif thinner than a pixel).
   IndexList curve_fade_lines(std::size_t ci) const {
     IndexList out;
-    const CurvedTriangle& ct = mesh_.curves[ci];
+    const CurvedTriangle& ct = mesh_->curves[ci];
     const std::array<Vec2, 3> hull{pt(ct.p0), pt(ct.control), pt(ct.p2)};
     auto add = [&](int li) {
       if (li >= 0 && out.size() < 2 && !out.contains(li)) out.push_back(li);
@@ -571,7 +621,7 @@ class Packer {
         if (!in_half_plane(li, hull)) continue;
         // The line's far end must be on the curve's filled side of its
         // tangent (the leg) at `end`: otherwise the corner is reflex.
-        const auto& bl = mesh_.boundary_lines[static_cast<std::size_t>(li)];
+        const auto& bl = mesh_->boundary_lines[static_cast<std::size_t>(li)];
         const Vec2 far = pt(bl[0] == end ? bl[1] : bl[0]);
         const Vec2 e = pt(end), ctrl = pt(ct.control);
         const double side_far = cross(ctrl - e, far - e);
@@ -590,8 +640,7 @@ class Packer {
   bool in_half_plane(int line, const std::array<Vec2, 3>& p) const {
     const LineFn& f = lines_[static_cast<std::size_t>(line)];
     if (f.n == Vec2{}) return false;
-    const auto& bl = mesh_.boundary_lines[static_cast<std::size_t>(line)];
-    const double eps = 1e-9 * std::max(1.0, distance(pt(bl[0]), pt(bl[1])));
+    const double eps = slabs_[static_cast<std::size_t>(line)].half_plane_eps;
     for (const Vec2& x : p)
       if (f(x) < -eps) return false;
     return true;
@@ -601,9 +650,8 @@ class Packer {
   // that interior triangles leave unused. After set_slots.
   void set_near_curves(Vertex& v, Vec2 x, const std::array<CurveEdge, 3>& curves, int count) const {
     auto tau = [&](const CurveEdge& ce, float& t1, float& t2, float& w) {
-      const CurvedTriangle& ct = mesh_.curves[static_cast<std::size_t>(ce.curve)];
-      Bary g;
-      bary(ce.curve, g);
+      const CurvedTriangle& ct = mesh_->curves[static_cast<std::size_t>(ce.curve)];
+      const Bary& g = barys_[static_cast<std::size_t>(ce.curve)];
       t1 = static_cast<float>(g.tau1(x));
       t2 = static_cast<float>(g.tau2(x));
       w = static_cast<float>(ct.weight);
@@ -630,21 +678,28 @@ class Packer {
     double area2 = 0.0;
     double tau1(Vec2 x) const { return cross(x - a, c - a) / area2; }
     double tau2(Vec2 x) const { return cross(b - a, x - a) / area2; }
-    Vec2 grad1() const { return Vec2{(c - a).y, -(c - a).x} / area2; }
-    Vec2 grad2() const { return Vec2{-(b - a).y, (b - a).x} / area2; }
+    // Filled in by compute_bary (divisions done once per curve): the
+    // gradients of tau1 and tau2, and (tau1, tau2) at a, b and c.
+    Vec2 grad1{}, grad2{};
+    std::array<std::array<double, 2>, 3> at_vertex{};
   };
 
   // Computed once per curve (compute_bary) and looked up.
-  bool bary(int ci, Bary& out) const {
-    out = barys_[static_cast<std::size_t>(ci)];
-    return bary_ok_[static_cast<std::size_t>(ci)] != 0;
+  // Null for a degenerate hull.
+  const Bary* bary(int ci) const {
+    return bary_ok_[static_cast<std::size_t>(ci)] ? &barys_[static_cast<std::size_t>(ci)] : nullptr;
   }
 
   bool compute_bary(const CurvedTriangle& ct, Bary& out) const {
     out = Bary{pt(ct.p0), pt(ct.control), pt(ct.p2)};
     out.area2 = cross(out.b - out.a, out.c - out.a);
     const double scale = dot(out.b - out.a, out.b - out.a) + dot(out.c - out.a, out.c - out.a);
-    return std::isfinite(out.area2) && std::fabs(out.area2) > 1e-12 * scale;
+    if (!(std::isfinite(out.area2) && std::fabs(out.area2) > 1e-12 * scale)) return false;
+    out.grad1 = Vec2{(out.c - out.a).y, -(out.c - out.a).x} / out.area2;
+    out.grad2 = Vec2{-(out.b - out.a).y, (out.b - out.a).x} / out.area2;
+    const Vec2 corners[3] = {out.a, out.b, out.c};
+    for (int k = 0; k < 3; ++k) out.at_vertex[static_cast<std::size_t>(k)] = {out.tau1(corners[k]), out.tau2(corners[k])};
+    return true;
   }
 
   // True when an interior triangle lies across the chord of convex curve
@@ -656,36 +711,40 @@ class Packer {
     return ce && has_neighbour_[static_cast<std::size_t>(ce->curve)];
   }
 
-  Vertex curve_vertex(const CurvedTriangle& ct, const Bary& g, Vec2 p, Vec2 offset) const {
+  // `ci`: the index of `ct`; p is its hull vertex number `k` (0: p0, 1:
+  // control, 2: p2).
+  Vertex curve_vertex(std::size_t ci, const CurvedTriangle& ct, const Bary& g, int k, Vec2 offset) const {
+    const Vec2 p = k == 0 ? g.a : k == 1 ? g.b : g.c;
     Vertex v = make(p, offset, kCurve);
-    v.coef[0] = static_cast<float>(g.tau1(p));
-    v.coef[1] = static_cast<float>(g.tau2(p));
+    v.coef[0] = static_cast<float>(g.at_vertex[static_cast<std::size_t>(k)][0]);
+    v.coef[1] = static_cast<float>(g.at_vertex[static_cast<std::size_t>(k)][1]);
     v.coef[2] = ct.convex ? 1.0f : -1.0f;
-    v.coef[3] = solid_beyond_chord(ct) ? 1.0f : 0.0f;
+    v.coef[3] = solid_beyond_[ci] ? 1.0f : 0.0f;
     v.info[1] = static_cast<float>(ct.weight);
-    v.info[2] = static_cast<float>(dot(g.grad1(), offset));
-    v.info[3] = static_cast<float>(dot(g.grad2(), offset));
+    v.info[2] = static_cast<float>(dot(g.grad1, offset));
+    v.info[3] = static_cast<float>(dot(g.grad2, offset));
     return v;
   }
 
   void curve(std::size_t i) {
-    const CurvedTriangle& ct = mesh_.curves[i];
-    Bary g;
-    if (!bary(static_cast<int>(i), g)) return;  // a flat hull has no area to draw
+    const CurvedTriangle& ct = mesh_->curves[i];
+    const Bary* hull = bary(static_cast<int>(i));
+    if (!hull) return;  // a flat hull has no area to draw
+    const Bary& g = *hull;
     // Exact hull barycentrics (not recomputed) so the corners are crisp.
-    Vertex v0 = curve_vertex(ct, g, g.a, Vec2{});
-    Vertex v1 = curve_vertex(ct, g, g.b, Vec2{});
-    Vertex v2 = curve_vertex(ct, g, g.c, Vec2{});
+    Vertex v0 = curve_vertex(i, ct, g, 0, Vec2{});
+    Vertex v1 = curve_vertex(i, ct, g, 1, Vec2{});
+    Vertex v2 = curve_vertex(i, ct, g, 2, Vec2{});
     v0.coef[0] = 0.0f; v0.coef[1] = 0.0f;
     v1.coef[0] = 1.0f; v1.coef[1] = 0.0f;
     v2.coef[0] = 0.0f; v2.coef[1] = 1.0f;
-    const IndexList fade = curve_fade_lines(i);
+    const IndexList& fade = curve_fade_[i];
     set_fade(v0, g.a, Vec2{}, fade);
     set_fade(v1, g.b, Vec2{}, fade);
     set_fade(v2, g.c, Vec2{}, fade);
-    out_.push_back(v0);
-    out_.push_back(v1);
-    out_.push_back(v2);
+    out_->push_back(v0);
+    out_->push_back(v1);
+    out_->push_back(v2);
   }
 
   static Vec2 outward_normal(Vec2 a, Vec2 b, Vec2 away_from) {
@@ -698,17 +757,18 @@ class Packer {
   }
 
   void collect_fringe_edges() {
-    for (std::size_t i = 0; i < mesh_.boundary_lines.size(); ++i) {
-      const auto& bl = mesh_.boundary_lines[i];
+    for (std::size_t i = 0; i < mesh_->boundary_lines.size(); ++i) {
+      const auto& bl = mesh_->boundary_lines[i];
       const LineFn& f = lines_[i];
       if (f.n == Vec2{}) continue;
       edges_.push_back(FringeEdge{bl[0], bl[1], f.n * -1.0, static_cast<int>(i), -1});
     }
-    for (std::size_t i = 0; i < mesh_.curves.size(); ++i) {
-      const CurvedTriangle& ct = mesh_.curves[i];
-      Bary g;
+    for (std::size_t i = 0; i < mesh_->curves.size(); ++i) {
+      const CurvedTriangle& ct = mesh_->curves[i];
       const int ci = static_cast<int>(i);
-      if (!bary(ci, g)) continue;
+      const Bary* hull = bary(ci);
+      if (!hull) continue;
+      const Bary& g = *hull;
       if (ct.convex) {
         // Outside the shape lies beyond the hull's legs.
         edges_.push_back(FringeEdge{ct.p0, ct.control, outward_normal(g.a, g.b, g.c), -1, ci});
@@ -718,7 +778,7 @@ class Packer {
         edges_.push_back(FringeEdge{ct.p0, ct.p2, outward_normal(g.a, g.c, g.b), -1, ci});
       }
     }
-    incident_.assign(mesh_.points.size(), Incident{});
+    incident_.assign(mesh_->points.size(), Incident{});
     for (std::size_t i = 0; i < edges_.size(); ++i) {
       incident_[edges_[i].a].add(static_cast<int>(i));
       incident_[edges_[i].b].add(static_cast<int>(i));
@@ -748,9 +808,13 @@ class Packer {
     const Vec2 oa = offset_at(e, e.a), ob = offset_at(e, e.b);
     // Quad a, b, b', a' as triangles (a, b, b') and (a, b', a'); the offset
     // vertices share base positions with a and b and move only when t > 0.
-    const std::array<std::pair<Vec2, Vec2>, 6> corners{
-        std::pair{a, Vec2{}}, std::pair{b, Vec2{}}, std::pair{b, ob},
-        std::pair{a, Vec2{}}, std::pair{b, ob},     std::pair{a, oa}};
+    // Four distinct vertices, each computed once and emitted in that order.
+    const std::array<std::pair<Vec2, Vec2>, 4> corners{std::pair{a, Vec2{}}, std::pair{b, Vec2{}},
+                                                       std::pair{b, ob}, std::pair{a, oa}};
+    std::array<Vertex, 4> quad;
+    auto emit = [&] {
+      for (const int k : {0, 1, 2, 0, 2, 3}) out_->push_back(quad[static_cast<std::size_t>(k)]);
+    };
     if (e.line >= 0) {
       IndexList lines;
       lines.push_back(e.line);
@@ -765,7 +829,7 @@ class Packer {
       // behind it uses as well (all of them contain that triangle).
       const auto line = static_cast<std::size_t>(e.line);
       if (has_boundary_triangle_[line]) {
-        for (int li : interior_lines(boundary_triangle_[line])) add(li);
+        for (int li : triangle_lines_[boundary_triangle_[line]]) add(li);
       }
       // Three moving slots in a_coef (c3 has no derivative), two in a_fade.
       std::array<int, 4> slots{-1, -1, -1, -1};
@@ -774,27 +838,34 @@ class Packer {
         if (k < 3) slots[k] = lines[k];
         else fade.push_back(lines[k]);
       }
-      for (const auto& [p, o] : corners) {
-        Vertex v = make(p, o, kEdge);
+      for (std::size_t k = 0; k < 4; ++k) {
+        const auto& [p, o] = corners[k];
+        Vertex& v = quad[k];
+        v = make(p, o, kEdge);
         set_slots(v, p, o, slots);
         set_fade(v, p, o, fade);
-        out_.push_back(v);
       }
+      emit();
     } else {
-      const CurvedTriangle& ct = mesh_.curves[static_cast<std::size_t>(e.curve)];
-      Bary g;
-      if (!bary(e.curve, g)) return;
-      const IndexList fade = curve_fade_lines(static_cast<std::size_t>(e.curve));
-      for (const auto& [p, o] : corners) {
-        Vertex v = curve_vertex(ct, g, p, o);
-        set_fade(v, p, o, fade);
-        out_.push_back(v);
+      const CurvedTriangle& ct = mesh_->curves[static_cast<std::size_t>(e.curve)];
+      const Bary* hull = bary(e.curve);
+      if (!hull) return;
+      const Bary& g = *hull;
+      const IndexList& fade = curve_fade_[static_cast<std::size_t>(e.curve)];
+      // The edge's ends are vertices of the curve's hull.
+      auto hull_vertex = [&](std::uint32_t v) { return v == ct.p0 ? 0 : v == ct.control ? 1 : 2; };
+      const int ka = hull_vertex(e.a), kb = hull_vertex(e.b);
+      for (std::size_t k = 0; k < 4; ++k) {
+        const auto& [p, o] = corners[k];
+        quad[k] = curve_vertex(static_cast<std::size_t>(e.curve), ct, g, k == 0 || k == 3 ? ka : kb, o);
+        set_fade(quad[k], p, o, fade);
       }
+      emit();
     }
   }
 
-  const Mesh& mesh_;
-  std::vector<Vertex>& out_;
+  const Mesh* mesh_ = nullptr;
+  std::vector<Vertex>* out_ = nullptr;
   // Fringe edges at a vertex: how many, and the first two.
   struct Incident {
     int count = 0;
@@ -806,11 +877,23 @@ class Packer {
   };
 
   std::vector<LineFn> lines_;
+  // Per boundary line, the constants of safe_for and in_half_plane.
+  struct LineSlab {
+    Vec2 d{};             // b - a
+    double len2 = 0.0;    // |d|^2
+    double len = 0.0;     // sqrt(len2)
+    double eps = 0.0;     // 1e-9 * max(1, |d|): distance slack
+    double slack = 0.0;   // eps * |d|: slack of the projection dot(x - a, d)
+    double half_plane_eps = 0.0;
+  };
+  std::vector<LineSlab> slabs_;
   std::vector<Corner> corners_;            // per point
   VertexRows<int> lines_from_;             // per point: boundary lines starting there
   // Per lower vertex of a curve hull edge: (upper vertex, edge).
   VertexRows<std::pair<std::uint32_t, CurveEdge>> curve_edges_;
   VertexRows<std::uint32_t> triangles_at_;  // per point: interior triangles with it as a vertex
+  std::vector<std::array<int, 3>> edge_lines_;  // per triangle edge: line_between()
+  VertexRows<std::uint32_t> across_;        // per triangle edge (3 t + k): see prepare_triangle_edges
   VertexRows<int> curves_at_;              // per point: curves whose hull has it as a vertex
   std::vector<Bary> barys_;                // per curve
   std::vector<char> bary_ok_;              // per curve: hull not degenerate
@@ -819,8 +902,11 @@ class Packer {
   std::vector<std::pair<int, int>> neighbour_lines_;
   VertexRows<int> neighbour_rows_;
   std::vector<char> has_neighbour_;        // per curve: an interior triangle across its edge
-  // The interior triangle each boundary line is an edge of.
-  std::vector<std::array<std::uint32_t, 3>> boundary_triangle_;
+  // The interior triangle (index) each boundary line is an edge of.
+  std::vector<std::uint32_t> boundary_triangle_;
+  std::vector<IndexList> triangle_lines_;  // per triangle: interior_lines()
+  std::vector<IndexList> curve_fade_;      // per curve: curve_fade_lines()
+  std::vector<char> solid_beyond_;         // per curve: solid_beyond_chord()
   std::vector<char> has_boundary_triangle_;
   std::vector<FringeEdge> edges_;
   std::vector<Incident> incident_;         // per point
@@ -830,7 +916,8 @@ class Packer {
 }  // namespace
 
 void pack_mesh(const Mesh& mesh, std::vector<Vertex>& out) {
-  Packer(mesh, out).run();
+  thread_local Packer packer;
+  packer.run(mesh, out);
 }
 
 void append_translated(const std::vector<Vertex>& in, Vec2 offset, std::vector<Vertex>& out) {

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <map>
 #include <set>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -44,18 +45,21 @@ bool simplify_pass(Ring& ring) {
   bool changed = false;
   const double merge2 = tolerance::kMergeDistanceFontUnits * tolerance::kMergeDistanceFontUnits;
   // Zero-length pieces (repeated points, conics that return to their start).
+  // Compacted in place; piece i ends where piece i + 1 starts, which is not
+  // yet overwritten (the write index never passes the read index), except
+  // the wrap-around to piece 0, kept aside.
   {
-    Ring kept;
-    kept.reserve(ring.size());
+    const Vec2 first = ring.empty() ? Vec2{} : ring[0].a;
+    std::size_t kept = 0;
     for (std::size_t i = 0; i < ring.size(); ++i) {
-      const Vec2 d = ring_end(ring, i) - ring[i].a;
+      const Vec2 d = (i + 1 < ring.size() ? ring[i + 1].a : first) - ring[i].a;
       if (dot(d, d) <= merge2) {
         changed = true;
         continue;
       }
-      kept.push_back(ring[i]);
+      ring[kept++] = ring[i];
     }
-    ring.swap(kept);
+    ring.resize(kept);
   }
   // Conics whose control point is on (or within the flatness tolerance of) the
   // chord's line. Inside the chord span the curve is the chord. Outside it the
@@ -73,7 +77,8 @@ bool simplify_pass(Ring& ring) {
   // Consecutive lines: exactly collinear and going on -> one line; going back
   // (a spike, within the flatness tolerance) -> the spike tip is removed.
   if (ring.size() >= 2) {
-    std::vector<char> drop(ring.size(), 0);
+    thread_local std::vector<char> drop;  // scratch, reused across calls
+    drop.assign(ring.size(), 0);
     for (std::size_t i = 0; i < ring.size(); ++i) {
       const std::size_t j = (i + 1) % ring.size();
       // At the wrap-around the piece after j may already be gone, which would
@@ -90,12 +95,11 @@ bool simplify_pass(Ring& ring) {
         changed = true;
       }
     }
-    Ring kept;
-    kept.reserve(ring.size());
+    std::size_t kept = 0;
     for (std::size_t i = 0; i < ring.size(); ++i) {
-      if (!drop[i]) kept.push_back(ring[i]);
+      if (!drop[i]) ring[kept++] = ring[i];
     }
-    ring.swap(kept);
+    ring.resize(kept);
   }
   return changed;
 }
@@ -134,7 +138,8 @@ namespace {
 // True when some position occurs twice among `count` points given by `at`.
 template <class PointAt>
 bool has_repeated_position(std::size_t count, PointAt at) {
-  std::vector<std::pair<double, double>> sorted(count);
+  thread_local std::vector<std::pair<double, double>> sorted;  // scratch, reused across calls
+  sorted.resize(count);
   for (std::size_t i = 0; i < count; ++i) sorted[i] = {at(i).x, at(i).y};
   std::sort(sorted.begin(), sorted.end());
   return std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
@@ -206,15 +211,22 @@ std::vector<Ring> clean_rings(const Outline& quadratic) {
     // because merging a straight run through a split vertex would leave that
     // vertex in the middle of an edge of the sub-ring, a T-junction against
     // the other sub-ring that touches it there.
-    for (Ring& loop : split_at_repeated_vertices(ring)) {
+    auto keep = [&](Ring& loop) {
       const bool has_conic = std::any_of(loop.begin(), loop.end(), [](const Piece& p) { return p.conic; });
-      if (loop.size() < 2 || (loop.size() == 2 && !has_conic)) continue;  // a lone back-and-forth: no area
+      if (loop.size() < 2 || (loop.size() == 2 && !has_conic)) return;  // a lone back-and-forth: no area
       // A ring without area is dropped only when it is a flat run of lines:
       // a self-crossing ring (a bow-tie) can have zero signed area and still
       // fill its lobes, which the crossing resolver sorts out.
-      if (ring_area(loop) == 0.0 && (!kResolveCrossingContours || all_collinear(loop))) continue;
+      if (ring_area(loop) == 0.0 && (!kResolveCrossingContours || all_collinear(loop))) return;
       rings.push_back(std::move(loop));
+    };
+    // The usual ring passes through each vertex once: kept as it is, without
+    // the copy split_at_repeated_vertices would make.
+    if (!has_repeated_position(ring.size(), [&](std::size_t i) { return ring[i].a; })) {
+      keep(ring);
+      continue;
     }
+    for (Ring& loop : split_at_repeated_vertices(ring)) keep(loop);
   }
   return rings;
 }
@@ -376,11 +388,14 @@ bool hulls_clearly_apart(const Vec2* p, int np, const Vec2* q, int nq) {
     }
     const int o = certain_side(t[0], t[1], t[2]);
     if (o != 1 && o != -1) return false;
-    for (int k = 0; k < 3; ++k) {
-      if (separates(t[k], t[(k + 1) % 3], o, other, no)) return true;
-    }
-    return false;
+    // The chord (t[2], t[0]) first: at a smooth join of consecutive pieces
+    // the legs through the shared vertex are collinear with the neighbour's
+    // (undecided), while the chord separates.
+    return separates(t[2], t[0], o, other, no) || separates(t[0], t[1], o, other, no) ||
+           separates(t[1], t[2], o, other, no);
   };
+  // A conic's hull first, for the same reason.
+  if (np == 2 && nq == 3) return by_edges_of(q, nq, p, np) || by_edges_of(p, np, q, nq);
   return by_edges_of(p, np, q, nq) || by_edges_of(q, nq, p, np);
 }
 
@@ -409,11 +424,17 @@ bool hulls_overlap(const Vec2* p, int np, const Vec2* q, int nq) {
   return np == 3 && nq == 3 && triangle_interiors_intersect(p, q);
 }
 
-bool separate_hulls(std::vector<Ring>& rings) {
+bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
+  // A piece's hull with what the sweep needs, copied out of the rings so the
+  // pair loop reads one compact array.
   struct HullRef {
     Box box;
-    std::uint32_t ring;
-    std::uint32_t piece;
+    Vec2 hull[3];  // a, b (line) or a, control, b (conic)
+    int n;         // 2 or 3
+    int depth;
+    double weight;
+    std::size_t mark;  // index into split_marks
+    Vec2 end() const { return hull[n - 1]; }
   };
   for (int pass = 0; pass <= tolerance::kMaxHullSubdivisionDepth; ++pass) {
     for (Ring& ring : rings) {
@@ -429,57 +450,71 @@ bool separate_hulls(std::vector<Ring>& rings) {
     mark_base.assign(rings.size() + 1, 0);
     for (std::size_t r = 0; r < rings.size(); ++r) mark_base[r + 1] = mark_base[r] + rings[r].size();
     split_marks.assign(mark_base.back(), 0);
-    for (std::uint32_t r = 0; r < rings.size(); ++r) {
-      for (std::uint32_t i = 0; i < rings[r].size(); ++i) {
-        HullRef ref{{}, r, i};
-        ref.box.add(rings[r][i].a);
-        ref.box.add(ring_end(rings[r], i));
-        if (rings[r][i].conic) ref.box.add(rings[r][i].control);
+    for (std::size_t r = 0; r < rings.size(); ++r) {
+      const Ring& ring = rings[r];
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        const Piece& piece = ring[i];
+        HullRef ref;
+        ref.hull[0] = piece.a;
+        ref.n = piece.conic ? 3 : 2;
+        if (piece.conic) ref.hull[1] = piece.control;
+        ref.hull[ref.n - 1] = i + 1 < ring.size() ? ring[i + 1].a : ring[0].a;
+        ref.box = Box{};
+        for (int k = 0; k < ref.n; ++k) ref.box.add(ref.hull[k]);
+        ref.depth = piece.depth;
+        ref.weight = piece.weight;
+        ref.mark = mark_base[r] + i;
         refs.push_back(ref);
       }
     }
     std::sort(refs.begin(), refs.end(), [](const HullRef& a, const HullRef& b) { return a.box.min.x < b.box.min.x; });
     bool any = false;
     bool overlap_left = false;  // an overlap seen in this pass
-    auto hull_of = [&](const HullRef& ref, Vec2* out) {
-      const Piece& piece = rings[ref.ring][ref.piece];
-      out[0] = piece.a;
-      if (piece.conic) {
-        out[1] = piece.control;
-        out[2] = ring_end(rings[ref.ring], ref.piece);
-        return 3;
-      }
-      out[1] = ring_end(rings[ref.ring], ref.piece);
-      return 2;
-    };
+    // rings_cross(rings, true) over the same pairs; it stands when this pass
+    // is the last (no conic split). Once true, nothing more to look for.
+    bool cross_seen = crossing == nullptr;
+    // The boxes again in a compact array: most pairs the sweep meets are
+    // rejected by their boxes alone.
+    thread_local std::vector<Box> boxes;
+    boxes.resize(refs.size());
+    for (std::size_t k = 0; k < refs.size(); ++k) boxes[k] = refs[k].box;
     for (std::size_t i = 0; i < refs.size(); ++i) {
-      const Piece& pi = rings[refs[i].ring][refs[i].piece];
-      for (std::size_t j = i + 1; j < refs.size() && refs[j].box.min.x <= refs[i].box.max.x; ++j) {
-        const Piece& pj = rings[refs[j].ring][refs[j].piece];
-        if (!pi.conic && !pj.conic) continue;
+      const Box bi = boxes[i];
+      for (std::size_t j = i + 1; j < boxes.size() && boxes[j].min.x <= bi.max.x; ++j) {
+        // (Pieces with the same end points have overlapping boxes.)
+        if (!boxes_overlap(bi, boxes[j])) continue;
+        const HullRef& ri = refs[i];
+        const HullRef& rj = refs[j];
+        const bool ci = ri.n == 3, cj = rj.n == 3;
+        if (!ci && !cj) {
+          if (!cross_seen) cross_seen = lines_cross(ri.hull[0], ri.hull[1], rj.hull[0], rj.hull[1]);
+          continue;
+        }
+        const Vec2 ai = ri.hull[0], ei = ri.end(), aj = rj.hull[0], ej = rj.end();
+        const bool same_ends = (ai == aj && ei == ej) || (ai == ej && ei == aj);
+        // A conic and a piece with the same end points: their chords would
+        // coincide, rings_cross's answer is true.
+        cross_seen = cross_seen || same_ends;
         // Identical curves (duplicated contours) overlap at every depth;
         // splitting them is useless, the crossing resolver merges them.
-        if (pi.conic && pj.conic && pi.control == pj.control && pi.weight == pj.weight) {
-          const Vec2 ei = ring_end(rings[refs[i].ring], refs[i].piece), ej = ring_end(rings[refs[j].ring], refs[j].piece);
-          if ((pi.a == pj.a && ei == ej) || (pi.a == ej && ei == pj.a)) continue;
-        }
-        if (!boxes_overlap(refs[i].box, refs[j].box)) continue;
-        Vec2 hi[3], hj[3];
-        const int ni = hull_of(refs[i], hi), nj = hull_of(refs[j], hj);
-        if (!hulls_overlap(hi, ni, hj, nj)) continue;
+        if (same_ends && ci && cj && ri.hull[1] == rj.hull[1] && ri.weight == rj.weight) continue;
+        if (!hulls_overlap(ri.hull, ri.n, rj.hull, rj.n)) continue;
         // Subdividing a conic shrinks its hull towards the arc; lines stay.
-        if (pi.conic && pi.depth < tolerance::kMaxHullSubdivisionDepth) {
-          split_marks[mark_base[refs[i].ring] + refs[i].piece] = 1;
+        if (ci && ri.depth < tolerance::kMaxHullSubdivisionDepth) {
+          split_marks[ri.mark] = 1;
           any = true;
         }
-        if (pj.conic && pj.depth < tolerance::kMaxHullSubdivisionDepth) {
-          split_marks[mark_base[refs[j].ring] + refs[j].piece] = 1;
+        if (cj && rj.depth < tolerance::kMaxHullSubdivisionDepth) {
+          split_marks[rj.mark] = 1;
           any = true;
         }
         overlap_left = true;
       }
     }
-    if (!any) return !overlap_left;
+    if (!any) {
+      if (!overlap_left && crossing) *crossing = cross_seen;
+      return !overlap_left;
+    }
     for (std::size_t r = 0; r < rings.size(); ++r) {
       const char* marks = split_marks.data() + mark_base[r];
       if (std::find(marks, marks + rings[r].size(), char{1}) == marks + rings[r].size()) continue;  // nothing to split
@@ -541,52 +576,67 @@ bool ring_inside(const Ring& inner, const Ring& outer) {
   return false;  // every chord on the other ring: a duplicate, not nested
 }
 
-Ring reversed(const Ring& ring) {
-  Ring out;
-  out.reserve(ring.size());
-  for (std::size_t k = ring.size(); k-- > 0;) {
-    Piece p = ring[k];
-    p.a = ring_end(ring, k);
-    out.push_back(p);
-  }
-  return out;
+// Reverses the direction of a ring in place: piece k of the result is piece
+// n - 1 - k traversed backwards, so it starts where that piece ended.
+void reverse_ring(Ring& ring) {
+  const std::size_t n = ring.size();
+  if (n == 0) return;
+  std::reverse(ring.begin(), ring.end());
+  // Now ring[k] is the old piece n - 1 - k, whose end is the old piece
+  // n - k's start, i.e. the new ring[k - 1].a (cyclically): shift the starts.
+  const Vec2 last = ring[n - 1].a;
+  for (std::size_t k = n - 1; k > 0; --k) ring[k].a = ring[k - 1].a;
+  ring[0].a = last;
 }
 
 }  // namespace
 
 std::vector<Region> nest_rings(std::vector<Ring> rings) {
   const std::size_t n = rings.size();
-  std::vector<double> area(n);
-  std::vector<Box> box(n);
+  // Scratch reused across calls (no allocation per glyph once warm).
+  thread_local std::vector<double> area;
+  thread_local std::vector<Box> box;
+  area.resize(n);
+  box.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     area[i] = ring_area(rings[i]);
     box[i] = ring_box(rings[i]);
   }
-  // containers[i]: rings that contain ring i.
-  std::vector<std::vector<std::size_t>> containers(n);
+  // The rings that contain ring i: container_list[container_start[i] ..
+  // container_start[i + 1]).
+  thread_local std::vector<std::size_t> container_start, container_list;
+  container_start.assign(n + 1, 0);
+  container_list.clear();
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t j = 0; j < n; ++j) {
       if (i == j || !box_contains(box[j], box[i]) || std::fabs(area[j]) < std::fabs(area[i])) continue;
-      if (ring_inside(rings[i], rings[j])) containers[i].push_back(j);
+      if (ring_inside(rings[i], rings[j])) container_list.push_back(j);
     }
+    container_start[i + 1] = container_list.size();
   }
+  auto containers = [&](std::size_t i) {
+    return std::span<const std::size_t>(container_list.data() + container_start[i],
+                                        container_start[i + 1] - container_start[i]);
+  };
   // Nonzero rule: winding just outside ring i is the sum of the orientations
   // of the rings around it; just inside it adds its own orientation. The ring
   // bounds the fill only where exactly one of the two is non-zero.
   enum class Role { Drop, Outer, Hole };
-  std::vector<Role> role(n, Role::Drop);
+  thread_local std::vector<Role> role;
+  role.assign(n, Role::Drop);
   for (std::size_t i = 0; i < n; ++i) {
     int outside = 0;
-    for (std::size_t j : containers[i]) outside += area[j] > 0 ? 1 : -1;
+    for (std::size_t j : containers(i)) outside += area[j] > 0 ? 1 : -1;
     const int inside = outside + (area[i] > 0 ? 1 : -1);
     if ((outside != 0) == (inside != 0)) continue;
     role[i] = inside != 0 ? Role::Outer : Role::Hole;
     // Normalise: filled side on the left (outer counter-clockwise, holes clockwise).
     const bool ccw = area[i] > 0;
-    if ((role[i] == Role::Outer) != ccw) rings[i] = reversed(rings[i]);
+    if ((role[i] == Role::Outer) != ccw) reverse_ring(rings[i]);
   }
   std::vector<Region> regions;
-  std::vector<std::size_t> region_of(n, n);
+  thread_local std::vector<std::size_t> region_of;
+  region_of.assign(n, n);
   for (std::size_t i = 0; i < n; ++i) {
     if (role[i] != Role::Outer) continue;
     region_of[i] = regions.size();
@@ -596,7 +646,7 @@ std::vector<Region> nest_rings(std::vector<Ring> rings) {
     if (role[i] != Role::Hole) continue;
     // The innermost outer ring around a hole is its container.
     std::size_t best = n;
-    for (std::size_t j : containers[i]) {
+    for (std::size_t j : containers(i)) {
       if (role[j] == Role::Outer && (best == n || std::fabs(area[j]) < std::fabs(area[best]))) best = j;
     }
     if (best == n) continue;  // cannot happen for non-crossing rings
@@ -714,13 +764,18 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
   }
   std::vector<Ring> rings =
       has_cubic ? clean_rings(to_quadratic_outline(outline, options.cubic_tolerance)) : clean_rings(outline);
-  const bool separated = separate_hulls(rings);
+  bool crossing = false;
+  const bool separated = separate_hulls(rings, &crossing);
   // Crossing, overlapping or edge-sharing contours: resolve them into
-  // non-crossing rings of the nonzero fill first (skipped, after one sweep,
-  // for the usual glyph whose contours do not meet).
-  if (kResolveCrossingContours && rings_cross(rings, separated)) {
+  // non-crossing rings of the nonzero fill first (skipped for the usual
+  // glyph whose contours do not meet; separate_hulls's sweep already told).
+  // Pieces of separated, non-crossing rings meet only at common vertices,
+  // which lets ear_clip treat loops without repeated positions as simple.
+  bool simple_edges = separated && !crossing;
+  if (kResolveCrossingContours && (separated ? crossing : rings_cross(rings, false))) {
     rings = resolve_crossings(rings);
     separate_hulls(rings);
+    simple_edges = false;
   }
   std::vector<Region> regions = nest_rings(std::move(rings));
 
@@ -733,19 +788,26 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
   PointIndex index(2 * piece_count);
   mesh.boundary_lines.reserve(piece_count);
   mesh.curves.reserve(piece_count);
-  std::vector<EdgeKey> constrained;  // outline edges: never flipped (sorted below)
+  // Scratch reused across calls (no allocation per glyph once warm).
+  thread_local std::vector<EdgeKey> constrained;  // outline edges: never flipped (sorted below)
+  constrained.clear();
   constrained.reserve(2 * piece_count);
-  std::vector<std::array<Vec2, 3>> triangle_points;
+  thread_local std::vector<std::array<Vec2, 3>> triangle_points;
+  triangle_points.clear();
   triangle_points.reserve(2 * piece_count + 8);  // about two triangles per loop vertex
   for (const Region& region : regions) {
     auto polygonise = [&](const Ring& ring) {
       std::vector<Vec2> loop;
       loop.reserve(ring.size() * 2);
+      // Piece i starts where piece i - 1 ends: its index is carried over
+      // (the same lookups in the same order, minus the repeats).
+      std::uint32_t next_ia = ring.empty() ? 0 : index(ring[0].a);
       for (std::size_t i = 0; i < ring.size(); ++i) {
         const Piece& p = ring[i];
         const Vec2 a = p.a, b = ring_end(ring, i);
         loop.push_back(a);
-        const std::uint32_t ia = index(a), ib = index(b);
+        const std::uint32_t ia = next_ia, ib = index(b);
+        next_ia = ib;
         if (!p.conic) {
           mesh.boundary_lines.push_back({ia, ib});
           constrained.push_back(edge_key(ia, ib));
@@ -773,7 +835,7 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
     // Where loops touch at vertices, re-link them first so that each polygon
     // handed to the ear clipper has one filled sector per corner.
     for (PolygonLoops& polygon : relink_touching_loops(std::move(outer), std::move(holes))) {
-      ear_clip(bridge_holes(std::move(polygon.outer), std::move(polygon.holes)), triangle_points);
+      ear_clip(bridge_holes(std::move(polygon.outer), std::move(polygon.holes)), triangle_points, simple_edges);
     }
   }
   mesh.triangles.reserve(triangle_points.size());

@@ -401,23 +401,27 @@ bool rings_cross(const std::vector<Ring>& rings, bool hulls_separated) {
       if (hulls_separated) return false;
       return pieces_conflict(e, f);
     }
-    // Lines sharing one end point (consecutive pieces, mostly) conflict only
-    // when they run along each other: one exact orientation test.
-    Vec2 shared, p, q;
-    if (e.a == f.a) {
-      shared = e.a, p = e.b, q = f.b;
-    } else if (e.a == f.b) {
-      shared = e.a, p = e.b, q = f.a;
-    } else if (e.b == f.a) {
-      shared = e.b, p = e.a, q = f.b;
-    } else if (e.b == f.b) {
-      shared = e.b, p = e.a, q = f.a;
-    } else {
-      return segments_intersect(e.a, e.b, f.a, f.b);
-    }
-    if (p == q) return true;  // the same segment twice
-    return orient2d(shared, p, q) == 0 && dot(p - shared, q - shared) > 0.0;
+    return lines_cross(e.a, e.b, f.a, f.b);
   });
+}
+
+bool lines_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  // Lines sharing one end point (consecutive pieces, mostly) conflict only
+  // when they run along each other: one exact orientation test.
+  Vec2 shared, p, q;
+  if (a == c) {
+    shared = a, p = b, q = d;
+  } else if (a == d) {
+    shared = a, p = b, q = c;
+  } else if (b == c) {
+    shared = b, p = a, q = d;
+  } else if (b == d) {
+    shared = b, p = a, q = c;
+  } else {
+    return segments_intersect(a, b, c, d);
+  }
+  if (p == q) return true;  // the same segment twice
+  return orient2d(shared, p, q) == 0 && dot(p - shared, q - shared) > 0.0;
 }
 
 std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings) {

@@ -42,8 +42,10 @@ bool hulls_overlap(const Vec2* p, int np, const Vec2* q, int nq);
 
 // Subdivides conics until no conic hull overlaps another piece's hull, to at
 // most tolerance::kMaxHullSubdivisionDepth levels. Returns true when no conic
-// hull overlaps another piece's any more (identical conics aside).
-bool separate_hulls(std::vector<Ring>& rings);
+// hull overlaps another piece's any more (identical conics aside). Then, if
+// `crossing` is not null, it is set to rings_cross(rings, true), found in the
+// same sweep over the pieces (the usual glyph then needs no second sweep).
+bool separate_hulls(std::vector<Ring>& rings, bool* crossing = nullptr);
 
 // Position of p against the chord polygon of a ring (nonzero winding).
 Where point_in_ring(const Ring& ring, Vec2 p);
@@ -62,6 +64,10 @@ inline constexpr bool kResolveCrossingContours = true;
 // `hulls_separated`: separate_hulls reported success, so conic hulls need not
 // be tested again (only lines against lines and shared end points).
 bool rings_cross(const std::vector<Ring>& rings, bool hulls_separated);
+
+// rings_cross's test for two line pieces [a, b] and [c, d]: true when they
+// share a point other than one common end point.
+bool lines_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
 
 // Non-crossing rings, fill on the left (outer counter-clockwise, holes
 // clockwise), covering exactly the nonzero fill of `rings` (crossing conics

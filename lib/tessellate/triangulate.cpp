@@ -381,7 +381,7 @@ class LiveEdges {
 
 }  // namespace
 
-bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& triangles) {
+bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& triangles, bool simple_edges) {
   std::size_t n = loop.size();
   if (n < 3) return n == 0;
   if (n >= 0xffffffffu) return false;  // indices are 32-bit
@@ -396,15 +396,59 @@ bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& t
     next[i] = static_cast<std::uint32_t>(next_index(i, n));
   }
   std::size_t remaining = n;
-  bool tracking = false;  // `live` is filled after the first clean-up
+  // A simple loop (see the header): without repeated positions its edges
+  // meet only at consecutive vertices. Then an ear is a strictly convex
+  // corner whose closed triangle holds no other vertex that is not strictly
+  // convex (if any vertex is inside, a reflex or straight one is), so only
+  // those vertices, kept in `concave`, are looked at.
+  bool simple = false;
+  if (simple_edges) {
+    thread_local std::vector<std::pair<double, double>> sorted;
+    sorted.resize(n);
+    for (std::size_t i = 0; i < n; ++i) sorted[i] = {loop[i].x, loop[i].y};
+    std::sort(sorted.begin(), sorted.end());
+    simple = std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
+  }
+  thread_local std::vector<char> convex;            // simple loops: per vertex, strictly convex
+  thread_local std::vector<std::uint32_t> concave;  // simple loops: the live vertices that are not
+  thread_local std::vector<std::uint32_t> concave_slot;
+  constexpr std::uint32_t kNoSlot = 0xffffffffu;
+  auto update_corner = [&](std::uint32_t p) {
+    const bool c = orient2d(loop[prev[p]], loop[p], loop[next[p]]) > 0;
+    convex[p] = c;
+    if (!c && concave_slot[p] == kNoSlot) {
+      concave_slot[p] = static_cast<std::uint32_t>(concave.size());
+      concave.push_back(p);
+    } else if (c && concave_slot[p] != kNoSlot) {
+      const std::uint32_t k = concave_slot[p];
+      concave[k] = concave.back();
+      concave_slot[concave[k]] = k;
+      concave.pop_back();
+      concave_slot[p] = kNoSlot;
+    }
+  };
+  auto drop_corner = [&](std::uint32_t p) {
+    const std::uint32_t k = concave_slot[p];
+    if (k == kNoSlot) return;
+    concave[k] = concave.back();
+    concave_slot[concave[k]] = k;
+    concave.pop_back();
+    concave_slot[p] = kNoSlot;
+  };
+  bool tracking = false;  // `live` (or, for a simple loop, `concave`) is filled after the first clean-up
   auto unlink = [&](std::size_t i) {
     next[prev[i]] = next[i];
     prev[next[i]] = prev[i];
     --remaining;
-    if (tracking) {
-      live.erase(static_cast<std::uint32_t>(i));
-      live.set(prev[i], loop[prev[i]], loop[next[i]]);  // the edge that replaces i's two
+    if (!tracking) return;
+    if (simple) {
+      drop_corner(static_cast<std::uint32_t>(i));
+      update_corner(prev[i]);
+      update_corner(next[i]);
+      return;
     }
+    live.erase(static_cast<std::uint32_t>(i));
+    live.set(prev[i], loop[prev[i]], loop[next[i]]);  // the edge that replaces i's two
   };
   bool clean = true;
   // Consecutive repeats (possible after bridging) carry no area: drop them.
@@ -420,9 +464,31 @@ bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& t
   }
   {
     std::uint32_t p = static_cast<std::uint32_t>(start);
-    for (std::size_t k = 0; k < remaining; ++k, p = next[p]) live.set(p, loop[p], loop[next[p]]);
+    if (simple) {
+      convex.resize(n);
+      concave.clear();
+      concave_slot.assign(n, kNoSlot);
+      for (std::size_t k = 0; k < remaining; ++k, p = next[p]) update_corner(p);
+    } else {
+      for (std::size_t k = 0; k < remaining; ++k, p = next[p]) live.set(p, loop[p], loop[next[p]]);
+    }
     tracking = true;
   }
+
+  auto is_simple_ear = [&](std::size_t ia, std::size_t ib, std::size_t ic) {
+    if (!convex[ib]) return false;  // orient2d(a, b, c) <= 0
+    const Vec2 a = loop[ia], b = loop[ib], c = loop[ic];
+    const double min_x = std::min({a.x, b.x, c.x}), max_x = std::max({a.x, b.x, c.x});
+    const double min_y = std::min({a.y, b.y, c.y}), max_y = std::max({a.y, b.y, c.y});
+    for (const std::uint32_t p : concave) {
+      const Vec2 pp = loop[p];
+      if (pp.x < min_x || pp.x > max_x || pp.y < min_y || pp.y > max_y) continue;
+      if (p == ia || p == ic) continue;
+      // In the closed triangle (orient2d(a, b, c) > 0).
+      if (orient2d(a, b, pp) >= 0 && orient2d(b, c, pp) >= 0 && orient2d(c, a, pp) >= 0) return false;
+    }
+    return true;
+  };
 
   auto is_ear = [&](std::size_t ia, std::size_t ib, std::size_t ic) {
     const Vec2 a = loop[ia], b = loop[ib], c = loop[ic];
@@ -442,12 +508,15 @@ bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& t
     // The diagonal lies in the triangle's box, so edges and vertices outside
     // it are skipped without predicates.
     const Vec2 corners[3] = {a, b, c};
-    auto blocks = [&](std::size_t p) {
-      const Vec2 pp = loop[p], pq = loop[next[p]];
+    // An edge can only meet the diagonal inside the diagonal's own box (a
+    // subset of the triangle's): an exact test that skips most predicates.
+    const double ac_min_x = std::min(a.x, c.x), ac_max_x = std::max(a.x, c.x);
+    const double ac_min_y = std::min(a.y, c.y), ac_max_y = std::max(a.y, c.y);
+    auto blocks = [&](std::size_t p, const LiveEdges::Entry& e) {
+      const Vec2 pp = loop[p];
       const bool p_outside_box = pp.x < min_x || pp.x > max_x || pp.y < min_y || pp.y > max_y;
-      if (!(std::max(pp.x, pq.x) < min_x || std::min(pp.x, pq.x) > max_x || std::max(pp.y, pq.y) < min_y ||
-            std::min(pp.y, pq.y) > max_y) &&
-          bridge_blocked_by(a, c, pp, pq))
+      if (!(e.x1 < ac_min_x || e.x0 > ac_max_x || e.y1 < ac_min_y || e.y0 > ac_max_y) &&
+          bridge_blocked_by(a, c, pp, loop[next[p]]))
         return true;
       if (p_outside_box) return false;
       int corner = -1;
@@ -457,7 +526,9 @@ bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& t
       if (corner < 0) {
         // Any other vertex in the closed triangle blocks (strictness avoids
         // T-junctions and zero-area triangles).
-        return point_in_triangle(a, b, c, pp) != Where::Outside;
+        // point_in_triangle(a, b, c, pp) != Outside, with orient2d(a, b, c) > 0
+        // known from the top of is_ear.
+        return orient2d(a, b, pp) >= 0 && orient2d(b, c, pp) >= 0 && orient2d(c, a, pp) >= 0;
       }
       // A repeat of a corner (bridge or pinch vertex): its edges must not
       // enter the triangle from that corner.
@@ -477,7 +548,7 @@ bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& t
     for (const LiveEdges::Entry& e : live.entries()) {
       if (e.x1 < min_x || e.x0 > max_x || e.y1 < min_y || e.y0 > max_y) continue;
       if (e.p == ia || e.p == ib || e.p == ic) continue;
-      if (blocks(e.p)) return false;
+      if (blocks(e.p, e)) return false;
     }
     return true;
   };
@@ -486,7 +557,7 @@ bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& t
   std::size_t stall = 0;
   while (remaining > 3) {
     const std::size_t a = prev[cur], c = next[cur];
-    if (is_ear(a, cur, c)) {
+    if (simple ? is_simple_ear(a, cur, c) : is_ear(a, cur, c)) {
       triangles.push_back({loop[a], loop[cur], loop[c]});
       unlink(cur);
       // Closing a lobe at a repeated vertex leaves two copies side by side.
@@ -541,10 +612,12 @@ class EdgeTable {
     bool fixed = false;  // a constrained (outline) edge: never flipped
   };
 
-  explicit EdgeTable(std::size_t expected) {
+  // Empties the table for about `expected` edges, keeping its memory.
+  void reset(std::size_t expected) {
     std::size_t capacity = 16;
     while (capacity < 2 * expected + 16) capacity *= 2;
     slots_.assign(capacity, Faces{});
+    used_ = 0;
   }
 
   static std::uint64_t pack(EdgeKey k) { return (std::uint64_t{k.first} << 32) | k.second; }
@@ -601,8 +674,11 @@ class EdgeTable {
 
 void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std::uint32_t, 3>>& triangles,
                     const std::vector<EdgeKey>& constrained) {
-  EdgeTable edges(3 * triangles.size());
-  std::vector<EdgeKey> stack;
+  // Scratch reused across calls (no allocation per glyph once warm).
+  thread_local EdgeTable edges;
+  thread_local std::vector<EdgeKey> stack;
+  edges.reset(3 * triangles.size());
+  stack.clear();
   stack.reserve(3 * triangles.size());
   for (std::uint32_t t = 0; t < triangles.size(); ++t) {
     for (int k = 0; k < 3; ++k) {
@@ -615,8 +691,18 @@ void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std:
   }
   // Constrained edges are marked once in the table instead of being looked up
   // in `constrained` for every candidate popped from the stack.
+  // Those not in the mesh (possible after remove_folds or a fallback ear)
+  // are the only ones a flip could create: fixed edges never flip, so the
+  // others are never removed and re-created. Kept apart (sorted, usually
+  // empty) so that a new edge is looked up there instead of in all of them.
+  thread_local std::vector<EdgeKey> missing;
+  missing.clear();
   for (const EdgeKey& key : constrained) {
-    if (EdgeTable::Faces* e = edges.find(key)) e->fixed = true;
+    if (EdgeTable::Faces* e = edges.find(key)) {
+      e->fixed = true;
+    } else {
+      missing.push_back(key);
+    }
   }
   // Lawson's algorithm terminates with exact predicates; ours are not exact
   // (incircle_sign falls back to long double near zero), so the flip count is capped to guarantee an end.
@@ -633,16 +719,21 @@ void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std:
     }
     return false;
   };
+  // Returns the edge's entry (null if none).
   auto replace_face = [&](EdgeKey key, std::uint32_t from, std::uint32_t to) {
     EdgeTable::Faces* e = edges.find(key);
-    if (!e) return;
+    if (!e) return e;
     for (int k = 0; k < 2; ++k) {
       if (e->face[k] == from) {
         e->face[k] = to;
-        return;
+        break;
       }
     }
+    return e;
   };
+  // An edge that is fixed or not shared by two triangles stays so: popping
+  // it would do nothing, so it is not pushed.
+  auto flippable = [](const EdgeTable::Faces* e) { return e && e->count == 2 && !e->fixed; };
   while (!stack.empty() && flips_left > 0) {
     const EdgeKey key = stack.back();
     stack.pop_back();
@@ -667,13 +758,13 @@ void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std:
     new_edge.face[0] = t1;
     new_edge.face[1] = t2;
     new_edge.count = 2;
-    new_edge.fixed = std::binary_search(constrained.begin(), constrained.end(), cd);
-    replace_face(edge_key(a, d), t2, t1);
-    replace_face(edge_key(b, c), t1, t2);
+    new_edge.fixed = !missing.empty() && std::binary_search(missing.begin(), missing.end(), cd);
+    const bool push_ad = flippable(replace_face(edge_key(a, d), t2, t1));
+    const bool push_bc = flippable(replace_face(edge_key(b, c), t1, t2));
     --flips_left;
-    stack.push_back(edge_key(a, d));
+    if (push_ad) stack.push_back(edge_key(a, d));
     stack.push_back(edge_key(d, b));
-    stack.push_back(edge_key(b, c));
+    if (push_bc) stack.push_back(edge_key(b, c));
     stack.push_back(edge_key(c, a));
   }
 }

@@ -41,7 +41,13 @@ std::vector<PolygonLoops> relink_touching_loops(std::vector<Vec2> outer, std::ve
 // runs. Always terminates in O(n^2) ear tests per removed vertex at most; on an
 // invalid loop it falls back to best-effort ears (check_mesh reports the damage).
 // Returns false when a fallback was needed.
-bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& triangles);
+// `simple_edges`: the caller knows that the loop's edges meet only at
+// common vertices (for build_mesh: pieces of separated, non-crossing rings).
+// Such a loop without repeated positions is simple, and its ears are found
+// with the classic test alone (no vertex that is not strictly convex inside
+// the closed triangle), which gives the same answers as the general test.
+bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& triangles,
+              bool simple_edges = false);
 
 using EdgeKey = std::pair<std::uint32_t, std::uint32_t>;  // (min index, max index)
 inline EdgeKey edge_key(std::uint32_t a, std::uint32_t b) {
