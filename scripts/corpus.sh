@@ -34,7 +34,15 @@ runner="$build/tests/corpus_run"
 # One job per line: FILE|FACE|VARIATIONS
 list="$logs/jobs.txt"
 {
-  for f in /usr/share/fonts/truetype/noto/*.ttf; do echo "$f|0|"; done
+  # fonts-noto-core's own files: the directory also holds other packages'
+  # fonts (NotoColorEmoji.ttf from fonts-noto-color-emoji, bitmaps only).
+  if dpkg-query -L fonts-noto-core >/dev/null 2>&1; then
+    dpkg-query -L fonts-noto-core | grep -E '^/usr/share/fonts/truetype/noto/.*\.ttf$' | sort | while read -r f; do echo "$f|0|"; done
+  else
+    for f in /usr/share/fonts/truetype/noto/*.ttf; do
+      [ "$(basename "$f")" = NotoColorEmoji.ttf ] || echo "$f|0|"
+    done
+  fi
   echo "/usr/share/fonts/opentype/noto/NotoSansCJK-Regular.ttc|0|"
   for f in /usr/share/fonts/opentype/urw-base35/*.otf; do echo "$f|0|"; done
   for f in /usr/share/fonts/truetype/dejavu/*.ttf; do echo "$f|0|"; done
