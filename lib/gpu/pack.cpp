@@ -437,25 +437,22 @@ class Packer {
     // quality_bench full, 8/10/12/16/24 px edge: 0.0286/0.0250/0.0114/0.0104/
     // 0.0057 without, 0.0288/0.0211/0.0106/0.0093/0.0048 with.
     if (lines.size() < kMinKnownLines) {
-      std::array<std::array<std::uint32_t, 3>, 16> ring{};
-      std::array<std::uint32_t, 16> ring_index{};  // ring[r] is mesh_->triangles[ring_index[r]]
+      // Breadth-first over triangle indices (a few dozen per glyph, so a
+      // linear "seen" scan beats any set).
+      std::array<std::uint32_t, 16> ring{};
       std::size_t ring_count = 0, frontier_begin = 0;
-      ring_index[ring_count] = t;
-      ring[ring_count++] = tri;
+      ring[ring_count++] = t;
       for (int step = 0; step < kLineSearchSteps; ++step) {
         const std::size_t frontier_end = ring_count;
         for (std::size_t r = frontier_begin; r < frontier_end; ++r) {
-          const std::uint32_t cur = ring_index[r];
+          const std::uint32_t cur = ring[r];
           for (std::uint32_t e = 0; e < 3; ++e) {
             if (edge_lines_[cur][e] >= 0) continue;
             for (const std::uint32_t* it = across_.begin(3 * cur + e); it != across_.end(3 * cur + e); ++it) {
-              const auto& other = mesh_->triangles[*it];
+              const std::uint32_t other = *it;
               std::size_t q = 0;
               while (q < ring_count && ring[q] != other) ++q;
-              if (q == ring_count && ring_count < ring.size()) {  // not seen yet
-                ring_index[ring_count] = *it;
-                ring[ring_count++] = other;
-              }
+              if (q == ring_count && ring_count < ring.size()) ring[ring_count++] = other;  // not seen yet
             }
           }
         }
@@ -465,7 +462,7 @@ class Packer {
       std::size_t found_count = 0;
       for (std::size_t r = 1; r < ring_count; ++r) {
         for (int k = 0; k < 3; ++k) {
-          const int line = edge_lines_[ring_index[r]][static_cast<std::size_t>(k)];
+          const int line = edge_lines_[ring[r]][static_cast<std::size_t>(k)];
           if (line < 0 || lines.contains(line) || found_count == found.size()) continue;
           bool dup = false;
           for (std::size_t q = 0; q < found_count; ++q) dup = dup || found[q].second == line;
