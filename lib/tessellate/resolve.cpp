@@ -76,10 +76,9 @@ bool same_curve(const Edge& e, const Edge& f) {
 
 // Two lines share a point other than one common end point (a crossing, a
 // T-junction, a collinear overlap or a duplicate).
-bool lines_conflict(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  if (!segments_intersect(a, b, c, d)) return false;
-  if ((a == c && b == d) || (a == d && b == c)) return true;
-  Vec2 shared, p, q;  // the common end point and the two other ends
+// When segments a-b and c-d share an end point: that point and the two
+// other ends.
+bool shared_end(Vec2 a, Vec2 b, Vec2 c, Vec2 d, Vec2& shared, Vec2& p, Vec2& q) {
   if (a == c) {
     shared = a, p = b, q = d;
   } else if (a == d) {
@@ -89,8 +88,16 @@ bool lines_conflict(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   } else if (b == d) {
     shared = b, p = a, q = c;
   } else {
-    return true;
+    return false;
   }
+  return true;
+}
+
+bool lines_conflict(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  if (!segments_intersect(a, b, c, d)) return false;
+  if ((a == c && b == d) || (a == d && b == c)) return true;
+  Vec2 shared, p, q;  // the common end point and the two other ends
+  if (!shared_end(a, b, c, d, shared, p, q)) return true;
   // Sharing an end, they meet elsewhere only when one runs along the other.
   return point_on_segment(shared, p, q) || point_on_segment(shared, q, p);
 }
@@ -409,17 +416,7 @@ bool lines_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   // Lines sharing one end point (consecutive pieces, mostly) conflict only
   // when they run along each other: one exact orientation test.
   Vec2 shared, p, q;
-  if (a == c) {
-    shared = a, p = b, q = d;
-  } else if (a == d) {
-    shared = a, p = b, q = c;
-  } else if (b == c) {
-    shared = b, p = a, q = d;
-  } else if (b == d) {
-    shared = b, p = a, q = c;
-  } else {
-    return segments_intersect(a, b, c, d);
-  }
+  if (!shared_end(a, b, c, d, shared, p, q)) return segments_intersect(a, b, c, d);
   if (p == q) return true;  // the same segment twice
   return orient2d(shared, p, q) == 0 && dot(p - shared, q - shared) > 0.0;
 }
