@@ -8,6 +8,8 @@ packages=(
   build-essential cmake pkg-config
   # fonts and text: outlines, shaping, bidi, line breaking, fallback
   libfreetype-dev libharfbuzz-dev libfribidi-dev libunibreak-dev libfontconfig-dev
+  # Thai word boundaries (a dictionary; UAX #14 leaves them to one)
+  libthai-dev
   # Unicode Character Database: the line break class table is generated from it at build time,
   # and the conformance tests read its test files
   unicode-data

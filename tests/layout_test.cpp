@@ -132,8 +132,9 @@ TEST(Layout, DevanagariShapesConjuncts) {
 
 TEST(Layout, ThaiWrapsWithinWidth) {
   FontCollection fonts;
-  // Thai has no spaces between words; libunibreak 1.1 has no dictionary
-  // (class SA resolves to AL), so long runs break between grapheme clusters.
+  // Thai has no spaces between words: UAX #14 resolves its class SA to AL
+  // and leaves the word breaks to a dictionary (libthai's, as in Pango).
+  // "ภาษา|ไทย|เป็น|ภาษา|ที่|สวย|งาม มาก": lines start at word boundaries only.
   const std::string text =
       "\u0E20\u0E32\u0E29\u0E32\u0E44\u0E17\u0E22\u0E40\u0E1B\u0E47\u0E19\u0E20\u0E32\u0E29\u0E32\u0E17\u0E35\u0E48"
       "\u0E2A\u0E27\u0E22\u0E07\u0E32\u0E21 \u0E21\u0E32\u0E01";
@@ -144,10 +145,17 @@ TEST(Layout, ThaiWrapsWithinWidth) {
     for (const GlyphRun& r : l.runs)
       for (const PositionedGlyph& g : r.glyphs) EXPECT_NE(g.id, 0u);
   }
-  // No line starts with a combining vowel or tone mark.
+  // No line starts with a combining vowel or tone mark, and each starts a
+  // word (code point indices of the word starts above).
   const auto starts = grapheme_starts(detail::decode_utf8(text));
   const auto idx = cp_index_of_bytes(text);
-  for (const LayoutLine& l : p.lines()) EXPECT_TRUE(starts[idx[l.start]]) << l.start;
+  const std::set<std::size_t> words = {0, 4, 7, 11, 15, 18, 21, 25};
+  for (const LayoutLine& l : p.lines()) {
+    EXPECT_TRUE(starts[idx[l.start]]) << l.start;
+    EXPECT_TRUE(words.count(idx[l.start])) << "line starts inside a word at code point " << idx[l.start];
+  }
+  // Narrow enough that the run without spaces must break inside it.
+  EXPECT_GE(p.lines().size(), 3u);
 }
 
 TEST(Layout, CjkFallbackThroughFontconfigAndBreaksBetweenIdeographs) {

@@ -141,6 +141,7 @@ struct ParagraphBuilder {
   BidiParagraph bidi;
   std::vector<bool> grapheme;
   std::vector<BreakAction> breaks;
+  std::vector<bool> dictionary_done;  // per code point: Thai dictionary breaks added (lazily)
   std::vector<Item> items;
   std::vector<std::size_t> item_of;
   std::vector<double> advance;  // px per code point in logical order (incl. spacing)
@@ -692,6 +693,8 @@ struct ParagraphBuilder {
     grapheme = grapheme_starts(para);
     const std::string& lang = resolved[n ? style_of[p0] : 0].language_tag;
     breaks = line_breaks(para, lang);
+    // Thai word breaks are added lazily, where a line must end (see below).
+    dictionary_done.assign(n, false);
     const std::size_t content_end = paragraph_content_end();
     if (content_end == 0) {
       // An empty paragraph is one empty line.
@@ -709,26 +712,38 @@ struct ParagraphBuilder {
     while (a < content_end && !stop) {
       const double indent = first ? pstyle.first_line_indent : 0.0;
       const double avail = wrap ? pstyle.width - indent : std::numeric_limits<double>::infinity();
-      // Greedy: the last opportunity where the line still fits.
+      // Greedy: the last opportunity where the line still fits. The line
+      // ends somewhere in (best, overflow]; Thai runs there get their
+      // dictionary word breaks, and the line is measured again.
       std::size_t best = 0;
       bool best_mandatory = false;
-      double x = indent, visible = indent;
-      for (std::size_t i = a; i < content_end; ++i) {
-        x += para[i] == U'\t' ? tab_advance(x, style_of[p0 + i]) : advance[i];
-        if (!is_whitespace(para[i])) visible = x;
-        const bool at_end = i + 1 == content_end;
-        const BreakAction action = at_end ? BreakAction::Mandatory : breaks[i];
-        if (action == BreakAction::None) continue;
-        double w = visible - indent;
-        if (para[i] == 0xAD && !at_end) w += hyphen_width(i);
-        if (w <= avail + kEpsilon || best == 0) {
-          if (w <= avail + kEpsilon) {
-            best = i + 1;
-            best_mandatory = action == BreakAction::Mandatory;
+      for (bool measure = true; measure;) {
+        best = 0;
+        best_mandatory = false;
+        std::size_t overflow = content_end;  // where the line stopped fitting
+        double x = indent, visible = indent;
+        for (std::size_t i = a; i < content_end; ++i) {
+          x += para[i] == U'\t' ? tab_advance(x, style_of[p0 + i]) : advance[i];
+          if (!is_whitespace(para[i])) visible = x;
+          const bool at_end = i + 1 == content_end;
+          const BreakAction action = at_end ? BreakAction::Mandatory : breaks[i];
+          if (action == BreakAction::None) continue;
+          double w = visible - indent;
+          if (para[i] == 0xAD && !at_end) w += hyphen_width(i);
+          if (w <= avail + kEpsilon || best == 0) {
+            if (w <= avail + kEpsilon) {
+              best = i + 1;
+              best_mandatory = action == BreakAction::Mandatory;
+            }
+            if (action == BreakAction::Mandatory) break;
           }
-          if (action == BreakAction::Mandatory) break;
+          if (w > avail + kEpsilon) {
+            overflow = i;
+            break;
+          }
         }
-        if (w > avail + kEpsilon) break;
+        measure = wrap && overflow < content_end &&
+                  add_dictionary_breaks(para, breaks, best > a ? best : a, overflow + 1, dictionary_done);
       }
       if (best == 0) {
         // Nothing fits: break the first word between grapheme clusters

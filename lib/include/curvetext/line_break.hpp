@@ -24,6 +24,23 @@ enum class BreakAction : std::uint8_t {
 // 47, may be empty) selects libunibreak's class tailorings (e.g. "de", "zh", "ja").
 std::vector<BreakAction> line_breaks(std::u32string_view text, std::string_view language = {});
 
+// Adds, as Allowed where `breaks` (line_breaks() of the same text) has None,
+// the word boundaries inside runs of Thai letters that libthai's dictionary
+// finds. UAX #14 leaves breaks inside class SA (Thai, Lao, Khmer, Myanmar...)
+// to a dictionary and resolves SA to AL without one, which is what
+// line_breaks() does (and what LineBreakTest expects). Only Thai has a
+// dictionary here; the other SA scripts still break at spaces only.
+void add_dictionary_breaks(std::u32string_view text, std::vector<BreakAction>& breaks);
+
+// The same for the Thai runs that reach into [from, to) only, skipping those
+// already marked in `done` (one flag per code point; the runs handled here are
+// marked). Returns true when a break was added. Line filling calls it only for
+// the text between the last break that fits and the first that does not: a
+// run lying wholly inside a line needs no word breaks, and the dictionary
+// lookup is most of the time spent on Thai text.
+bool add_dictionary_breaks(std::u32string_view text, std::vector<BreakAction>& breaks, std::size_t from,
+                           std::size_t to, std::vector<bool>& done);
+
 // One flag per code point: true where a grapheme cluster starts. Covers the
 // rules that matter for carets: CR LF, combining marks and spacing marks,
 // ZWJ, variation selectors, emoji modifiers, regional indicator pairs and
