@@ -31,6 +31,8 @@ namespace {
 constexpr std::size_t kMinKnownLines = 2;
 constexpr int kLineSearchSteps = 3;
 
+constexpr std::uint32_t kNoTriangle = 0xffffffffu;
+
 Vec2 left_normal(Vec2 d) { return Vec2{-d.y, d.x}; }
 
 // Signed distance to a boundary line, positive on the filled (left) side.
@@ -116,10 +118,6 @@ class Packer {
                   6 * mesh_->boundary_lines.size());
     prepare_lines();
     prepare_curve_edges();
-    triangles_at_.build(mesh_->points.size(), [&](auto emit) {
-      for (std::size_t t = 0; t < mesh_->triangles.size(); ++t)
-        for (std::uint32_t v : mesh_->triangles[t]) emit(v, static_cast<std::uint32_t>(t));
-    });
     prepare_triangle_edges();
     triangle_lines_.resize(mesh_->triangles.size());
     for (std::size_t t = 0; t < mesh_->triangles.size(); ++t) {
@@ -387,29 +385,38 @@ class Packer {
   // `edge_lines`: line_between() of the edges (0, 1), (1, 2), (2, 0).
   // Per triangle edge (k: tri[k] -> tri[k + 1]), computed once per mesh:
   // the boundary line along it (line_between, or -1) and, for edges that are
-  // not boundary lines, the triangles holding both its ends, in the order
-  // triangles_at_ lists them (the triangle itself among them).
+  // not boundary lines, the triangle across it (kNoTriangle if none; in a
+  // triangulation two triangles share an inner edge, and were there more,
+  // the next one by index is taken). Sorting the inner edges by their end
+  // points pairs them up.
   void prepare_triangle_edges() {
     const auto& tris = mesh_->triangles;
     edge_lines_.resize(tris.size());
+    across_.assign(tris.size(), {kNoTriangle, kNoTriangle, kNoTriangle});
     seen_.assign(tris.size(), 0);
     stamp_ = 0;
+    inner_edges_.clear();
     for (std::size_t t = 0; t < tris.size(); ++t) {
       const auto& tri = tris[t];
       edge_lines_[t] = {line_between(tri[0], tri[1]), line_between(tri[1], tri[2]), line_between(tri[2], tri[0])};
-    }
-    across_.build(3 * tris.size(), [&](auto emit) {
-      for (std::size_t t = 0; t < tris.size(); ++t) {
-        for (std::size_t k = 0; k < 3; ++k) {
-          if (edge_lines_[t][k] >= 0) continue;
-          const std::uint32_t a = tris[t][k], b = tris[t][(k + 1) % 3];
-          for (const std::uint32_t* it = triangles_at_.begin(a); it != triangles_at_.end(a); ++it) {
-            const auto& other = tris[*it];
-            if (std::find(other.begin(), other.end(), b) != other.end()) emit(static_cast<std::uint32_t>(3 * t + k), *it);
-          }
-        }
+      for (std::uint32_t k = 0; k < 3; ++k) {
+        if (edge_lines_[t][k] >= 0) continue;
+        const std::uint32_t a = tri[k], b = tri[(k + 1) % 3];
+        const std::uint64_t key = (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
+        inner_edges_.emplace_back(key, static_cast<std::uint32_t>(3 * t + k));
       }
-    });
+    }
+    std::sort(inner_edges_.begin(), inner_edges_.end());
+    for (std::size_t i = 0; i < inner_edges_.size();) {
+      std::size_t j = i + 1;
+      while (j < inner_edges_.size() && inner_edges_[j].first == inner_edges_[i].first) ++j;
+      for (std::size_t q = i; q < j; ++q) {
+        const std::uint32_t half = inner_edges_[q].second;
+        const std::uint32_t other = inner_edges_[q + 1 < j ? q + 1 : i].second;
+        if (other != half) across_[half / 3][half % 3] = other / 3;
+      }
+      i = j;
+    }
   }
 
   IndexList interior_lines(std::uint32_t t) const {
@@ -452,12 +459,10 @@ class Packer {
           const std::uint32_t cur = ring[r];
           for (std::uint32_t e = 0; e < 3; ++e) {
             if (edge_lines_[cur][e] >= 0) continue;
-            for (const std::uint32_t* it = across_.begin(3 * cur + e); it != across_.end(3 * cur + e); ++it) {
-              const std::uint32_t other = *it;
-              if (seen_[other] != stamp && ring_count < ring.size()) {
-                seen_[other] = stamp;
-                ring[ring_count++] = other;
-              }
+            const std::uint32_t other = across_[cur][e];
+            if (other != kNoTriangle && seen_[other] != stamp && ring_count < ring.size()) {
+              seen_[other] = stamp;
+              ring[ring_count++] = other;
             }
           }
         }
@@ -893,11 +898,11 @@ class Packer {
   VertexRows<int> lines_from_;             // per point: boundary lines starting there
   // Per lower vertex of a curve hull edge: (upper vertex, edge).
   VertexRows<std::pair<std::uint32_t, CurveEdge>> curve_edges_;
-  VertexRows<std::uint32_t> triangles_at_;  // per point: interior triangles with it as a vertex
   std::vector<std::array<int, 3>> edge_lines_;  // per triangle edge: line_between()
   mutable std::vector<std::uint32_t> seen_;  // per triangle: interior_lines' search stamp
   mutable std::uint32_t stamp_ = 0;
-  VertexRows<std::uint32_t> across_;        // per triangle edge (3 t + k): see prepare_triangle_edges
+  std::vector<std::array<std::uint32_t, 3>> across_;  // per triangle edge: see prepare_triangle_edges
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> inner_edges_;  // scratch of prepare_triangle_edges
   VertexRows<int> curves_at_;              // per point: curves whose hull has it as a vertex
   std::vector<Bary> barys_;                // per curve
   std::vector<char> bary_ok_;              // per curve: hull not degenerate
