@@ -65,6 +65,28 @@ void fold_line(inout float cov, inout vec2 nacc, float c) {
   fold(cov, nacc, boxcov(c / len, g / len), g / len);
 }
 
+// Folds in the two sides of a reflex corner (the a_fade pair of an interior
+// triangle flagged kUnionFadeFlag, see vertex_format.hpp): the shape there is
+// the union of both half-planes, so the box's outside is the intersection of
+// the two outsides, estimated as fold() estimates intersections; the union's
+// normal for later folds is each side's, weighted by the outside it cuts off.
+void fold_union(inout float cov, inout vec2 nacc, float c0, float c1) {
+  vec2 g0 = vec2(dFdx(c0), dFdy(c0));
+  vec2 g1 = vec2(dFdx(c1), dFdy(c1));
+  float l0 = length(g0);
+  float l1 = length(g1);
+  if (l0 < 1e-12 || l1 < 1e-12) return;
+  vec2 n0 = g0 / l0;
+  vec2 n1 = g1 / l1;
+  float o0 = 1.0 - boxcov(c0 / l0, n0);
+  float o1 = 1.0 - boxcov(c1 / l1, n1);
+  float o = o0;
+  vec2 no = -n0;
+  fold(o, no, o1, -n1);
+  vec2 nb = o0 * n0 + o1 * n1;
+  fold(cov, nacc, 1.0 - o, length(nb) > 1e-6 ? normalize(nb) : n0);
+}
+
 // Signed distance in pixels to the exact conic F = tau1^2 - 4 w^2 tau0 tau2
 // (positive on the filled side s) and its unit normal towards the filled
 // side. `mirror` replaces tau1^2 by tau1*|tau1| (see the curved triangles).
@@ -293,11 +315,16 @@ void main() {
       if (chord_px >= kThirdCurveMinChordPx) fold_near_curve(coverage, nacc, v_fade.x, v_fade.y, v_tau.z, code_c);
     }
   }
-  // Every kind but 5: the far side of a feature thinner than a pixel, or a
-  // corner's other line (see a_fade in vertex_format.hpp); full AA only.
+  // Every kind but 5: the far side of a feature thinner than a pixel, a
+  // corner's other line, or a reflex corner's two sides (see a_fade in
+  // vertex_format.hpp); full AA only.
   if (u_aa == 2 && kind < 4.5) {
-    fold_line(coverage, nacc, v_fade.x);
-    fold_line(coverage, nacc, v_fade.y);
+    if (v_info.x - kind > 0.125) {  // kUnionFadeFlag
+      fold_union(coverage, nacc, v_fade.x, v_fade.y);
+    } else {
+      fold_line(coverage, nacc, v_fade.x);
+      fold_line(coverage, nacc, v_fade.y);
+    }
   }
   if (coverage <= 0.0) {
     // Debug (paper Figure 1): what a curved triangle throws away.

@@ -589,23 +589,68 @@ class Packer {
     const std::size_t coef_slots = curve_count >= 2 ? 2 : 4;
     std::array<int, 4> slots{-1, -1, -1, -1};
     IndexList fade;
+    // A reflex corner at one (and only one) vertex, whose sides this
+    // triangle does not know otherwise: the shape there is the union of the
+    // two sides' half-planes (the triangle lies in the cone of the corner's
+    // interior angle), and pixels centred in the triangle near the corner
+    // need both. The pair takes the a_fade slots with kUnionFadeFlag, and the
+    // shader folds in the union. quality_bench full: pixels off by > 0.15 at
+    // 24-384 px 344 -> 312, edge error within 0.0005 or better at every size
+    // (taking the pair also where the triangle knew a side as a line made the
+    // 10 px edge worse, 0.0211 -> 0.0219: there it had folded it better).
+    std::array<int, 2> pair{-1, -1};
+    if (curve_count < 3) {
+      int reflex = 0;
+      std::array<int, 2> candidate{};
+      for (std::uint32_t vertex : tri) {
+        std::array<int, 2> c{};
+        if (reflex_pair(vertex, c)) {
+          ++reflex;
+          candidate = c;
+        }
+      }
+      if (reflex == 1 && !lines.contains(candidate[0]) && !lines.contains(candidate[1]) &&
+          lines.size() <= coef_slots)
+        pair = candidate;
+    }
+    std::size_t used = 0;
     for (std::size_t k = 0; k < lines.size(); ++k) {
-      if (k < coef_slots) slots[k] = lines[k];
+      if (pair[0] >= 0 && (lines[k] == pair[0] || lines[k] == pair[1])) continue;
+      if (used < coef_slots) slots[used++] = lines[k];
       else if (curve_count < 3) fade.push_back(lines[k]);
+    }
+    if (pair[0] >= 0) {
+      fade = IndexList{};
+      fade.push_back(pair[0]);
+      fade.push_back(pair[1]);
     }
     const int kind = curve_count == 3 ? kNextToThreeCurves
                      : curve_count == 2 ? kNextToTwoCurves
                      : curve_count == 1 ? kNextToCurve
-                     : !lines.empty()   ? kEdge
-                                        : kSolid;
+                     : !lines.empty() || pair[0] >= 0 ? kEdge
+                                                       : kSolid;
     for (int k = 0; k < 3; ++k) {
       const Vec2 x = p[static_cast<std::size_t>(k)];
       Vertex v = make(x, Vec2{}, kind);
       if (kind != kSolid) set_slots(v, x, Vec2{}, slots);
       set_fade(v, x, Vec2{}, fade);
       if (curve_count > 0) set_near_curves(v, x, near_curves, curve_count);
+      if (pair[0] >= 0) v.info[0] += kUnionFadeFlag;
       out_->push_back(v);
     }
+  }
+
+  // The two lines of a reflex corner at v (arriving, leaving), or false.
+  bool reflex_pair(std::uint32_t v, std::array<int, 2>& pair) const {
+    const Corner& c = corners_[v];
+    if (c.count_in != 1 || c.count_out != 1 || c.in == c.out) return false;
+    if (lines_[static_cast<std::size_t>(c.in)].n == Vec2{} || lines_[static_cast<std::size_t>(c.out)].n == Vec2{})
+      return false;
+    const auto& in = mesh_->boundary_lines[static_cast<std::size_t>(c.in)];
+    const auto& out = mesh_->boundary_lines[static_cast<std::size_t>(c.out)];
+    if (!(cross(pt(in[1]) - pt(in[0]), pt(out[1]) - pt(out[0])) < 0)) return false;
+    pair = {c.in, c.out};
+    return true;
   }
 
   // Lines a curved triangle and its fringes fade by: those of the interior

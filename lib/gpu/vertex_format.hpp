@@ -70,6 +70,11 @@ enum VertexKind : int { kSolid = 0, kEdge = 1, kCurve = 2, kNextToCurve = 3, kNe
 // Which edge of a curve's control triangle an interior triangle shares.
 enum SharedCurveEdge : int { kChord = 0, kLegFromP0 = 1, kLegToP2 = 2 };
 
+// Added to a_info.x (the kind) of an interior triangle (kinds 0-4) whose two
+// a_fade lines are the sides of a reflex corner at one of its vertices: the
+// shape there is the union of their half-planes (shaders: fold_union).
+inline constexpr float kUnionFadeFlag = 0.25f;
+
 // A constant distance far inside: its screen gradient is 0, which the shader
 // reads as "no edge in this slot".
 inline constexpr float kUnusedDistance = 1e6f;
