@@ -602,15 +602,18 @@ class Packer {
     if (curve_count < 3) {
       int reflex = 0;
       std::array<int, 2> candidate{};
+      std::uint32_t corner = 0;
       for (std::uint32_t vertex : tri) {
         std::array<int, 2> c{};
         if (reflex_pair(vertex, c)) {
           ++reflex;
           candidate = c;
+          corner = vertex;
         }
       }
       if (reflex == 1 && !lines.contains(candidate[0]) && !lines.contains(candidate[1]) &&
-          lines.size() <= coef_slots)
+          lines.size() <= coef_slots && short_of_far_end(candidate[0], corner, p) &&
+          short_of_far_end(candidate[1], corner, p))
         pair = candidate;
     }
     std::size_t used = 0;
@@ -638,6 +641,21 @@ class Packer {
       if (pair[0] >= 0) v.info[0] += kUnionFadeFlag;
       out_->push_back(v);
     }
+  }
+
+  // True when no point of `p` projects past the end of `line` away from
+  // `corner` (its other end): beyond that end the outline may turn back, and
+  // the union of a reflex corner's sides would cut the shape there (a thin
+  // CJK stroke past the far end of a corner's side drew a line of pixels 0.34
+  // too light). Past the corner itself the other side covers.
+  bool short_of_far_end(int line, std::uint32_t corner, const std::array<Vec2, 3>& p) const {
+    const auto& bl = mesh_->boundary_lines[static_cast<std::size_t>(line)];
+    const Vec2 c = pt(corner), far = pt(bl[0] == corner ? bl[1] : bl[0]);
+    const Vec2 d = far - c;
+    const LineSlab& l = slabs_[static_cast<std::size_t>(line)];
+    for (const Vec2& x : p)
+      if (dot(x - c, d) > l.len2 + l.slack) return false;
+    return true;
   }
 
   // The two lines of a reflex corner at v (arriving, leaving), or false.
