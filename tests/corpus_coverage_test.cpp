@@ -23,19 +23,13 @@
 #include "support/coverage.hpp"
 #include "support/glyph_corpus.hpp"
 #include "support/union_coverage.hpp"
+#include "support/gpu.hpp"
 
 namespace curvetext {
 namespace {
 
-// The GL context must exist before any DrawBatch uploads.
-struct Gpu {
-  HeadlessContext context = HeadlessContext::create();
-  Renderer renderer;
-};
-Gpu& gpu() {
-  static std::unique_ptr<Gpu> instance = std::make_unique<Gpu>();
-  return *instance;
-}
+using test::Gpu;
+using test::gpu;
 
 struct Subset {
   const char* name;

@@ -20,6 +20,7 @@
 #include "support/fonts.hpp"
 #include "support/layout_support.hpp"
 #include "support/union_coverage.hpp"
+#include "support/gpu.hpp"
 
 namespace curvetext {
 namespace {
@@ -34,15 +35,7 @@ constexpr double kInkLimit = 0.03;
 // A paragraph moved by this much must fail the same bounds (the control).
 constexpr double kControlShiftPx = 0.5;
 
-struct Gpu {
-  HeadlessContext context = HeadlessContext::create();
-  Renderer renderer;
-  GlyphCache cache;
-};
-Gpu& gpu() {
-  static std::unique_ptr<Gpu> instance = std::make_unique<Gpu>();
-  return *instance;
-}
+using test::gpu;
 
 // Every glyph's outline in pixel space: origin (margin + x, margin + y), y down.
 Outline paragraph_outline(const Paragraph& p, double margin, double shift_x = 0.0) {

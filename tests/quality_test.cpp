@@ -11,18 +11,12 @@
 #include "curvetext/headless.hpp"
 #include "curvetext/renderer.hpp"
 #include "curvetext/shapes.hpp"
+#include "support/gpu.hpp"
 
 namespace curvetext {
 namespace {
 
-struct Gpu {
-  HeadlessContext context = HeadlessContext::create();
-  Renderer renderer;
-};
-Gpu& gpu() {
-  static std::unique_ptr<Gpu> instance = std::make_unique<Gpu>();
-  return *instance;
-}
+using test::gpu;
 
 struct Rgba {
   int r, g, b, a;

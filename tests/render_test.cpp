@@ -21,20 +21,13 @@
 #include "curvetext/text_image.hpp"
 #include "support/coverage.hpp"
 #include "support/fonts.hpp"
+#include "support/gpu.hpp"
 
 namespace curvetext {
 namespace {
 
-// One GL context and renderer for the whole program.
-struct Gpu {
-  HeadlessContext context = HeadlessContext::create();
-  Renderer renderer;
-  GlyphCache cache;
-};
-Gpu& gpu() {
-  static std::unique_ptr<Gpu> instance = std::make_unique<Gpu>();
-  return *instance;
-}
+using test::Gpu;
+using test::gpu;
 
 using test::line_outline;
 

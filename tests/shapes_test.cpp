@@ -20,6 +20,7 @@
 #include "shapes/json.hpp"
 #include "support/coverage.hpp"
 #include "support/union_coverage.hpp"
+#include "support/gpu.hpp"
 
 namespace curvetext {
 namespace {
@@ -553,14 +554,8 @@ TEST(EvenOdd, BadInput) {
 
 // --- Rendering against analytic coverage ------------------------------------------
 
-struct Gpu {
-  HeadlessContext context = HeadlessContext::create();
-  Renderer renderer;
-};
-Gpu& gpu() {
-  static std::unique_ptr<Gpu> instance = std::make_unique<Gpu>();
-  return *instance;
-}
+using test::Gpu;
+using test::gpu;
 
 test::Coverage draw(ShapeDocument doc, const ShapeImageLayout& layout) {
   for (Shape& s : doc.shapes) s.color = Color{0, 0, 0, 1};

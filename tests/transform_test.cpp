@@ -19,19 +19,13 @@
 #include "support/coverage.hpp"
 #include "support/fonts.hpp"
 #include "support/union_coverage.hpp"
+#include "support/gpu.hpp"
 
 namespace curvetext {
 namespace {
 
-struct Gpu {
-  HeadlessContext context = HeadlessContext::create();
-  Renderer renderer;
-  GlyphCache cache;
-};
-Gpu& gpu() {
-  static std::unique_ptr<Gpu> instance = std::make_unique<Gpu>();
-  return *instance;
-}
+using test::Gpu;
+using test::gpu;
 
 using test::transform_outline;
 
