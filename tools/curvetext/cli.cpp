@@ -1,8 +1,11 @@
 #include "cli.hpp"
 
 #include <charconv>
+#include <fstream>
+#include <sstream>
 
 #include "curvetext/default_font.hpp"
+#include "curvetext/error.hpp"
 
 #ifndef CURVETEXT_BUILD_FONT_DIR
 #define CURVETEXT_BUILD_FONT_DIR ""
@@ -24,6 +27,17 @@ int parse_int(std::string_view option, std::string_view text) {
   if (ec != std::errc() || ptr != text.data() + text.size())
     throw UsageError{std::string(option) + " needs a whole number, got '" + std::string(text) + "'"};
   return value;
+}
+
+std::string read_text_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(ErrorCode::Io, "cannot read text file " + path);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  std::string text = ss.str();
+  if (!text.empty() && text.back() == '\n') text.pop_back();
+  if (!text.empty() && text.back() == '\r') text.pop_back();
+  return text;
 }
 
 bool FontChoice::parse(Args& args) {

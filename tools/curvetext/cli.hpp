@@ -18,6 +18,10 @@ struct UsageError {
 double parse_number(std::string_view option, std::string_view text);
 int parse_int(std::string_view option, std::string_view text);
 
+// The text of --text-file: the file's bytes without one trailing line break
+// (the file's, not the text's). Error(Io) when it cannot be read.
+std::string read_text_file(const std::string& path);
+
 // Walks argv-style arguments; `value()` takes the option's value or throws
 // UsageError naming the option.
 class Args {

@@ -2,7 +2,6 @@
 // paragraph options and markup shared with `render`.
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
 #include "curvetext/default_font.hpp"
@@ -46,17 +45,6 @@ double positive_or_zero(std::string_view option, std::string_view text) {
   const double v = parse_number(option, text);
   if (!std::isfinite(v) || v < 0.0) throw UsageError{std::string(option) + " must be 0 or more, got '" + std::string(text) + "'"};
   return v;
-}
-
-std::string read_text_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(ErrorCode::Io, "cannot read text file " + path);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  std::string text = ss.str();
-  if (!text.empty() && text.back() == '\n') text.pop_back();
-  if (!text.empty() && text.back() == '\r') text.pop_back();
-  return text;
 }
 
 void json_string(std::string& out, const std::string& s) {

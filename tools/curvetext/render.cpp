@@ -1,8 +1,6 @@
 // curvetext render: one line of text to a PNG (DESIGN.md section 6).
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "cli.hpp"
 #include "curvetext/default_font.hpp"
@@ -20,22 +18,6 @@
 #endif
 
 namespace curvetext::cli {
-
-namespace {
-
-std::string read_text_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(ErrorCode::Io, "cannot read text file " + path);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  std::string text = ss.str();
-  // One line of text: a trailing line break is the file's, not the text's.
-  if (!text.empty() && text.back() == '\n') text.pop_back();
-  if (!text.empty() && text.back() == '\r') text.pop_back();
-  return text;
-}
-
-}  // namespace
 
 int run_render(const std::vector<std::string>& arguments) {
   FontChoice font_choice;
