@@ -8,16 +8,9 @@
 #include "curvetext/error.hpp"
 #include "curvetext/geometry.hpp"
 #include "curvetext/tolerances.hpp"
+#include "core/format.hpp"
 
 namespace curvetext {
-
-namespace {
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
-}  // namespace
 
 AntiAliasing resolve_antialiasing(AntiAliasing aa, double on_screen_px) {
   if (aa != AntiAliasing::Auto) return aa;
@@ -60,7 +53,7 @@ ImageFrame transform_frame(double w, double h, const Transform& transform) {
   constexpr double kSlack = 1e-7;
   const double tw = std::ceil(box.max.x - box.min.x - kSlack), th = std::ceil(box.max.y - box.min.y - kSlack);
   if (!(tw >= 1.0 && th >= 1.0) || tw > tolerance::kMaxImageSidePx || th > tolerance::kMaxImageSidePx)
-    throw Error(ErrorCode::InvalidArgument, "the transformed image would be " + number(tw) + "x" + number(th) +
+    throw Error(ErrorCode::InvalidArgument, "the transformed image would be " + detail::format_number(tw) + "x" + detail::format_number(th) +
                                                 " px; the largest side allowed is " +
                                                 std::to_string(static_cast<int>(tolerance::kMaxImageSidePx)));
   frame.width = static_cast<int>(tw);

@@ -7,23 +7,16 @@
 
 #include "curvetext/error.hpp"
 #include "curvetext/tolerances.hpp"
+#include "core/format.hpp"
 
 namespace curvetext {
 
-namespace {
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
-}  // namespace
-
 TextImageLayout layout_text_image(const Font& font, std::string_view text, const TextImageOptions& options) {
   if (!std::isfinite(options.size_px) || options.size_px <= 0.0)
-    throw Error(ErrorCode::InvalidArgument, "size must be a positive number of pixels, got " + number(options.size_px));
+    throw Error(ErrorCode::InvalidArgument, "size must be a positive number of pixels, got " + detail::format_number(options.size_px));
   if (options.size_px > tolerance::kMaxPixelsPerEm)
-    throw Error(ErrorCode::InvalidArgument, "size " + number(options.size_px) + " px is above the limit of " +
-                                                number(tolerance::kMaxPixelsPerEm) + " px");
+    throw Error(ErrorCode::InvalidArgument, "size " + detail::format_number(options.size_px) + " px is above the limit of " +
+                                                detail::format_number(tolerance::kMaxPixelsPerEm) + " px");
   if (!std::isfinite(options.margin_px) || options.margin_px < 0.0 || options.margin_px > tolerance::kMaxImageSidePx)
     throw Error(ErrorCode::InvalidArgument, "margin must be between 0 and the largest image side");
   check_coverage_gamma(options.gamma);

@@ -16,6 +16,7 @@
 #include "curvetext/tolerances.hpp"
 #include "font/font_impl.hpp"
 #include "font/utf8.hpp"
+#include "core/format.hpp"
 
 namespace curvetext {
 
@@ -56,21 +57,16 @@ hb_script_t script_of(char32_t c) {
   return hb_unicode_script(unicode_funcs(), c);
 }
 
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
 
 void check_finite(double v, double lo, double hi, const char* what) {
   if (!std::isfinite(v) || v < lo || v > hi)
     throw Error(ErrorCode::InvalidArgument,
-                std::string(what) + " must be between " + number(lo) + " and " + number(hi) + ", got " + number(v));
+                std::string(what) + " must be between " + detail::format_number(lo) + " and " + detail::format_number(hi) + ", got " + detail::format_number(v));
 }
 
 void validate_style(const TextStyle& s) {
   if (!std::isfinite(s.size_px) || s.size_px <= 0.0)
-    throw Error(ErrorCode::InvalidArgument, "size must be a positive number of pixels, got " + number(s.size_px));
+    throw Error(ErrorCode::InvalidArgument, "size must be a positive number of pixels, got " + detail::format_number(s.size_px));
   check_finite(s.size_px, 0.0, tolerance::kMaxPixelsPerEm, "size (px)");
   check_finite(s.letter_spacing, -1e4, 1e4, "letter spacing (px)");
   check_finite(s.word_spacing, -1e4, 1e4, "word spacing (px)");
