@@ -4,20 +4,16 @@
 #pragma once
 
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "curvetext/error.hpp"
 #include "curvetext/geometry.hpp"
 #include "curvetext/shapes.hpp"
+#include "core/format.hpp"
 
 namespace curvetext::shapes_detail {
 
-inline std::string number_text(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
+inline std::string number_text(double v) { return detail::format_number_exact(v); }
 
 // Throws Error(InvalidArgument) "<what>: coordinate ... is not finite / too large".
 inline void check_coordinate(double v, const std::string& what) {
