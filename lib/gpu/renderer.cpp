@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <initializer_list>
 #include <string>
 
 #include "curvetext/error.hpp"
@@ -128,6 +129,32 @@ void compile(const Shader& shader, GLenum type, const char* source, bool gles) {
     throw Error(ErrorCode::Gl, std::string(type == GL_VERTEX_SHADER ? "vertex" : "fragment") +
                                    " shader failed to compile: " + log);
   }
+}
+
+// Links a program from two compiled shaders, the attributes bound to fixed
+// locations 0, 1, ... in the order given (so the attribute setup does not
+// depend on the linker). Error(Gl) with the info log, naming `what`, on failure.
+GLuint link_program(const Shader& vs, const Shader& fs, std::initializer_list<const char*> attributes,
+                    const char* what) {
+  const GLuint program = glCreateProgram();
+  glAttachShader(program, vs.id);
+  glAttachShader(program, fs.id);
+  GLuint location = 0;
+  for (const char* name : attributes) glBindAttribLocation(program, location++, name);
+  glLinkProgram(program);
+  GLint ok = GL_FALSE;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    GLint len = 0;
+    glGetProgramiv(program, GL_INFO_LOG_LENGTH, &len);
+    std::string log(static_cast<std::size_t>(std::max(len, 1)), '\0');
+    glGetProgramInfoLog(program, len, nullptr, log.data());
+    log.resize(std::strlen(log.c_str()));
+    std::replace(log.begin(), log.end(), '\n', ' ');
+    glDeleteProgram(program);
+    throw Error(ErrorCode::Gl, std::string(what) + " failed to link: " + log);
+  }
+  return program;
 }
 
 // sRGB transfer functions (IEC 61966-2-1), on values in [0, 1].
@@ -262,26 +289,7 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
   compile(vs, GL_VERTEX_SHADER, shader_source::curve_vert_glsl, gles);
   compile(fs, GL_FRAGMENT_SHADER, shader_source::curve_frag_glsl, gles);
   Impl& r = *impl_;
-  r.program = glCreateProgram();
-  glAttachShader(r.program, vs.id);
-  glAttachShader(r.program, fs.id);
-  // Fixed locations so the attribute setup does not depend on the linker.
-  glBindAttribLocation(r.program, 0, "a_pos");
-  glBindAttribLocation(r.program, 1, "a_coef");
-  glBindAttribLocation(r.program, 2, "a_info");
-  glBindAttribLocation(r.program, 3, "a_fade");
-  glLinkProgram(r.program);
-  GLint ok = GL_FALSE;
-  glGetProgramiv(r.program, GL_LINK_STATUS, &ok);
-  if (ok != GL_TRUE) {
-    GLint len = 0;
-    glGetProgramiv(r.program, GL_INFO_LOG_LENGTH, &len);
-    std::string log(static_cast<std::size_t>(std::max(len, 1)), '\0');
-    glGetProgramInfoLog(r.program, len, nullptr, log.data());
-    log.resize(std::strlen(log.c_str()));
-    std::replace(log.begin(), log.end(), '\n', ' ');
-    throw Error(ErrorCode::Gl, "curve shader program failed to link: " + log);
-  }
+  r.program = link_program(vs, fs, {"a_pos", "a_coef", "a_info", "a_fade"}, "curve shader program");
   r.a_pos = 0;
   r.a_coef = 1;
   r.a_info = 2;
@@ -301,15 +309,7 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
     Shader rvs(GL_VERTEX_SHADER), rfs(GL_FRAGMENT_SHADER);
     compile(rvs, GL_VERTEX_SHADER, shader_source::resolve_vert_glsl, gles);
     compile(rfs, GL_FRAGMENT_SHADER, shader_source::resolve_frag_glsl, gles);
-    r.resolve_program = glCreateProgram();
-    glAttachShader(r.resolve_program, rvs.id);
-    glAttachShader(r.resolve_program, rfs.id);
-    glBindAttribLocation(r.resolve_program, 0, "a_clip");
-    glBindAttribLocation(r.resolve_program, 1, "a_pixel");
-    glLinkProgram(r.resolve_program);
-    GLint linked = GL_FALSE;
-    glGetProgramiv(r.resolve_program, GL_LINK_STATUS, &linked);
-    if (linked != GL_TRUE) throw Error(ErrorCode::Gl, "vbaa/msaa filter program failed to link");
+    r.resolve_program = link_program(rvs, rfs, {"a_clip", "a_pixel"}, "vbaa/msaa filter program");
     r.u_r_texture = glGetUniformLocation(r.resolve_program, "u_texture");
     r.u_r_texture_size = glGetUniformLocation(r.resolve_program, "u_texture_size");
     r.u_r_rect_origin = glGetUniformLocation(r.resolve_program, "u_rect_origin");
