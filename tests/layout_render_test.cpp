@@ -164,13 +164,7 @@ Styled render_styled(const Paragraph& p, const ParagraphImageOptions& options) {
 }
 
 void expect_styled(const std::string& name, const Styled& r, double edge_limit, double ink_limit) {
-  std::printf("%-34s edge %.4f  max %.3f  ink %.4f  (%dx%d)\n", name.c_str(), r.stats.edge_mean_abs, r.stats.max_abs,
-              r.stats.ink_ratio, r.result.width, r.result.height);
-  const bool ok = r.stats.edge_mean_abs <= edge_limit && std::abs(r.stats.ink_ratio - 1.0) <= ink_limit;
-  if (!ok) test::write_comparison("paragraph-" + name, r.result, r.reference);
-  EXPECT_GT(r.stats.edge_pixels, 100u) << name << ": nothing was drawn";
-  EXPECT_LE(r.stats.edge_mean_abs, edge_limit) << name;
-  EXPECT_NEAR(r.stats.ink_ratio, 1.0, ink_limit) << name;
+  test::expect_coverage("paragraph-" + name, r.result, r.reference, r.stats, edge_limit, ink_limit);
 }
 
 // The limits of transform_test.cpp for single lines at these sizes.

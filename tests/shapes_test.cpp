@@ -751,13 +751,7 @@ StyledShape draw_styled(ShapeDocument doc, const ShapeImageOptions& options) {
 }
 
 void expect_styled(const std::string& name, const StyledShape& r, double edge_limit, double ink_limit) {
-  std::printf("shape %-28s edge %.4f  max %.3f  ink %.4f  (%dx%d)\n", name.c_str(), r.stats.edge_mean_abs,
-              r.stats.max_abs, r.stats.ink_ratio, r.result.width, r.result.height);
-  const bool ok = r.stats.edge_mean_abs <= edge_limit && std::abs(r.stats.ink_ratio - 1.0) <= ink_limit;
-  if (!ok) test::write_comparison("shape-" + name, r.result, r.reference);
-  EXPECT_GT(r.stats.edge_pixels, 100u) << name;
-  EXPECT_LE(r.stats.edge_mean_abs, edge_limit) << name;
-  EXPECT_NEAR(r.stats.ink_ratio, 1.0, ink_limit) << name;
+  test::expect_coverage("shape-" + name, r.result, r.reference, r.stats, edge_limit, ink_limit);
 }
 
 TEST(ShapeTransform, RotationPerspectiveSkewMatchExactCoverage) {

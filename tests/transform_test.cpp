@@ -53,12 +53,7 @@ Result render(const char* font_path, const char* text, double size, const Transf
 }
 
 void expect_close(const std::string& name, const Result& r, double edge_limit, double ink_limit) {
-  std::printf("%-40s edge %.4f  max %.3f  ink %.4f  (%dx%d)\n", name.c_str(), r.stats.edge_mean_abs, r.stats.max_abs,
-              r.stats.ink_ratio, r.result.width, r.result.height);
-  const bool ok = r.stats.edge_mean_abs <= edge_limit && std::abs(r.stats.ink_ratio - 1.0) <= ink_limit;
-  if (!ok) test::write_comparison(name, r.result, r.reference);
-  EXPECT_LE(r.stats.edge_mean_abs, edge_limit) << name;
-  EXPECT_NEAR(r.stats.ink_ratio, 1.0, ink_limit) << name;
+  test::expect_coverage(name, r.result, r.reference, r.stats, edge_limit, ink_limit);
 }
 
 // Limits: the unrotated text measures edge 0.0106 at 16 px and 0.0026 at

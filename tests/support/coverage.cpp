@@ -4,8 +4,11 @@
 #include FT_FREETYPE_H
 #include FT_OUTLINE_H
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 
@@ -205,6 +208,17 @@ CoverageStats compare(const Coverage& result, const Coverage& reference) {
   s.edge_mean_abs = s.edge_pixels ? sum_edge / static_cast<double>(s.edge_pixels) : 0;
   s.ink_ratio = ink_ref > 0 ? ink / ink_ref : (ink > 0 ? 1e9 : 1.0);
   return s;
+}
+
+void expect_coverage(const std::string& name, const Coverage& result, const Coverage& reference,
+                     const CoverageStats& stats, double edge_limit, double ink_limit) {
+  std::printf("%-40s edge %.4f  max %.3f  ink %.4f  (%dx%d)\n", name.c_str(), stats.edge_mean_abs, stats.max_abs,
+              stats.ink_ratio, result.width, result.height);
+  const bool ok = stats.edge_mean_abs <= edge_limit && std::abs(stats.ink_ratio - 1.0) <= ink_limit;
+  if (!ok) write_comparison(name, result, reference);
+  EXPECT_GT(stats.edge_pixels, 100u) << name << ": nothing was drawn";
+  EXPECT_LE(stats.edge_mean_abs, edge_limit) << name;
+  EXPECT_NEAR(stats.ink_ratio, 1.0, ink_limit) << name;
 }
 
 std::string write_comparison(const std::string& name, const Coverage& result, const Coverage& reference) {

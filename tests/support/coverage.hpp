@@ -56,6 +56,13 @@ CoverageStats compare(const Coverage& result, const Coverage& reference);
 // too dark, blue: too light) and returns the directory.
 std::string write_comparison(const std::string& name, const Coverage& result, const Coverage& reference);
 
+// The render tests' verdict on one image: prints a line for `name`, writes
+// the comparison images (write_comparison) when a limit is missed, and
+// expects something drawn (over 100 edge pixels), an edge-band mean error of
+// at most `edge_limit` and an ink ratio within `ink_limit` of 1.
+void expect_coverage(const std::string& name, const Coverage& result, const Coverage& reference,
+                     const CoverageStats& stats, double edge_limit, double ink_limit);
+
 // A shaped line as one outline in font units, each glyph at its pen position
 // exactly as DrawBatch::from_text places it (pen from (0,0), y up).
 Outline line_outline(const Font& font, const ShapedLine& line);
