@@ -35,42 +35,161 @@ float boxcov(float d, vec2 n) {
   return (R(d + hi) - R(d + u) - R(d - u) + R(d - hi)) / (2.0 * a * b);
 }
 
-// Coverage of the intersection of several boundaries, folded in one at a
-// time: `cov` so far, `nacc` the sum of the inward normals folded so far.
-// Independent (perpendicular) boundaries multiply; a boundary facing those
-// already folded (a feature thinner than a pixel: both sides in one box)
-// removes its outside area, a + b - 1, instead, as the product would count
-// the overlap of the two outsides twice; in between, the two are mixed by
-// the angle. A boundary nearly parallel to those folded (an obtuse corner,
-// or two curves meeting smoothly, each of whose conics continues past the
-// join along the other) cuts off mostly the same outside area: there the
-// intersection tends to the smaller coverage, as the product would count
-// that area twice. Boundaries that do not cut the box (coverage 1) are
-// skipped so their normals do not count.
-void fold(inout float cov, inout vec2 nacc, float a, vec2 n) {
-  if (a >= 1.0) return;
-  float nlen = length(nacc);
-  float c = nlen > 1e-6 ? dot(nacc / nlen, n) : 0.0;
-  float both = c < 0.0 ? mix(cov * a, max(cov + a - 1.0, 0.0), -c) : mix(cov * a, min(cov, a), c * c);
-  cov = both;
-  nacc += n;
+// The inverse of boxcov: the signed distance (pixels) at which a straight
+// edge with unit normal n covers `cov` of the box. A curve's coverage (from
+// its sub-boxes) becomes the half-plane that covers the same area, so it can
+// be combined with other boundaries exactly as a line.
+float box_distance(float cov, vec2 n) {
+  float a = abs(n.x);
+  float b = abs(n.y);
+  float hi = 0.5 * (a + b);
+  if (cov >= 1.0) return hi;
+  if (cov <= 0.0) return -hi;
+  float lo = max(a, b);
+  float sm = min(a, b);
+  if (sm < 1e-3) return (cov - 0.5) * lo;
+  float knee = sm / (2.0 * lo);  // the coverage where the ramp turns linear
+  if (cov < knee) return sqrt(2.0 * a * b * cov) - hi;
+  if (cov > 1.0 - knee) return hi - sqrt(2.0 * a * b * (1.0 - cov));
+  return (cov - 0.5) * lo;
 }
 
-// Folds in one distance slot (outline units, affine, positive inside).
-void fold_line(inout float cov, inout vec2 nacc, float c) {
+// The boundaries that cut this fragment's pixel box, as half-planes
+// (n.x, n.y, d): inside where dot(n, x) + d >= 0, x the offset from the pixel
+// centre in pixels, n a unit normal. Full AA takes the coverage as the exact
+// area of the box inside all of them (the shape near a pixel is the
+// intersection of the sides it knows: a convex corner, both sides of a
+// feature thinner than a pixel), and subtracts the parts in the outside wedge
+// of each reflex corner (where the shape is the union of two sides).
+const int kMaxPlanes = 8;
+vec3 g_planes[8];
+int g_plane_count = 0;
+float g_single = 1.0;    // the coverage of the only plane, when there is one
+bool g_empty = false;    // a boundary has the whole box outside
+vec3 g_wedge[4];         // up to two reflex corners' outside half-planes
+int g_wedge_count = 0;
+
+// Adds a boundary whose side covers `cov` of the box, with unit normal n
+// towards the filled side.
+void add_boundary(float cov, vec2 n) {
+  if (cov >= 1.0) return;  // does not cut the box
+  if (cov <= 0.0) {
+    g_empty = true;
+    return;
+  }
+  for (int i = kMaxPlanes - 1; i > 0; --i) g_planes[i] = g_planes[i - 1];
+  g_planes[0] = vec3(n, box_distance(cov, n));
+  g_plane_count = g_plane_count + 1;
+  g_single = cov;
+}
+
+// Clips the segment p + t u, t in [t0, t1], to the half-plane h. Lines
+// within 1e-4 of each other in angle (radians) and offset (pixels) count as
+// one: of such a pair exactly one may be an edge, or rounding would count the
+// area next to it twice (or not at all); `yield_on_tie` says whether the
+// segment gives way. Treating them so moves an edge by at most ~1e-4 px.
+// Beyond that, t = -c / k is off by at most ~1e-7 / 1e-4 = 1e-3 of a pixel.
+const float kParallel = 1e-4;
+void clip_segment(vec3 h, vec2 p, vec2 u, bool yield_on_tie, inout float t0, inout float t1) {
+  float c = dot(h.xy, p) + h.z;
+  float k = dot(h.xy, u);
+  if (abs(k) < kParallel) {
+    bool tie = abs(c) < kParallel;
+    if (tie ? yield_on_tie : c < 0.0) t1 = t0 - 1.0;
+  } else if (k > 0.0) {
+    t0 = max(t0, -c / k);
+  } else {
+    t1 = min(t1, -c / k);
+  }
+}
+
+// Exact area of the unit box (centred on the origin) inside the half-planes
+// L[0 .. n): for a convex polygon, the sum over its edges of the signed
+// height from the origin times the edge's length, halved. Each line's edge is
+// its chord through the box clipped by the other lines; the box's sides are
+// clipped likewise. Loops over constants only (GLSL ES 1.00).
+float convex_area(vec3 L[12], int n) {
+  float area = 0.0;
+  for (int s = 0; s < 4; ++s) {
+    vec2 nn = s == 0 ? vec2(1.0, 0.0) : s == 1 ? vec2(-1.0, 0.0) : s == 2 ? vec2(0.0, 1.0) : vec2(0.0, -1.0);
+    vec2 p = -0.5 * nn;
+    vec2 u = vec2(-nn.y, nn.x);
+    float t0 = -0.5;
+    float t1 = 0.5;
+    for (int j = 0; j < 12; ++j) {
+      if (j >= n) break;
+      clip_segment(L[j], p, u, true, t0, t1);
+    }
+    area += 0.25 * max(t1 - t0, 0.0);
+  }
+  for (int i = 0; i < 12; ++i) {
+    if (i >= n) break;
+    vec3 h = L[i];
+    vec2 p = -h.z * h.xy;
+    vec2 u = vec2(-h.y, h.x);
+    float t0 = -2.0;
+    float t1 = 2.0;
+    clip_segment(vec3(1.0, 0.0, 0.5), p, u, false, t0, t1);
+    clip_segment(vec3(-1.0, 0.0, 0.5), p, u, false, t0, t1);
+    clip_segment(vec3(0.0, 1.0, 0.5), p, u, false, t0, t1);
+    clip_segment(vec3(0.0, -1.0, 0.5), p, u, false, t0, t1);
+    for (int j = 0; j < 12; ++j) {
+      if (j >= n) break;
+      if (j != i) clip_segment(L[j], p, u, j < i, t0, t1);
+    }
+    area += 0.5 * h.z * max(t1 - t0, 0.0);
+  }
+  return clamp(area, 0.0, 1.0);
+}
+
+// The area inside the planes and, with `w0` / `w1`, inside the outside wedge
+// of reflex corner 0 / 1.
+float planes_area(bool w0, bool w1) {
+  vec3 L[12];
+  int n = 0;
+  for (int i = 0; i < kMaxPlanes; ++i) {
+    if (i >= g_plane_count) break;
+    L[i] = g_planes[i];
+    n = i + 1;
+  }
+  for (int k = 0; k < 4; ++k) {
+    bool take = k < 2 ? w0 : w1;
+    if (!take) continue;
+    for (int i = 11; i > 0; --i) L[i] = L[i - 1];
+    L[0] = g_wedge[k];
+    n = n + 1;
+  }
+  return convex_area(L, n);
+}
+
+float combined_coverage() {
+  if (g_empty) return 0.0;
+  bool w0 = g_wedge_count > 0;
+  bool w1 = g_wedge_count > 1;
+  if (!w0 && g_plane_count <= 1) return g_single;
+  float a = g_plane_count == 1 ? g_single : g_plane_count == 0 ? 1.0 : planes_area(false, false);
+  if (w0) a -= planes_area(true, false);
+  if (w1) a -= planes_area(false, true);
+  if (w0 && w1) a += planes_area(true, true);
+  return clamp(a, 0.0, 1.0);
+}
+
+// Adds the boundary of one distance slot (outline units, affine, positive
+// inside).
+void add_line(float c) {
   vec2 g = vec2(dFdx(c), dFdy(c));
   float len = length(g);
   // A constant slot (unused, 1e6) has no gradient: no edge here.
   if (len < 1e-12) return;
-  fold(cov, nacc, boxcov(c / len, g / len), g / len);
+  vec2 n = g / len;
+  add_boundary(boxcov(c / len, n), n);
 }
 
-// Folds in the two sides of a reflex corner (the a_fade pair of an interior
-// triangle flagged kUnionFadeFlag, see vertex_format.hpp): the shape there is
-// the union of both half-planes, so the box's outside is the intersection of
-// the two outsides, estimated as fold() estimates intersections; the union's
-// normal for later folds is each side's, weighted by the outside it cuts off.
-void fold_union(inout float cov, inout vec2 nacc, float c0, float c1) {
+// Adds the two sides of a reflex corner (a_fade or a_coef's last pair of an
+// interior triangle flagged kUnionFadeFlag / kUnionCoefFlag, see
+// vertex_format.hpp): the shape there is the union of both half-planes, so
+// the box loses the part in the intersection of the two outsides, a wedge.
+void add_union(float c0, float c1) {
   vec2 g0 = vec2(dFdx(c0), dFdy(c0));
   vec2 g1 = vec2(dFdx(c1), dFdy(c1));
   float l0 = length(g0);
@@ -78,13 +197,29 @@ void fold_union(inout float cov, inout vec2 nacc, float c0, float c1) {
   if (l0 < 1e-12 || l1 < 1e-12) return;
   vec2 n0 = g0 / l0;
   vec2 n1 = g1 / l1;
-  float o0 = 1.0 - boxcov(c0 / l0, n0);
-  float o1 = 1.0 - boxcov(c1 / l1, n1);
-  float o = o0;
-  vec2 no = -n0;
-  fold(o, no, o1, -n1);
-  vec2 nb = o0 * n0 + o1 * n1;
-  fold(cov, nacc, 1.0 - o, length(nb) > 1e-6 ? normalize(nb) : n0);
+  float d0 = c0 / l0;
+  float d1 = c1 / l1;
+  float h0 = 0.5 * (abs(n0.x) + abs(n0.y));
+  float h1 = 0.5 * (abs(n1.x) + abs(n1.y));
+  // The box inside either side: the union covers it.
+  if (d0 >= h0 || d1 >= h1) return;
+  if (d0 <= -h0 && d1 <= -h1) {
+    g_empty = true;
+    return;
+  }
+  if (g_wedge_count >= 2) return;
+  // A side the box lies wholly outside of bounds nothing: the wedge is the
+  // other outside half-plane alone (its line repeated).
+  vec3 o0 = d0 <= -h0 ? vec3(-n1, -d1) : vec3(-n0, -d0);
+  vec3 o1 = d1 <= -h1 ? vec3(-n0, -d0) : vec3(-n1, -d1);
+  if (g_wedge_count == 0) {
+    g_wedge[0] = o0;
+    g_wedge[1] = o1;
+  } else {
+    g_wedge[2] = o0;
+    g_wedge[3] = o1;
+  }
+  g_wedge_count = g_wedge_count + 1;
 }
 
 // Signed distance in pixels to the exact conic F = tau1^2 - 4 w^2 tau0 tau2
@@ -128,7 +263,7 @@ float conic_distance(float t1, float t2, vec2 g1, vec2 g2, float w, float s, boo
 // tau is affine, so its values at the sub-box centres are exact.
 //
 // `code` >= 0 names a hull edge (0 the chord, 1 / 2 the legs, as in
-// fold_near_curve) beyond which the shape is solid (an interior triangle
+// add_near_curve) beyond which the shape is solid (an interior triangle
 // lies there): the fill is the union of that side and the conic's filled
 // part, so each sub-box takes the larger of the two coverages (the union's
 // is at least either). The conic alone is not enough there: its other arm
@@ -174,7 +309,7 @@ float conic_coverage(float t1, float t2, vec2 g1, vec2 g2, float w, float s, boo
   // near the arc. Where the centre lies past the conic's other arm (a flat
   // hull whose parabola opens along its chord) or the coverage came from the
   // solid side of a hull edge, it can point away from the filled side, and
-  // fold() would take this curve and a neighbour continuing it smoothly for
+  // the combination would take this curve and a neighbour continuing it smoothly for
   // the two sides of a hairline. The first moment of the sub-box coverages
   // points towards the filled side; when the two disagree, trust it.
   if (dot(n, mom) < 0.0 && dot(mom, mom) > 1e-8) n = normalize(mom);
@@ -204,10 +339,10 @@ const float kNearCurvePx = 0.75;
 const float kPixelReachPx = CURVETEXT_PIXEL_REACH_PX;
 const float kThirdCurveMinChordPx = CURVETEXT_THIRD_CURVE_MIN_CHORD_PX;
 
-// Folds in, for an interior triangle (kinds 3, 4), a curve across one of its
+// Adds, for an interior triangle (kinds 3, 4), a curve across one of its
 // edges or touching it at a vertex. `code` is the hull edge the triangle lies
 // beyond: 0 the chord of a convex curve, 1 / 2 a leg of a concave one.
-void fold_near_curve(inout float cov, inout vec2 nacc, float t1, float t2, float w, float code) {
+void add_near_curve(float t1, float t2, float w, float code) {
   vec2 g1 = vec2(dFdx(t1), dFdy(t1));
   vec2 g2 = vec2(dFdx(t2), dFdy(t2));
   float e = code < 0.5 ? t1 : (code < 1.5 ? t2 : 1.0 - t1 - t2);
@@ -221,7 +356,7 @@ void fold_near_curve(inout float cov, inout vec2 nacc, float t1, float t2, float
   float s = code < 0.5 ? 1.0 : -1.0;
   vec2 n;
   float a = conic_coverage(t1, t2, g1, g2, w, s, false, code, n);
-  fold(cov, nacc, a, n);
+  add_boundary(a, n);
 }
 
 void main() {
@@ -230,16 +365,24 @@ void main() {
     return;
   }
   float kind = floor(v_info.x + 0.5);
+  // Flags added to the kind (vertex_format.hpp): kUnionFadeFlag 0.25,
+  // kUnionCoefFlag 0.125.
+  float flags = v_info.x - kind;
+  bool fade_union = flags > 0.1875;
+  bool coef_union = mod(flags, 0.25) > 0.0625;
   float coverage = 1.0;
-  vec2 nacc = vec2(0.0);
   if (kind > 0.5 && kind < 1.5) {
     // Straight edges are antialiased only in full mode (the paper's single
     // pass leaves them aliased).
     if (u_aa == 2) {
-      fold_line(coverage, nacc, v_coef.x);
-      fold_line(coverage, nacc, v_coef.y);
-      fold_line(coverage, nacc, v_coef.z);
-      fold_line(coverage, nacc, v_coef.w);
+      add_line(v_coef.x);
+      add_line(v_coef.y);
+      if (coef_union) {
+        add_union(v_coef.z, v_coef.w);
+      } else {
+        add_line(v_coef.z);
+        add_line(v_coef.w);
+      }
     }
   } else if (kind > 1.5 && kind < 2.5) {
     float t1 = v_coef.x;
@@ -285,7 +428,7 @@ void main() {
       coverage = 0.0;
     } else {
       float a = u_curve_mode == 0 ? conic_coverage(t1, t2, g1, g2, w, s, s < 0.0, v_coef.w > 0.5 ? 3.0 : -1.0, n) : boxcov(d, n);
-      fold(coverage, nacc, a, n);
+      add_boundary(a, n);
     }
   } else if (u_aa == 2) {
     // Interior triangles next to one (kind 3), two (kind 4) or three (kind
@@ -295,14 +438,16 @@ void main() {
     codes -= 9.0 * code_c;
     float code_b = floor(codes / 3.0 + 0.01);
     float code_a = codes - 3.0 * code_b;
-    fold_line(coverage, nacc, v_coef.x);
-    fold_line(coverage, nacc, v_coef.y);
-    fold_near_curve(coverage, nacc, v_tau.x, v_tau.y, v_info.y, code_a);
-    if (kind < 3.5) {
-      fold_line(coverage, nacc, v_coef.z);
-      fold_line(coverage, nacc, v_coef.w);
+    add_line(v_coef.x);
+    add_line(v_coef.y);
+    add_near_curve(v_tau.x, v_tau.y, v_info.y, code_a);
+    if (kind < 3.5 && coef_union) {
+      add_union(v_coef.z, v_coef.w);
+    } else if (kind < 3.5) {
+      add_line(v_coef.z);
+      add_line(v_coef.w);
     } else {
-      fold_near_curve(coverage, nacc, v_coef.z, v_coef.w, v_info.z, code_b);
+      add_near_curve(v_coef.z, v_coef.w, v_info.z, code_b);
     }
     if (kind > 4.5) {
       // The third curve only where its chord spans a few pixels (see
@@ -312,20 +457,21 @@ void main() {
       vec2 g2 = vec2(dFdx(v_fade.y), dFdy(v_fade.y));
       float k = -dot(g1, g2) / max(dot(g1, g1), 1e-30);
       float chord_px = 1.0 / max(length(g2 + k * g1), 1e-30);
-      if (chord_px >= kThirdCurveMinChordPx) fold_near_curve(coverage, nacc, v_fade.x, v_fade.y, v_tau.z, code_c);
+      if (chord_px >= kThirdCurveMinChordPx) add_near_curve(v_fade.x, v_fade.y, v_tau.z, code_c);
     }
   }
   // Every kind but 5: the far side of a feature thinner than a pixel, a
   // corner's other line, or a reflex corner's two sides (see a_fade in
   // vertex_format.hpp); full AA only.
   if (u_aa == 2 && kind < 4.5) {
-    if (v_info.x - kind > 0.125) {  // kUnionFadeFlag
-      fold_union(coverage, nacc, v_fade.x, v_fade.y);
+    if (fade_union) {
+      add_union(v_fade.x, v_fade.y);
     } else {
-      fold_line(coverage, nacc, v_fade.x);
-      fold_line(coverage, nacc, v_fade.y);
+      add_line(v_fade.x);
+      add_line(v_fade.y);
     }
   }
+  if (u_aa == 2) coverage = min(coverage, combined_coverage());
   if (coverage <= 0.0) {
     // Debug (paper Figure 1): what a curved triangle throws away.
     if (u_debug == 1 && kind > 1.5 && kind < 2.5) {

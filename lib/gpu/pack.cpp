@@ -589,38 +589,48 @@ class Packer {
     const std::size_t coef_slots = curve_count >= 2 ? 2 : 4;
     std::array<int, 4> slots{-1, -1, -1, -1};
     IndexList fade;
-    // A reflex corner at one (and only one) vertex, whose sides this
-    // triangle does not know otherwise: the shape there is the union of the
-    // two sides' half-planes (the triangle lies in the cone of the corner's
+    // A reflex corner at a vertex: the shape there is the union of the two
+    // sides' half-planes (the triangle lies in the cone of the corner's
     // interior angle), and pixels centred in the triangle near the corner
-    // need both. The pair takes the a_fade slots with kUnionFadeFlag, and the
-    // shader folds in the union. quality_bench full: pixels off by > 0.15 at
-    // 24-384 px 344 -> 312, edge error within 0.0005 or better at every size
-    // (taking the pair also where the triangle knew a side as a line made the
-    // 10 px edge worse, 0.0211 -> 0.0219: there it had folded it better).
+    // need both, also where the triangle knows one side as a line (the
+    // union replaces it). The pair takes the a_fade slots with
+    // kUnionFadeFlag; the shader removes the part of the pixel in the wedge
+    // outside both sides. quality_bench full, pixels off by > 0.15 at
+    // 24-384 px: 344 -> 312 with one pair (when the sides were unknown),
+    // 301 -> 284 taking it also where a side was known, once the shader
+    // combined boundaries exactly (before that it made 10 px edges worse).
     std::array<int, 2> pair{-1, -1};
+    // A second reflex corner (a sliver spanning a stem between the two inner
+    // corners of a crossbar) takes a_coef's last two slots, when the known
+    // lines fit in the first two, flagged kUnionCoefFlag (328 -> 307 pixels
+    // off by > 0.15 at 24-384 px).
+    std::array<int, 2> pair2{-1, -1};
     if (curve_count < 3) {
-      int reflex = 0;
-      std::array<int, 2> candidate{};
-      std::uint32_t corner = 0;
       for (std::uint32_t vertex : tri) {
         std::array<int, 2> c{};
-        if (reflex_pair(vertex, c)) {
-          ++reflex;
-          candidate = c;
-          corner = vertex;
+        if (!reflex_pair(vertex, c) ||
+            !short_of_far_end(c[0], vertex, p) || !short_of_far_end(c[1], vertex, p))
+          continue;
+        std::size_t others = 0;  // the lines left for the line slots
+        for (int li : lines)
+          if (li != c[0] && li != c[1] && li != pair[0] && li != pair[1]) ++others;
+        if (pair[0] < 0) {
+          if (others <= coef_slots) pair = c;
+        } else if (pair2[0] < 0 && coef_slots == 4 && others <= 2) {
+          pair2 = c;
         }
       }
-      if (reflex == 1 && !lines.contains(candidate[0]) && !lines.contains(candidate[1]) &&
-          lines.size() <= coef_slots && short_of_far_end(candidate[0], corner, p) &&
-          short_of_far_end(candidate[1], corner, p))
-        pair = candidate;
     }
     std::size_t used = 0;
+    const std::size_t line_slots = pair2[0] >= 0 ? 2 : coef_slots;
     for (std::size_t k = 0; k < lines.size(); ++k) {
-      if (pair[0] >= 0 && (lines[k] == pair[0] || lines[k] == pair[1])) continue;
-      if (used < coef_slots) slots[used++] = lines[k];
+      if (lines[k] == pair[0] || lines[k] == pair[1] || lines[k] == pair2[0] || lines[k] == pair2[1]) continue;
+      if (used < line_slots) slots[used++] = lines[k];
       else if (curve_count < 3) fade.push_back(lines[k]);
+    }
+    if (pair2[0] >= 0) {
+      slots[2] = pair2[0];
+      slots[3] = pair2[1];
     }
     if (pair[0] >= 0) {
       fade = IndexList{};
@@ -639,6 +649,7 @@ class Packer {
       set_fade(v, x, Vec2{}, fade);
       if (curve_count > 0) set_near_curves(v, x, near_curves, curve_count);
       if (pair[0] >= 0) v.info[0] += kUnionFadeFlag;
+      if (pair2[0] >= 0) v.info[0] += kUnionCoefFlag;
       out_->push_back(v);
     }
   }

@@ -72,8 +72,11 @@ enum SharedCurveEdge : int { kChord = 0, kLegFromP0 = 1, kLegToP2 = 2 };
 
 // Added to a_info.x (the kind) of an interior triangle (kinds 0-4) whose two
 // a_fade lines are the sides of a reflex corner at one of its vertices: the
-// shape there is the union of their half-planes (shaders: fold_union).
+// shape there is the union of their half-planes (shaders: add_union).
 inline constexpr float kUnionFadeFlag = 0.25f;
+// Added to a_info.x of an interior triangle (kinds 1 and 3) whose a_coef
+// slots 2 and 3 are the sides of a second reflex corner (combined likewise).
+inline constexpr float kUnionCoefFlag = 0.125f;
 
 // A constant distance far inside: its screen gradient is 0, which the shader
 // reads as "no edge in this slot".
