@@ -64,24 +64,28 @@ float box_distance(float cov, vec2 n) {
 const int kMaxPlanes = 8;
 vec3 g_planes[8];
 int g_plane_count = 0;
-float g_single = 1.0;    // the coverage of the only plane, when there is one
 bool g_empty = false;    // a boundary has the whole box outside
 vec3 g_wedge[4];         // up to two reflex corners' outside half-planes
 int g_wedge_count = 0;
 
-// Adds a boundary whose side covers `cov` of the box, with unit normal n
-// towards the filled side.
-void add_boundary(float cov, vec2 n) {
-  if (cov >= 1.0) return;  // does not cut the box
-  if (cov <= 0.0) {
+// Adds the half-plane dot(n, x) + d >= 0 (n a unit normal towards the filled
+// side, d the signed distance of the pixel centre in pixels), unless it does
+// not cut the box.
+void add_half_plane(vec2 n, float d) {
+  float hi = 0.5 * (abs(n.x) + abs(n.y));  // the box's reach along n
+  if (d >= hi) return;
+  if (d <= -hi) {
     g_empty = true;
     return;
   }
   for (int i = kMaxPlanes - 1; i > 0; --i) g_planes[i] = g_planes[i - 1];
-  g_planes[0] = vec3(n, box_distance(cov, n));
+  g_planes[0] = vec3(n, d);
   g_plane_count = g_plane_count + 1;
-  g_single = cov;
 }
+
+// Adds a boundary whose side covers `cov` of the box (a curve's estimate),
+// with unit normal n towards the filled side.
+void add_boundary(float cov, vec2 n) { add_half_plane(n, box_distance(cov, n)); }
 
 // Clips the segment p + t u, t in [t0, t1], to the half-plane h. Lines
 // within 1e-4 of each other in angle (radians) and offset (pixels) count as
@@ -164,10 +168,11 @@ float planes_area(bool w0, bool w1) {
 
 float combined_coverage() {
   if (g_empty) return 0.0;
+  float a = g_plane_count == 0 ? 1.0
+            : g_plane_count == 1 ? boxcov(g_planes[0].z, g_planes[0].xy)
+                                 : planes_area(false, false);
   bool w0 = g_wedge_count > 0;
   bool w1 = g_wedge_count > 1;
-  if (!w0 && g_plane_count <= 1) return g_single;
-  float a = g_plane_count == 1 ? g_single : g_plane_count == 0 ? 1.0 : planes_area(false, false);
   if (w0) a -= planes_area(true, false);
   if (w1) a -= planes_area(false, true);
   if (w0 && w1) a += planes_area(true, true);
@@ -181,8 +186,7 @@ void add_line(float c) {
   float len = length(g);
   // A constant slot (unused, 1e6) has no gradient: no edge here.
   if (len < 1e-12) return;
-  vec2 n = g / len;
-  add_boundary(boxcov(c / len, n), n);
+  add_half_plane(g / len, c / len);
 }
 
 // Adds the two sides of a reflex corner (a_fade or a_coef's last pair of an
