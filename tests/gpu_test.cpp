@@ -449,11 +449,57 @@ TEST(Renderer, SizeAboveGlMaximumIsInvalidArgument) {
   EXPECT_NEAR(img.pixel(3, 3)[3], 128, 1);
 }
 
-TEST(Renderer, FringeVerticesAreZeroAreaWithoutFullAa) {
-  const auto packed = gpu::pack_mesh(rect_mesh(1, 5, 1, 5));
-  // 2 interior triangles + 4 fringe quads of 2 triangles.
-  EXPECT_EQ(packed.size(), 3u * (2 + 8));
-  for (const auto& v : packed) EXPECT_EQ(v.info[0], 1.0f);  // every triangle touches an edge
+// Packing grows every triangle (offsets per unit of the dilation t) so that
+// its grown polygon holds every point within t of it: the shader computes
+// exact areas only in the pixels it gets fragments for. At t = 0 the
+// vertices are the triangle's own; the miter limit keeps sharp corners from
+// reaching far (a bevel there).
+TEST(Packing, GrownTrianglesHoldEveryPointWithinTheGrowth) {
+  Mesh m;
+  // A right triangle (miters) and a needle of about 6 degrees at (10, 20) (a bevel there).
+  m.points = {{0, 0}, {4, 0}, {0, 4}, {10, 20}, {40, 20}, {40, 23}};
+  m.triangles = {{0, 1, 2}, {3, 4, 5}};
+  const auto packed = gpu::pack_mesh(m);
+  // 3 vertices for the first; the needle's sharp corner adds one polygon
+  // vertex (4 points, 2 fan triangles).
+  ASSERT_EQ(packed.size(), 3u * (1 + 2));
+  const double t = 1.0;
+  auto grown = [&](std::size_t i) {
+    const auto& v = packed[i];
+    return Vec2{v.pos[0] + t * v.pos[2], v.pos[1] + t * v.pos[3]};
+  };
+  auto in_fan = [&](std::size_t begin, std::size_t end, Vec2 x) {
+    for (std::size_t i = begin; i < end; i += 3) {
+      const Vec2 a = grown(i), b = grown(i + 1), c = grown(i + 2);
+      const double d1 = cross(b - a, x - a), d2 = cross(c - b, x - b), d3 = cross(a - c, x - c);
+      if ((d1 >= -1e-9 && d2 >= -1e-9 && d3 >= -1e-9) || (d1 <= 1e-9 && d2 <= 1e-9 && d3 <= 1e-9)) return true;
+    }
+    return false;
+  };
+  for (std::size_t tri = 0; tri < 2; ++tri) {
+    const std::size_t begin = tri == 0 ? 0 : 3, end = tri == 0 ? 3 : 9;
+    for (std::size_t i = begin; i < end; ++i) {
+      const Vec2 base{packed[i].pos[0], packed[i].pos[1]};
+      bool own = false;
+      for (std::uint32_t k : m.triangles[tri]) own = own || base == m.points[k];
+      EXPECT_TRUE(own) << "vertex " << i << " does not start at its triangle's vertex";
+      EXPECT_LE(length(Vec2{packed[i].pos[2], packed[i].pos[3]}), 4.0 + 1e-6) << "miter limit";
+    }
+    // Points at distance 0.999 t from the triangle: around each vertex and
+    // along each edge's outside.
+    const auto& tv = m.triangles[tri];
+    for (int k = 0; k < 3; ++k) {
+      const Vec2 p = m.points[tv[static_cast<std::size_t>(k)]], q = m.points[tv[static_cast<std::size_t>((k + 1) % 3)]];
+      for (int j = 0; j < 64; ++j) {
+        const double angle = 2.0 * 3.141592653589793 * j / 64.0;
+        const Vec2 x = p + Vec2{std::cos(angle), std::sin(angle)} * (0.999 * t);
+        EXPECT_TRUE(in_fan(begin, end, x)) << "triangle " << tri << " vertex " << k << " angle " << angle;
+        const Vec2 mid = p + (q - p) * (j / 64.0);
+        const Vec2 side = Vec2{(q - p).y, -(q - p).x} / length(q - p);
+        for (double sign : {-1.0, 1.0}) EXPECT_TRUE(in_fan(begin, end, mid + side * (sign * 0.999 * t)));
+      }
+    }
+  }
 }
 
 TEST(Png, RoundTrip) {

@@ -17,7 +17,7 @@ namespace curvetext {
 struct DrawBatch::Impl {
   GLuint vbo = 0;  // 0 when there is nothing to draw
   std::size_t vertex_count = 0;
-  Box bounds;  // of the vertices' base positions (outline units; fringe offsets not included)
+  Box bounds;  // of the vertices' base positions (outline units; growth offsets not included)
   std::uint64_t serial = 0;  // unique per upload: the vbaa pass is reused while it and the transform match
 
   Impl() = default;

@@ -105,11 +105,9 @@ void compile(const Shader& shader, GLenum type, const char* source, bool gles) {
   std::string text = preamble(type, gles);
   // Tolerances the shaders share with the library (tolerances.hpp), named
   // there only; preprocessor lines may precede #extension.
-  char defines[160];
-  std::snprintf(defines, sizeof defines,
-                "#define CURVETEXT_PIXEL_REACH_PX %.7f\n#define CURVETEXT_THIRD_CURVE_MIN_CHORD_PX %.7f\n",
-                static_cast<double>(tolerance::kFringeWidthPx),
-                static_cast<double>(tolerance::kThirdCurveMinChordPx));
+  char defines[96];
+  std::snprintf(defines, sizeof defines, "#define CURVETEXT_PIXEL_REACH_PX %.7f\n",
+                static_cast<double>(tolerance::kFringeWidthPx));
   text += defines;
   // #extension must precede other statements but follow #version; on desktop
   // core the derivatives are built in and the directive only warns.
@@ -178,11 +176,31 @@ std::array<float, 4> premultiplied(const Color& c, Blending blending) {
 
 }  // namespace
 
+namespace {
+// The uniforms both curve programs (curve.vert.glsl with curve.frag.glsl or
+// area.frag.glsl) have.
+struct ProgramUniforms {
+  GLint transform = -1, viewport = -1, fringe_px = -1, color = -1, coverage_exponent = -1, curve_mode = -1;
+  static ProgramUniforms of(GLuint program) {
+    ProgramUniforms u;
+    u.transform = glGetUniformLocation(program, "u_transform");
+    u.viewport = glGetUniformLocation(program, "u_viewport");
+    u.fringe_px = glGetUniformLocation(program, "u_fringe_px");
+    u.color = glGetUniformLocation(program, "u_color");
+    u.coverage_exponent = glGetUniformLocation(program, "u_coverage_exponent");
+    u.curve_mode = glGetUniformLocation(program, "u_curve_mode");
+    return u;
+  }
+};
+}  // namespace
+
 struct Renderer::Impl {
   GLuint program = 0;
-  GLint a_pos = -1, a_coef = -1, a_info = -1, a_fade = -1;
-  GLint u_transform = -1, u_viewport = -1, u_fringe_px = -1, u_color = -1,
-        u_aa = -1, u_curve_mode = -1, u_coverage_exponent = -1, u_debug = -1;
+  ProgramUniforms curve_u;  // of `program`
+  GLint u_aa = -1, u_debug = -1;
+  // Full AA: the same vertex stage, the exact area of each triangle per pixel.
+  GLuint area_program = 0;
+  ProgramUniforms area_u;
   Blending blending = Blending::Srgb;  // of the target begin() made
   bool gles = true;
   GLuint debug_ibo = 0;  // --debug: GL_LINES indices over the triangles
@@ -262,6 +280,7 @@ struct Renderer::Impl {
   ~Impl() {
     release_target();
     if (program != 0) glDeleteProgram(program);
+    if (area_program != 0) glDeleteProgram(area_program);
     if (resolve_program != 0) glDeleteProgram(resolve_program);
     if (quad_vbo != 0) glDeleteBuffers(1, &quad_vbo);
     if (debug_ibo != 0) glDeleteBuffers(1, &debug_ibo);
@@ -289,20 +308,19 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
   compile(vs, GL_VERTEX_SHADER, shader_source::curve_vert_glsl, gles);
   compile(fs, GL_FRAGMENT_SHADER, shader_source::curve_frag_glsl, gles);
   Impl& r = *impl_;
-  r.program = link_program(vs, fs, {"a_pos", "a_coef", "a_info", "a_fade"}, "curve shader program");
-  r.a_pos = 0;
-  r.a_coef = 1;
-  r.a_info = 2;
-  r.a_fade = 3;
-  r.u_transform = glGetUniformLocation(r.program, "u_transform");
-  r.u_viewport = glGetUniformLocation(r.program, "u_viewport");
-  r.u_fringe_px = glGetUniformLocation(r.program, "u_fringe_px");
-  r.u_color = glGetUniformLocation(r.program, "u_color");
+  r.program = link_program(vs, fs, {"a_pos", "a_coef", "a_info"}, "curve shader program");
+  r.curve_u = ProgramUniforms::of(r.program);
   r.u_aa = glGetUniformLocation(r.program, "u_aa");
-  r.u_curve_mode = glGetUniformLocation(r.program, "u_curve_mode");
-  r.u_coverage_exponent = glGetUniformLocation(r.program, "u_coverage_exponent");
   r.u_debug = glGetUniformLocation(r.program, "u_debug");
   r.gles = gles;
+
+  {
+    Shader avs(GL_VERTEX_SHADER), afs(GL_FRAGMENT_SHADER);
+    compile(avs, GL_VERTEX_SHADER, shader_source::curve_vert_glsl, gles);
+    compile(afs, GL_FRAGMENT_SHADER, shader_source::area_frag_glsl, gles);
+    r.area_program = link_program(avs, afs, {"a_pos", "a_coef", "a_info"}, "full antialiasing program");
+    r.area_u = ProgramUniforms::of(r.area_program);
+  }
 
   // The vbaa / msaa filter pass.
   {
@@ -433,86 +451,119 @@ void Renderer::draw(const DrawBatch& batch, const Placement& placement, const Dr
   const Transform full =
       placement.transform * Transform{{s, 0.0, placement.origin_x, 0.0, -s, placement.origin_y, 0.0, 0.0, 1.0}};
   if (options.debug) {
+    // The paper's Figure 1: its single pass, with what curved triangles discard shown.
     DrawOptions shown = options;
-    if (shown.antialiasing == AntiAliasing::Vbaa || shown.antialiasing == AntiAliasing::Msaa)
-      shown.antialiasing = AntiAliasing::Full;
+    if (shown.antialiasing != AntiAliasing::None) shown.antialiasing = AntiAliasing::Curves;
     draw_curves(b, full, vw, vh, shown);
     draw_debug_edges(b, full, vw, vh);
     return;
   }
-  if (options.antialiasing == AntiAliasing::Vbaa || options.antialiasing == AntiAliasing::Msaa) {
-    GLint target_fbo = 0;
-    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &target_fbo);
-    if (draw_offscreen(b, full, vw, vh, static_cast<GLuint>(target_fbo), options)) return;
-    DrawOptions single = options;
-    single.antialiasing = AntiAliasing::Full;
-    draw_curves(b, full, vw, vh, single);
+  if (options.antialiasing == AntiAliasing::None || options.antialiasing == AntiAliasing::Curves) {
+    draw_curves(b, full, vw, vh, options);
     return;
   }
-  draw_curves(b, full, vw, vh, options);
+  GLint target_fbo = 0;
+  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &target_fbo);
+  if (draw_offscreen(b, full, vw, vh, static_cast<GLuint>(target_fbo), options)) return;
+  // No coverage buffer fits (a block past the GL texture limit, or a
+  // perspective that puts part of it behind the eye): the triangles' areas
+  // blend straight into the target. Where two triangles split a pixel,
+  // source-over blending then loses up to a quarter of it (a + b - ab).
+  draw_area(b, full, vw, vh, premultiplied(options.color, r.blending), options.gamma, options.curve_mode, false);
 }
 
-void Renderer::draw_curves(const DrawBatch::Impl& b, const Transform& full, float vw, float vh,
-                           const DrawOptions& options) {
-  Impl& r = *impl_;
-  glUseProgram(r.program);
-  GLfloat m[9];  // column-major
+namespace {
+
+// The transform (outline units -> pixels) as a column-major mat3 uniform, and the viewport.
+void set_view(GLint u_transform, GLint u_viewport, const Transform& full, float vw, float vh) {
+  GLfloat m[9];
   for (int row = 0; row < 3; ++row)
     for (int col = 0; col < 3; ++col) m[col * 3 + row] = static_cast<GLfloat>(full.m[row * 3 + col]);
-  glUniformMatrix3fv(r.u_transform, 1, GL_FALSE, m);
-  glUniform2f(r.u_viewport, vw, vh);
-  const bool full_aa = options.antialiasing == AntiAliasing::Full || options.antialiasing == AntiAliasing::Auto;
-  glUniform1f(r.u_fringe_px, full_aa ? tolerance::kFringeWidthPx : 0.0f);
-  const std::array<float, 4> color = premultiplied(options.color, r.blending);
-  glUniform4f(r.u_color, color[0], color[1], color[2], color[3]);
-  glUniform1f(r.u_coverage_exponent, 1.0f / std::clamp(options.gamma, static_cast<float>(tolerance::kMinCoverageGamma),
-                                                       static_cast<float>(tolerance::kMaxCoverageGamma)));
-  glUniform1i(r.u_debug, options.debug ? 1 : 0);
-  glUniform1i(r.u_aa, options.antialiasing == AntiAliasing::None     ? 0
-                      : options.antialiasing == AntiAliasing::Curves ? 1
-                                                                     : 2);
-  glUniform1i(r.u_curve_mode, options.curve_mode == CurveMode::Paper ? 1 : 0);
+  glUniformMatrix3fv(u_transform, 1, GL_FALSE, m);
+  glUniform2f(u_viewport, vw, vh);
+}
 
+GLfloat coverage_exponent(float gamma) {
+  return 1.0f / std::clamp(gamma, static_cast<float>(tolerance::kMinCoverageGamma),
+                           static_cast<float>(tolerance::kMaxCoverageGamma));
+}
+
+// Draws the batch's triangles with the current program and blending; the
+// attributes sit at locations 0, 1, 2 (link_program binds them in order).
+void draw_triangles(const DrawBatch::Impl& b) {
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_STENCIL_TEST);
-  glDisable(GL_CULL_FACE);  // fringe quads come in either orientation
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied source-over
-
+  glDisable(GL_CULL_FACE);  // triangles come in either orientation
   glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
   const GLsizei stride = static_cast<GLsizei>(sizeof(gpu::Vertex));
-  const GLuint locs[4] = {static_cast<GLuint>(r.a_pos), static_cast<GLuint>(r.a_coef),
-                          static_cast<GLuint>(r.a_info), static_cast<GLuint>(r.a_fade)};
-  for (GLuint i = 0; i < 4; ++i) {
-    glEnableVertexAttribArray(locs[i]);
-    glVertexAttribPointer(locs[i], 4, GL_FLOAT, GL_FALSE, stride,
-                          reinterpret_cast<const void*>(static_cast<std::uintptr_t>(i) * 16u));
+  for (GLuint i = 0; i < gpu::kVertexAttributes; ++i) {
+    glEnableVertexAttribArray(i);
+    glVertexAttribPointer(i, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(static_cast<std::uintptr_t>(i) * 16u));
   }
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(b.vertex_count));
-  for (GLuint loc : locs) glDisableVertexAttribArray(loc);
+  for (GLuint i = 0; i < gpu::kVertexAttributes; ++i) glDisableVertexAttribArray(i);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   if (GLenum err = glGetError(); err != GL_NO_ERROR) {
     throw Error(ErrorCode::Gl, "drawing a batch failed (GL error " + hex(err) + ")");
   }
 }
 
+}  // namespace
+
+// Full AA: every triangle's exact area per pixel (shaders/area.frag.glsl),
+// added into the bound framebuffer (`accumulate`) or blended over it.
+void Renderer::draw_area(const DrawBatch::Impl& b, const Transform& full, float vw, float vh,
+                         const std::array<float, 4>& color, float gamma, CurveMode curve_mode, bool accumulate) {
+  Impl& r = *impl_;
+  glUseProgram(r.area_program);
+  set_view(r.area_u.transform, r.area_u.viewport, full, vw, vh);
+  glUniform1f(r.area_u.fringe_px, tolerance::kFringeWidthPx);
+  glUniform4f(r.area_u.color, color[0], color[1], color[2], color[3]);
+  glUniform1f(r.area_u.coverage_exponent, coverage_exponent(gamma));
+  glUniform1i(r.area_u.curve_mode, curve_mode == CurveMode::Paper ? 1 : 0);
+  glEnable(GL_BLEND);
+  if (accumulate) glBlendFunc(GL_ONE, GL_ONE);
+  else glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  draw_triangles(b);
+}
+
+// none and curves (and msaa's in/out pass): the paper's single pass.
+void Renderer::draw_curves(const DrawBatch::Impl& b, const Transform& full, float vw, float vh,
+                           const DrawOptions& options) {
+  Impl& r = *impl_;
+  glUseProgram(r.program);
+  set_view(r.curve_u.transform, r.curve_u.viewport, full, vw, vh);
+  glUniform1f(r.curve_u.fringe_px, 0.0f);  // triangles as they are
+  const std::array<float, 4> color = premultiplied(options.color, r.blending);
+  glUniform4f(r.curve_u.color, color[0], color[1], color[2], color[3]);
+  glUniform1f(r.curve_u.coverage_exponent, coverage_exponent(options.gamma));
+  glUniform1i(r.u_debug, options.debug ? 1 : 0);
+  glUniform1i(r.u_aa, options.antialiasing == AntiAliasing::Curves ? 1 : 0);
+  glUniform1i(r.curve_u.curve_mode, options.curve_mode == CurveMode::Paper ? 1 : 0);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied source-over
+  draw_triangles(b);
+}
+
 int Renderer::msaa_samples() const { return impl_->max_samples; }
 
-// vbaa / msaa (paper section 5): the block's projected bounding box (plus a
-// border) is drawn into an offscreen texture, r times larger for vbaa, or at
-// the same size into a multisampled renderbuffer resolved into it for msaa;
-// then a quad over the box filters it into the target. The offscreen pass is
+// full, vbaa and msaa: the block's projected bounding box (plus a border) is
+// drawn into an offscreen texture: for full, the sum of its triangles' exact
+// areas per pixel; for vbaa (paper section 5) the same r times larger; for
+// msaa, an in/out pass into a multisampled renderbuffer resolved into it.
+// Then a quad over the box filters it into the target. The offscreen pass is
 // kept and reused while the batch, its transform, the box and the mode stay
-// the same. False when it cannot be done here (the caller draws `full`).
+// the same. False when it cannot be done here (the caller blends the areas
+// directly).
 bool Renderer::draw_offscreen(const DrawBatch::Impl& b, const Transform& full, float vw, float vh,
                               GLuint target_fbo, const DrawOptions& options) {
   Impl& r = *impl_;
-  const bool msaa = options.antialiasing == AntiAliasing::Msaa;
-  if (msaa && r.max_samples < 2) return false;
+  const bool msaa = options.antialiasing == AntiAliasing::Msaa && r.max_samples >= 2;
+  const bool vbaa = options.antialiasing == AntiAliasing::Vbaa;
   if (b.bounds.empty()) return true;
   // Projected box of the batch (a projective map with w > 0 keeps convex
   // sets convex, so the corners' box holds the block), plus a border for
-  // the fringes and the filter's ring.
+  // the triangles' growth and the filter's ring.
   Box box;
   const Vec2 corners[4] = {b.bounds.min, {b.bounds.max.x, b.bounds.min.y}, {b.bounds.min.x, b.bounds.max.y}, b.bounds.max};
   for (Vec2 c : corners) {
@@ -526,11 +577,10 @@ bool Renderer::draw_offscreen(const DrawBatch::Impl& b, const Transform& full, f
   const int y1 = std::min(static_cast<int>(vh), static_cast<int>(std::ceil(box.max.y + border)));
   if (x1 <= x0 || y1 <= y0) return true;  // off screen
   const int w = x1 - x0, h = y1 - y0;
-  int factor = msaa ? 1 : std::clamp(options.vbaa_factor, 1, 8);
+  int factor = vbaa ? std::clamp(options.vbaa_factor, 1, 8) : 1;
   // Degrade gracefully: a smaller factor where the texture would pass the GL
-  // maximum; below 2 vbaa is no better than full.
+  // maximum (factor 1 is full).
   while (factor > 1 && (w * factor > r.max_offscreen || h * factor > r.max_offscreen)) --factor;
-  if (!msaa && factor < 2) return false;
   if (w * factor > r.max_offscreen || h * factor > r.max_offscreen) return false;
   const int tw = w * factor, th = h * factor;
 
@@ -545,15 +595,20 @@ bool Renderer::draw_offscreen(const DrawBatch::Impl& b, const Transform& full, f
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT);
     const Transform to_texture = Transform::scale(factor, factor) * Transform::translation(-x0, -y0) * full;
-    DrawOptions pass = options;
-    pass.color = Color{1, 1, 1, 1};
-    pass.antialiasing = msaa ? AntiAliasing::None : AntiAliasing::Full;
-    pass.gamma = 1.0f;  // applied after the filter
-    const Blending target_blending = r.blending;
-    r.blending = Blending::Srgb;  // the coverage texture is plain RGBA
-    draw_curves(b, to_texture, static_cast<float>(tw), static_cast<float>(th), pass);
-    r.blending = target_blending;
-    if (msaa) r.resolve_multisample(tw, th);
+    if (msaa) {
+      DrawOptions pass = options;
+      pass.color = Color{1, 1, 1, 1};
+      pass.antialiasing = AntiAliasing::None;
+      pass.gamma = 1.0f;  // applied after the filter
+      const Blending target_blending = r.blending;
+      r.blending = Blending::Srgb;  // the coverage texture is plain RGBA
+      draw_curves(b, to_texture, static_cast<float>(tw), static_cast<float>(th), pass);
+      r.blending = target_blending;
+      r.resolve_multisample(tw, th);
+    } else {
+      draw_area(b, to_texture, static_cast<float>(tw), static_cast<float>(th), {1.0f, 1.0f, 1.0f, 1.0f}, 1.0f,
+                options.curve_mode, true);
+    }
     r.offscreen_key = key;
     r.offscreen_valid = true;
     ++r.offscreen_passes;
@@ -569,12 +624,10 @@ bool Renderer::draw_offscreen(const DrawBatch::Impl& b, const Transform& full, f
   glUniform2f(r.u_r_texture_size, static_cast<float>(tw), static_cast<float>(th));
   glUniform2f(r.u_r_rect_origin, static_cast<float>(x0), static_cast<float>(y0));
   glUniform1f(r.u_r_r, static_cast<float>(factor));
-  glUniform1f(r.u_r_ring, msaa ? 0.0f : std::clamp(options.vbaa_ring, 0.0f, 1.0f));
+  glUniform1f(r.u_r_ring, vbaa && factor > 1 ? std::clamp(options.vbaa_ring, 0.0f, 1.0f) : 0.0f);
   const std::array<float, 4> color = premultiplied(options.color, r.blending);
   glUniform4f(r.u_r_color, color[0], color[1], color[2], color[3]);
-  glUniform1f(r.u_r_coverage_exponent,
-              1.0f / std::clamp(options.gamma, static_cast<float>(tolerance::kMinCoverageGamma),
-                                static_cast<float>(tolerance::kMaxCoverageGamma)));
+  glUniform1f(r.u_r_coverage_exponent, coverage_exponent(options.gamma));
   const float cx0 = 2.0f * static_cast<float>(x0) / vw - 1.0f, cx1 = 2.0f * static_cast<float>(x1) / vw - 1.0f;
   const float cy0 = 1.0f - 2.0f * static_cast<float>(y0) / vh, cy1 = 1.0f - 2.0f * static_cast<float>(y1) / vh;
   // Each corner as (clip x, clip y, pixel x, pixel y down); the pixel
@@ -598,7 +651,7 @@ bool Renderer::draw_offscreen(const DrawBatch::Impl& b, const Transform& full, f
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   glBindTexture(GL_TEXTURE_2D, 0);
   if (GLenum err = glGetError(); err != GL_NO_ERROR) {
-    throw Error(ErrorCode::Gl, std::string(msaa ? "msaa" : "vbaa") + " pass failed (GL error " + hex(err) + ")");
+    throw Error(ErrorCode::Gl, std::string(msaa ? "msaa" : vbaa ? "vbaa" : "full antialiasing") + " pass failed (GL error " + hex(err) + ")");
   }
   return true;
 }
@@ -622,24 +675,20 @@ void Renderer::draw_debug_edges(const DrawBatch::Impl& b, const Transform& full,
     r.debug_ibo_vertices = b.vertex_count;
   }
   glUseProgram(r.program);
-  GLfloat m[9];
-  for (int row = 0; row < 3; ++row)
-    for (int col = 0; col < 3; ++col) m[col * 3 + row] = static_cast<GLfloat>(full.m[row * 3 + col]);
-  glUniformMatrix3fv(r.u_transform, 1, GL_FALSE, m);
-  glUniform2f(r.u_viewport, vw, vh);
-  glUniform1f(r.u_fringe_px, 0.0f);  // the triangles themselves, fringes collapsed
+  set_view(r.curve_u.transform, r.curve_u.viewport, full, vw, vh);
+  glUniform1f(r.curve_u.fringe_px, 0.0f);  // the triangles themselves, not grown
   glUniform1i(r.u_debug, 2);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, r.debug_ibo);
   const GLsizei stride = static_cast<GLsizei>(sizeof(gpu::Vertex));
-  for (GLuint i = 0; i < 4; ++i) {
+  for (GLuint i = 0; i < gpu::kVertexAttributes; ++i) {
     glEnableVertexAttribArray(i);
     glVertexAttribPointer(i, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(static_cast<std::uintptr_t>(i) * 16u));
   }
   glDrawElements(GL_LINES, static_cast<GLsizei>(b.vertex_count / 3 * 6), GL_UNSIGNED_INT, nullptr);
-  for (GLuint i = 0; i < 4; ++i) glDisableVertexAttribArray(i);
+  for (GLuint i = 0; i < gpu::kVertexAttributes; ++i) glDisableVertexAttribArray(i);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
   glUniform1i(r.u_debug, 0);

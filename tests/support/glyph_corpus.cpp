@@ -16,7 +16,7 @@ namespace curvetext::test {
 namespace {
 
 // Empty pixels around each glyph's box in its cell: more than the 0.71 px
-// antialiasing fringe, so neighbouring cells never touch.
+// growth of full antialiasing's triangles, so neighbouring cells never touch.
 constexpr int kCellMarginPx = 2;
 // Side of a page made for one glyph too large for a shared page; a glyph
 // larger than this at the test size is drawn smaller (px).

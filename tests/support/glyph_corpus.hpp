@@ -51,10 +51,9 @@ inline constexpr double kCorpusBlurredErrorLimit = 0.3;
 inline constexpr double kCorpusCrackLimit = 0.3;
 // Reported, not limited: the ink difference sum(result) - sum(reference) in
 // px^2 and the largest error on pixels with no outline within one pixel
-// ("core"). Both are dominated by known antialiasing approximations rather
-// than by the mesh: sub-pixel strokes drawn too dark (their two edges are
-// faded independently), fringes reaching past acute spikes, and the
-// first-order distance F/|grad F| far from a curve near concave cusps.
+// ("core"). Full AA sums exact per-triangle areas, so what remains comes
+// from the arcs' tangent-polygon approximation within a pixel and the
+// coverage buffer's 8-bit steps, not from the mesh.
 // Bound on building plus checking one glyph's mesh, in seconds (the same as
 // `curvetext check`); slower glyphs are reported as failures.
 inline constexpr double kCorpusMaxGlyphSeconds = 1.0;

@@ -22,7 +22,8 @@ namespace curvetext {
 enum class AntiAliasing {
   None,    // in/out test only
   Curves,  // the paper's single pass: curved edges antialiased, straight edges aliased
-  Full,    // single pass, straight and curved edges antialiased (default)
+  Full,    // every triangle's exact area per pixel summed into a coverage buffer, then
+           // blended over the target (default; shaders/area.frag.glsl)
   Vbaa,    // the paper's view based AA: `full` drawn r times larger into a texture over the
            // block's projected bounding box, filtered down (falls back to full when the
            // texture would exceed the GL maximum)
@@ -90,7 +91,7 @@ struct DrawOptions {
 };
 
 // Bytes `mesh` takes in a GPU vertex buffer once packed (interior and curved
-// triangles plus the antialiasing fringes), as DrawBatch uploads it.
+// triangles, each grown for antialiasing), as DrawBatch uploads it.
 std::size_t gpu_bytes(const Mesh& mesh);
 
 // Meshes packed for the GPU, per glyph, keyed by (font cache key, glyph, level
@@ -173,6 +174,8 @@ class Renderer {
                    const DrawOptions& options);
   bool draw_offscreen(const DrawBatch::Impl& batch, const Transform& full, float width, float height,
                       unsigned target_framebuffer, const DrawOptions& options);
+  void draw_area(const DrawBatch::Impl& batch, const Transform& full, float width, float height,
+                 const std::array<float, 4>& color, float gamma, CurveMode curve_mode, bool accumulate);
   void draw_debug_edges(const DrawBatch::Impl& batch, const Transform& full, float width, float height);
   std::unique_ptr<Impl> impl_;
 };

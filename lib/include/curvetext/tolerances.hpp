@@ -33,44 +33,31 @@ inline constexpr double kMergeDistanceFontUnits = 1e-9;
 inline constexpr double kConicFlatnessRelative = 1e-9;
 
 // --- Rendering ----------------------------------------------------------------
-// Outward dilation of boundary geometry for the `full` antialiasing mode, in
-// pixels. A pixel's box filter reaches at most sqrt(2)/2 px from its centre.
-// Also the shaders' CURVETEXT_PIXEL_REACH_PX (defined when they are compiled,
-// lib/gpu/renderer.cpp): how far a pixel's box reaches past a curve's hull.
+// How far every triangle grows outward for `full` antialiasing (and vbaa's
+// offscreen pass), in pixels: a pixel's box reaches at most sqrt(2)/2 px
+// from its centre, so every pixel that overlaps a triangle gets a fragment of
+// it (shaders/area.frag.glsl). Also the shaders' CURVETEXT_PIXEL_REACH_PX.
 inline constexpr float kFringeWidthPx = 0.7072f;
 
-// Full AA: an interior triangle next to three curves (vertex kind 5, see
-// lib/gpu/vertex_format.hpp) folds in the third only where that curve's chord
-// spans at least this many pixels. At larger sizes it is the other curve of a
-// smooth join at the triangle's vertex, which pixels centred by the join need
-// (quality_bench: pixels off by > 0.15 at 24-384 px, 523 -> 421); on smaller
-// curves the extra fold only adds the approximation error of fold() (the
-// 10 px edge error rose from 0.0249 to 0.0264 with no limit, and is 0.0249
-// with this one). In pixels; the shaders' CURVETEXT_THIRD_CURVE_MIN_CHORD_PX.
-inline constexpr float kThirdCurveMinChordPx = 2.0f;
-
-// Full AA packing (lib/gpu/pack.cpp, safe_for): a boundary line fades a
-// triangle that reaches past the line's end by at most this fraction of the
-// line's length (and by no more than the triangle lies inside the line).
-// Unbounded, the bar under a hieroglyph's feet, cut into segments of 5-24
-// units where the feet join it, was faded under the feet (Noto Sans Egyptian
-// Hieroglyphs glyph 335: a line of pixels 0.33 too light); 0.1 keeps that at
-// its former 0.30 and still lets the slivers of a thin frame know both its
-// sides (Noto Sans Symbols2 glyphs 2159, 2188). Dimensionless.
-inline constexpr double kFadePastEndFraction = 0.1;
+// Growing a triangle (lib/gpu/pack.cpp): where 1 + cos(angle between the two
+// edges' outward normals) is below this, the miter would reach more than
+// 1 / sqrt(this / 2) = 4 times the growth past the vertex (a corner sharper
+// than about 29 degrees), and the corner is bevelled instead. Dimensionless.
+inline constexpr double kMinMiterDenominator = 0.125;
 
 // Border around a block's projected bounding box in the vbaa / msaa offscreen
-// pass, in pixels: the full-AA fringe (kFringeWidthPx) plus the filter's ring
+// pass, in pixels: the triangles' growth (kFringeWidthPx) plus the filter's ring
 // of one texel, rounded up.
 inline constexpr double kOffscreenBorderPx = 2.0;
 
 // `auto` antialiasing uses vbaa up to this many pixels per em (on screen) and
 // full above it, from bench/quality_bench's table: vbaa has the lowest edge
-// error (0.0010-0.0024) and largest error (0.03-0.08) of every mode at each
-// measured size, 8 to 384 px; above the largest size measured, full's edge
-// error is already 0.0015 and the offscreen texture (16x the block's pixels)
-// would grow with the square of the size. Past the GL texture limit vbaa
-// itself degrades to a smaller factor or to full.
+// error (0.0009-0.0020) and largest error (0.021-0.043) of every mode at each
+// measured size, 8 to 384 px (full: 0.0012-0.0058 and 0.041-0.109);
+// above the largest size measured, full's edge error is already 0.0012 and
+// vbaa's texture (16x the block's pixels) would grow with the square of the
+// size. Past the GL texture limit vbaa degrades to a smaller factor or to
+// full.
 inline constexpr double kAutoVbaaMaxPx = 384.0;
 
 // vbaa's "paper" filter (DrawOptions::vbaa_ring): horizontal and vertical

@@ -1,0 +1,203 @@
+// Full antialiasing, fragment stage: the exact area of this fragment's pixel
+// box inside one triangle of the mesh (and, for a curved triangle, on the
+// filled side of its arc). Drawn with additive blending into a coverage
+// buffer (lib/gpu/renderer.cpp): the mesh's triangles tile the filled region
+// exactly, so the sum over the triangles touching a pixel is its coverage,
+// with no need for any triangle to know about its neighbours. Vertex stage:
+// curve.vert.glsl, which grows every triangle by a pixel's reach
+// (lib/gpu/pack.cpp); layout: lib/gpu/vertex_format.hpp.
+#extension GL_OES_standard_derivatives : enable
+precision highp float;
+
+uniform vec4 u_color;  // premultiplied; white for the coverage buffer
+uniform float u_coverage_exponent;  // 1 / gamma; 1 for the coverage buffer
+uniform int u_curve_mode;  // 0 exact, 1 the paper's equation 2
+
+varying vec4 v_coef;  // (tau1, tau2, s, 0): the triangle's barycentrics; s a curve's filled side
+varying vec4 v_info;  // (kind, w, ...): kind 0 interior, 2 curved; w the conic's weight
+
+// A pixel's box reaches at most sqrt(2)/2 px from its centre (rounded up):
+// tolerance::kFringeWidthPx, defined by the renderer when compiling.
+const float kPixelReachPx = CURVETEXT_PIXEL_REACH_PX;
+
+// Clips the segment p + t u, t in [t0, t1], to the half-plane h (inside where
+// dot(h.xy, x) + h.z >= 0); the segment's own half-plane has the normal
+// (u.y, -u.x). Lines within 1e-4 of each other in angle (radians) and offset
+// (pixels) count as one. Facing the same way, exactly one of the pair may be
+// an edge, or rounding would count the area next to it twice (or not at
+// all); `yield_on_tie` says whether the segment gives way. Facing opposite
+// ways (a curve's tangent on its control triangle's leg), both stay: the
+// polygon between them is flat, and their two edges cancel. This moves an
+// edge by at most ~1e-4 px. Beyond that, t = -c / k is off by at most
+// ~1e-7 / 1e-4 = 1e-3 of a pixel.
+const float kParallel = 1e-4;
+void clip_segment(vec3 h, vec2 p, vec2 u, bool yield_on_tie, inout float t0, inout float t1) {
+  float c = dot(h.xy, p) + h.z;
+  float k = dot(h.xy, u);
+  if (abs(k) < kParallel) {
+    bool tie = abs(c) < kParallel;
+    bool same_way = dot(h.xy, vec2(u.y, -u.x)) > 0.0;
+    if (tie ? (yield_on_tie && same_way) : c < 0.0) t1 = t0 - 1.0;
+  } else if (k > 0.0) {
+    t0 = max(t0, -c / k);
+  } else {
+    t1 = min(t1, -c / k);
+  }
+}
+
+// Exact area of the unit box (centred on the origin) inside the half-planes
+// L[0 .. n): for a convex polygon, the sum over its edges of the signed
+// height from the origin times the edge's length, halved. Each line's edge is
+// its chord through the box clipped by the other lines; the box's sides are
+// clipped likewise. Loops over constants only (GLSL ES 1.00).
+const int kMaxPlanes = 6;
+float convex_area(vec3 L[6], int n) {
+  float area = 0.0;
+  for (int s = 0; s < 4; ++s) {
+    vec2 nn = s == 0 ? vec2(1.0, 0.0) : s == 1 ? vec2(-1.0, 0.0) : s == 2 ? vec2(0.0, 1.0) : vec2(0.0, -1.0);
+    vec2 p = -0.5 * nn;
+    vec2 u = vec2(-nn.y, nn.x);
+    float t0 = -0.5;
+    float t1 = 0.5;
+    for (int j = 0; j < kMaxPlanes; ++j) {
+      if (j >= n) break;
+      clip_segment(L[j], p, u, true, t0, t1);
+    }
+    area += 0.25 * max(t1 - t0, 0.0);
+  }
+  for (int i = 0; i < kMaxPlanes; ++i) {
+    if (i >= n) break;
+    vec3 h = L[i];
+    vec2 p = -h.z * h.xy;
+    vec2 u = vec2(-h.y, h.x);
+    float t0 = -2.0;
+    float t1 = 2.0;
+    clip_segment(vec3(1.0, 0.0, 0.5), p, u, false, t0, t1);
+    clip_segment(vec3(-1.0, 0.0, 0.5), p, u, false, t0, t1);
+    clip_segment(vec3(0.0, 1.0, 0.5), p, u, false, t0, t1);
+    clip_segment(vec3(0.0, -1.0, 0.5), p, u, false, t0, t1);
+    for (int j = 0; j < kMaxPlanes; ++j) {
+      if (j >= n) break;
+      if (j != i) clip_segment(L[j], p, u, j < i, t0, t1);
+    }
+    area += 0.5 * h.z * max(t1 - t0, 0.0);
+  }
+  return area;
+}
+
+// The half-plane of an affine function e with screen gradient g (pixels):
+// unit normal towards e > 0 and the signed distance of the pixel centre.
+vec3 half_plane(float e, vec2 g) {
+  float len = max(length(g), 1e-30);
+  return vec3(g / len, e / len);
+}
+
+// A point's offset (pixels) from the pixel centre, from its barycentrics.
+vec2 g_tau;    // (tau1, tau2) at the centre
+vec2 g_grad1;  // their screen gradients
+vec2 g_grad2;
+vec2 offset_of(float a1, float a2) {
+  vec2 d = vec2(a1, a2) - g_tau;
+  float det = g_grad1.x * g_grad2.y - g_grad1.y * g_grad2.x;
+  return vec2(d.x * g_grad2.y - d.y * g_grad1.y, g_grad1.x * d.y - g_grad2.x * d.x) / det;
+}
+
+// The arc's point at parameter t and its derivative (pixels per unit of t),
+// for the control triangle p0, c, p2 (pixels from the centre) and weight w.
+// Exact: the rational quadratic with weights 1, w, 1, X / W with X, W the
+// homogeneous numerator and denominator. Paper (u_curve_mode 1): the curve
+// of the paper's equation 2, v = w u (1 - u) / den(u) in its (u, v) =
+// (tau1 / 2 + tau2, tau1 / 2), with t = u; the same for w = 1 only.
+void arc_at(vec2 p0, vec2 c, vec2 p2, float w, float t, out vec2 b, out vec2 db) {
+  if (u_curve_mode == 1) {
+    float den = (2.0 - 2.0 * w) * t * t + 2.0 * (w - 1.0) * t + 1.0;
+    den = abs(den) < 1e-12 ? 1e-12 : den;
+    float dden = 2.0 * (2.0 - 2.0 * w) * t + 2.0 * (w - 1.0);
+    float v = w * t * (1.0 - t) / den;
+    float dv = w * ((1.0 - 2.0 * t) * den - t * (1.0 - t) * dden) / (den * den);
+    // Position = p0 + tau1 (c - p0) + tau2 (p2 - p0), tau1 = 2v, tau2 = u - v.
+    b = p0 + 2.0 * v * (c - p0) + (t - v) * (p2 - p0);
+    db = 2.0 * dv * (c - p0) + (1.0 - dv) * (p2 - p0);
+    return;
+  }
+  float a = 1.0 - t;
+  vec2 x = a * a * p0 + 2.0 * w * t * a * c + t * t * p2;
+  float wt = a * a + 2.0 * w * t * a + t * t;
+  vec2 dx = 2.0 * (a * (w * c - p0) + t * (p2 - w * c));
+  float dw = 2.0 * (a * (w - 1.0) + t * (1.0 - w));
+  b = x / wt;
+  db = (dx * wt - x * dw) / (wt * wt);
+}
+
+// The arc's tangent at t as the half-plane on the chord's side (through the
+// chord's midpoint m).
+vec3 tangent_plane(vec2 p0, vec2 c, vec2 p2, float w, float t, vec2 m) {
+  vec2 b;
+  vec2 d;
+  arc_at(p0, c, p2, w, t, b, d);
+  if (dot(d, d) < 1e-20) d = p2 - p0;
+  vec2 n = normalize(vec2(-d.y, d.x));
+  if (dot(n, m - b) < 0.0) n = -n;
+  return vec3(n, -dot(n, b));
+}
+
+void main() {
+  float t1 = v_coef.x;
+  float t2 = v_coef.y;
+  float t0 = 1.0 - t1 - t2;
+  // tau is affine, so its screen derivatives are exact.
+  vec2 g1 = vec2(dFdx(t1), dFdy(t1));
+  vec2 g2 = vec2(dFdx(t2), dFdy(t2));
+  vec2 g0 = -g1 - g2;
+  vec3 L[6];
+  L[0] = half_plane(t0, g0);
+  L[1] = half_plane(t1, g1);
+  L[2] = half_plane(t2, g2);
+  // The box misses the triangle when it lies wholly outside one of its edges.
+  for (int i = 0; i < 3; ++i) {
+    if (L[i].z <= -0.5 * (abs(L[i].x) + abs(L[i].y))) discard;
+  }
+  float area;
+  if (v_info.x < 1.5) {
+    area = convex_area(L, 3);
+  } else {
+    // A curved triangle: the part of the box inside its control triangle on
+    // the filled side of the arc. Between the chord and the arc lies a convex
+    // region, the intersection of the arc's tangent half-planes; three
+    // tangents spread over the pixel bound it to within the slivers between
+    // them (a circle of radius R with tangents 0.75 px apart: 0.018 / R of a
+    // pixel per gap): at the arc's point nearest the pixel centre and 0.75 px
+    // of arc to either side (at t = 0 and 1 the tangents are the legs).
+    // s = +1: filled on the chord's side; -1: beyond the arc, the control
+    // triangle minus that region.
+    g_tau = vec2(t1, t2);
+    g_grad1 = g1;
+    g_grad2 = g2;
+    vec2 p0 = offset_of(0.0, 0.0);
+    vec2 c = offset_of(1.0, 0.0);
+    vec2 p2 = offset_of(0.0, 1.0);
+    vec2 m = 0.5 * (p0 + p2);
+    float s = v_coef.z;
+    float w = v_info.y;
+    // The arc's point nearest the pixel centre: Gauss-Newton on
+    // dot(B(t), B'(t)) = 0 from the centre's projection on the chord.
+    vec2 chord = p2 - p0;
+    float t = clamp(-dot(p0, chord) / max(dot(chord, chord), 1e-30), 0.0, 1.0);
+    vec2 b;
+    vec2 db;
+    for (int i = 0; i < 3; ++i) {
+      arc_at(p0, c, p2, w, t, b, db);
+      t = clamp(t - dot(b, db) / max(dot(db, db), 1e-30), 0.0, 1.0);
+    }
+    arc_at(p0, c, p2, w, t, b, db);
+    float dt = 0.75 / max(length(db), 1e-6);
+    L[3] = tangent_plane(p0, c, p2, w, t, m);
+    L[4] = tangent_plane(p0, c, p2, w, max(t - dt, 0.0), m);
+    L[5] = tangent_plane(p0, c, p2, w, min(t + dt, 1.0), m);
+    float inside = convex_area(L, 6);
+    area = s > 0.0 ? inside : convex_area(L, 3) - inside;
+  }
+  area = clamp(area, 0.0, 1.0);
+  if (area <= 0.0) discard;
+  gl_FragColor = u_color * (u_coverage_exponent == 1.0 ? area : pow(area, u_coverage_exponent));
+}
