@@ -163,8 +163,9 @@ class Renderer {
   int msaa_samples() const;
   // The framebuffer as straight-alpha RGBA (sRGB encoded), row 0 at the top.
   Image read_pixels();
-  // How many times vbaa / msaa drew their offscreen pass (a draw of the same
-  // batch with the same transform into the same box reuses the last one).
+  // How many times full / vbaa / msaa drew their offscreen pass (a draw of
+  // the same batch with the same transform into the same box reuses the
+  // last one).
   std::size_t offscreen_passes() const;
 
   struct Impl;
