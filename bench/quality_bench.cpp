@@ -342,15 +342,21 @@ int main(int argc, char** argv) {
       if (s >= 24) target("full", s, 0.15, true);
       if (s >= 8 && s <= 16) target("vbaa", s, 0.02, false);
     }
+    // Better than both atlases at every size from 10 px: what curvetext
+    // draws, i.e. the antialiasing modes whose accuracy it chooses (full,
+    // vbaa, auto). msaa's is the context's sample count (an in/out test per
+    // sample: 1 / samples steps), so it is printed for information only.
     for (const std::string& m : modes) {
-      if (m == "none" || m == "curves") continue;
+      if (m == "none" || m == "curves" || m.rfind("atlas", 0) == 0) continue;
+      const bool counted = m != "msaa";
       for (double s : sizes) {
         if (s < 10) continue;
         const double e = results[m][s].edge;
         const double best_atlas = std::min(results["atlas-bitmap32"][s].edge, results["atlas-sdf64"][s].edge);
         const bool ok = e < best_atlas;
-        if (!ok) ++missed;
-        std::printf("%s %-6s %5g px edge %.4f < best atlas %.4f\n", ok ? "ok  " : "MISS", m.c_str(), s, e, best_atlas);
+        if (!ok && counted) ++missed;
+        std::printf("%s %-6s %5g px edge %.4f < best atlas %.4f%s\n", ok ? "ok  " : counted ? "MISS" : "info",
+                    m.c_str(), s, e, best_atlas, counted ? "" : "  (msaa: the context's samples, not a target)");
       }
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
