@@ -92,16 +92,6 @@ vec3 half_plane(float e, vec2 g) {
   return vec3(g / len, e / len);
 }
 
-// A point's offset (pixels) from the pixel centre, from its barycentrics.
-vec2 g_tau;    // (tau1, tau2) at the centre
-vec2 g_grad1;  // their screen gradients
-vec2 g_grad2;
-vec2 offset_of(float a1, float a2) {
-  vec2 d = vec2(a1, a2) - g_tau;
-  float det = g_grad1.x * g_grad2.y - g_grad1.y * g_grad2.x;
-  return vec2(d.x * g_grad2.y - d.y * g_grad1.y, g_grad1.x * d.y - g_grad2.x * d.x) / det;
-}
-
 // The arc's point at parameter t and its derivative (pixels per unit of t),
 // for the control triangle p0, c, p2 (pixels from the centre) and weight w.
 // Exact: the rational quadratic with weights 1, w, 1, X / W with X, W the
@@ -129,16 +119,21 @@ void arc_at(vec2 p0, vec2 c, vec2 p2, float w, float t, out vec2 b, out vec2 db)
   db = (dx * wt - x * dw) / (wt * wt);
 }
 
-// The arc's tangent at t as the half-plane on the chord's side (through the
-// chord's midpoint m).
+// The tangent through arc point b with derivative d, as the half-plane on
+// the chord's side (through the chord's midpoint m; chord = p2 - p0).
+vec3 tangent_through(vec2 b, vec2 d, vec2 chord, vec2 m) {
+  if (dot(d, d) < 1e-20) d = chord;
+  vec2 n = normalize(vec2(-d.y, d.x));
+  if (dot(n, m - b) < 0.0) n = -n;
+  return vec3(n, -dot(n, b));
+}
+
+// The arc's tangent at t, as above.
 vec3 tangent_plane(vec2 p0, vec2 c, vec2 p2, float w, float t, vec2 m) {
   vec2 b;
   vec2 d;
   arc_at(p0, c, p2, w, t, b, d);
-  if (dot(d, d) < 1e-20) d = p2 - p0;
-  vec2 n = normalize(vec2(-d.y, d.x));
-  if (dot(n, m - b) < 0.0) n = -n;
-  return vec3(n, -dot(n, b));
+  return tangent_through(b, d, p2 - p0, m);
 }
 
 void main() {
@@ -170,12 +165,15 @@ void main() {
     // of arc to either side (at t = 0 and 1 the tangents are the legs).
     // s = +1: filled on the chord's side; -1: beyond the arc, the control
     // triangle minus that region.
-    g_tau = vec2(t1, t2);
-    g_grad1 = g1;
-    g_grad2 = g2;
-    vec2 p0 = offset_of(0.0, 0.0);
-    vec2 c = offset_of(1.0, 0.0);
-    vec2 p2 = offset_of(0.0, 1.0);
+    // The control points in pixels from the centre: solving g1 . x = dtau1,
+    // g2 . x = dtau2, whose inverse has the columns e1 and e2 (a unit step
+    // of tau1 or tau2).
+    float det = g1.x * g2.y - g1.y * g2.x;
+    vec2 e1 = vec2(g2.y, -g2.x) / det;
+    vec2 e2 = vec2(-g1.y, g1.x) / det;
+    vec2 p0 = -t1 * e1 - t2 * e2;
+    vec2 c = p0 + e1;
+    vec2 p2 = p0 + e2;
     vec2 m = 0.5 * (p0 + p2);
     float s = v_coef.z;
     float w = v_info.y;
@@ -191,7 +189,7 @@ void main() {
     }
     arc_at(p0, c, p2, w, t, b, db);
     float dt = 0.75 / max(length(db), 1e-6);
-    L[3] = tangent_plane(p0, c, p2, w, t, m);
+    L[3] = tangent_through(b, db, chord, m);
     L[4] = tangent_plane(p0, c, p2, w, max(t - dt, 0.0), m);
     L[5] = tangent_plane(p0, c, p2, w, min(t + dt, 1.0), m);
     float inside = convex_area(L, 6);

@@ -15,9 +15,8 @@ varying vec4 v_coef;
 varying vec4 v_info;
 
 // Signed distance in pixels to the exact conic F = tau1^2 - 4 w^2 tau0 tau2
-// (positive on the filled side s), first order (the paper's), and its unit
-// normal towards the filled side.
-float conic_distance(float t1, float t2, vec2 g1, vec2 g2, float w, float s, out vec2 n) {
+// (positive on the filled side s), first order (the paper's).
+float conic_distance(float t1, float t2, vec2 g1, vec2 g2, float w, float s) {
   float t0 = 1.0 - t1 - t2;
   vec2 g0 = -g1 - g2;
   float w4 = 4.0 * w * w;
@@ -25,12 +24,7 @@ float conic_distance(float t1, float t2, vec2 g1, vec2 g2, float w, float s, out
   // Analytic gradient: dFdx(f) would be a finite difference of a quadratic.
   vec2 gf = 2.0 * t1 * g1 - w4 * (t2 * g0 + t0 * g2);
   float glen = length(gf);
-  if (glen <= 1e-20) {
-    n = vec2(1.0, 0.0);
-    return -s * f * 1e20;
-  }
-  n = -s * gf / glen;
-  return -s * f / glen;
+  return glen > 1e-20 ? -s * f / glen : -s * f * 1e20;
 }
 
 void main() {
@@ -49,9 +43,8 @@ void main() {
     vec2 g1 = vec2(dFdx(t1), dFdy(t1));
     vec2 g2 = vec2(dFdx(t2), dFdy(t2));
     float d;
-    vec2 n;
     if (u_curve_mode == 0) {
-      d = conic_distance(t1, t2, g1, g2, w, s, n);
+      d = conic_distance(t1, t2, g1, g2, w, s);
     } else {
       // The paper's equation 2 with (u, v) = (tau1/2 + tau2, tau1/2), w0 = w2 = 1,
       // and its gradient by the chain rule (equation 3).
@@ -64,7 +57,6 @@ void main() {
       float f = v - w * u * (1.0 - u) / den;
       vec2 gf = gv - w * (1.0 - 2.0 * u) / (den * den) * gu;
       float glen = length(gf);
-      n = (glen > 1e-20) ? -s * gf / glen : vec2(1.0, 0.0);
       // Signed distance in pixels, positive on the filled side.
       d = (glen > 1e-20) ? -s * f / glen : -s * f * 1e20;
     }

@@ -88,11 +88,12 @@ int grown_polygon(const std::array<Vec2, 3>& p, std::array<Corner, 6>& out) {
   return count;
 }
 
+// The barycentrics (tau1, tau2) at a triangle's own vertices.
+constexpr std::array<std::array<float, 2>, 3> kCornerTau{{{0.0f, 0.0f}, {1.0f, 0.0f}, {0.0f, 1.0f}}};
+
 // Appends triangle p (of vertex kind `kind`) grown as above, as a fan.
-// tau: the barycentrics at p's vertices; s and w: a curve's filled side and
-// weight (0 for interior triangles).
-void emit(const std::array<Vec2, 3>& p, const std::array<std::array<float, 2>, 3>& tau, const Bary& g, int kind,
-          float s, float w, std::vector<Vertex>& out) {
+// s and w: a curve's filled side and weight (0 for interior triangles).
+void emit(const std::array<Vec2, 3>& p, const Bary& g, int kind, float s, float w, std::vector<Vertex>& out) {
   std::array<Corner, 6> poly;
   const int count = grown_polygon(p, poly);
   auto vertex = [&](const Corner& c) {
@@ -102,8 +103,8 @@ void emit(const std::array<Vec2, 3>& p, const std::array<std::array<float, 2>, 3
     v.pos[1] = static_cast<float>(p[k].y);
     v.pos[2] = static_cast<float>(c.offset.x);
     v.pos[3] = static_cast<float>(c.offset.y);
-    v.coef[0] = tau[k][0];
-    v.coef[1] = tau[k][1];
+    v.coef[0] = kCornerTau[k][0];
+    v.coef[1] = kCornerTau[k][1];
     v.coef[2] = s;
     v.coef[3] = 0.0f;
     v.info[0] = static_cast<float>(kind);
@@ -119,8 +120,6 @@ void emit(const std::array<Vec2, 3>& p, const std::array<std::array<float, 2>, 3
   }
 }
 
-constexpr std::array<std::array<float, 2>, 3> kCornerTau{{{0.0f, 0.0f}, {1.0f, 0.0f}, {0.0f, 1.0f}}};
-
 }  // namespace
 
 void pack_mesh(const Mesh& mesh, std::vector<Vertex>& out) {
@@ -128,12 +127,12 @@ void pack_mesh(const Mesh& mesh, std::vector<Vertex>& out) {
   for (const auto& tri : mesh.triangles) {
     const std::array<Vec2, 3> p{mesh.points[tri[0]], mesh.points[tri[1]], mesh.points[tri[2]]};
     const Bary g = bary_of(p[0], p[1], p[2]);
-    if (g.ok) emit(p, kCornerTau, g, kSolid, 0.0f, 0.0f, out);
+    if (g.ok) emit(p, g, kSolid, 0.0f, 0.0f, out);
   }
   for (const CurvedTriangle& ct : mesh.curves) {
     const std::array<Vec2, 3> p{mesh.points[ct.p0], mesh.points[ct.control], mesh.points[ct.p2]};
     const Bary g = bary_of(p[0], p[1], p[2]);
-    if (g.ok) emit(p, kCornerTau, g, kCurve, ct.convex ? 1.0f : -1.0f, static_cast<float>(ct.weight), out);
+    if (g.ok) emit(p, g, kCurve, ct.convex ? 1.0f : -1.0f, static_cast<float>(ct.weight), out);
   }
 }
 

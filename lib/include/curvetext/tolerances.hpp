@@ -53,7 +53,7 @@ inline constexpr double kOffscreenBorderPx = 2.0;
 // `auto` antialiasing uses vbaa up to this many pixels per em (on screen) and
 // full above it, from bench/quality_bench's table: vbaa has the lowest edge
 // error (0.0009-0.0020) and largest error (0.021-0.043) of every mode at each
-// measured size, 8 to 384 px (full: 0.0012-0.0058 and 0.041-0.109);
+// measured size, 8 to 384 px (full: 0.0012-0.0058 and 0.041-0.074);
 // above the largest size measured, full's edge error is already 0.0012 and
 // vbaa's texture (16x the block's pixels) would grow with the square of the
 // size. Past the GL texture limit vbaa degrades to a smaller factor or to
