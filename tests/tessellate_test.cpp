@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <map>
 #include <string>
 #include <utility>
 #include <numbers>
@@ -15,6 +18,7 @@
 #include "curvetext/mesh.hpp"
 #include "curvetext/outline.hpp"
 #include "tessellate/predicates.hpp"
+#include "tessellate/triangulate.hpp"
 
 namespace curvetext {
 namespace {
@@ -656,6 +660,220 @@ TEST(Crossing, RandomOverlappingCircles) {
     const Mesh mesh = build_mesh(o);
     const MeshCheck check = check_mesh(mesh, o);
     for (const std::string& p : check.problems) ADD_FAILURE() << p;
+  }
+}
+
+}  // namespace
+}  // namespace curvetext
+
+// --- Plane-sweep triangulation and flips (the fast path of build_mesh) ------
+
+namespace curvetext {
+namespace {
+
+// Polygon loops for sweep_triangulate: every loop's filled side on its left
+// (outers counter-clockwise, holes clockwise), all positions in `points`.
+struct Loops {
+  std::vector<Vec2> points;
+  std::vector<std::uint32_t> vertices, start{0};
+  int outers = 0, holes = 0;
+  double area = 0.0;  // signed shoelace sum: the filled area
+
+  void add(const std::vector<Vec2>& loop, bool hole) {
+    for (const Vec2 p : loop) {
+      vertices.push_back(static_cast<std::uint32_t>(points.size()));
+      points.push_back(p);
+    }
+    start.push_back(static_cast<std::uint32_t>(vertices.size()));
+    for (std::size_t i = 0; i < loop.size(); ++i) area += 0.5 * cross(loop[i], loop[(i + 1) % loop.size()]);
+    (hole ? holes : outers) += 1;
+  }
+  std::size_t expected_triangles() const { return vertices.size() - 2 * outers + 2 * holes; }
+};
+
+// Checks that `triangles` triangulate the loops: counter-clockwise, the
+// expected count and area, each loop edge on exactly one triangle (same
+// direction) and every other edge on exactly two (opposite directions).
+void expect_triangulation(const Loops& loops, const std::vector<std::array<std::uint32_t, 3>>& triangles) {
+  EXPECT_EQ(triangles.size(), loops.expected_triangles());
+  double area = 0.0;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
+  for (const auto& t : triangles) {
+    EXPECT_GT(detail::orient2d(loops.points[t[0]], loops.points[t[1]], loops.points[t[2]]), 0);
+    area += 0.5 * cross(loops.points[t[1]] - loops.points[t[0]], loops.points[t[2]] - loops.points[t[0]]);
+    for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
+  }
+  EXPECT_NEAR(area, loops.area, 1e-9 * std::max(1.0, std::fabs(loops.area)));
+  std::map<std::pair<std::uint32_t, std::uint32_t>, bool> loop_edge;
+  for (std::size_t l = 0; l + 1 < loops.start.size(); ++l) {
+    for (std::uint32_t k = loops.start[l]; k < loops.start[l + 1]; ++k) {
+      const std::uint32_t next = k + 1 == loops.start[l + 1] ? loops.start[l] : k + 1;
+      loop_edge[{loops.vertices[k], loops.vertices[next]}] = true;
+    }
+  }
+  for (const auto& [edge, count] : directed) {
+    EXPECT_EQ(count, 1) << "edge " << edge.first << "-" << edge.second << " used twice in one direction";
+    const bool reverse = directed.count({edge.second, edge.first}) != 0;
+    if (loop_edge.count(edge)) {
+      EXPECT_FALSE(reverse) << "loop edge " << edge.first << "-" << edge.second << " has a triangle outside";
+    } else {
+      EXPECT_TRUE(reverse) << "inner edge " << edge.first << "-" << edge.second << " has one triangle";
+    }
+  }
+  for (const auto& [edge, is_loop] : loop_edge) EXPECT_TRUE(directed.count(edge)) << "loop edge missing";
+}
+
+// A star polygon around c: n angles, the k-th in [k, k + 0.8] * 2 pi / n, so
+// no gap between neighbours exceeds 1.8 * 2 pi / n (for n >= 4 less than pi:
+// the polygon is simple and holds c), radii in [r0, r1].
+std::vector<Vec2> random_star(std::mt19937& rng, Vec2 c, int n, double r0, double r1, bool integer) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Vec2> pts;
+  for (int k = 0; k < n; ++k) {
+    const double a = 2.0 * std::numbers::pi * (k + 0.8 * unit(rng)) / n;
+    const double r = r0 + (r1 - r0) * unit(rng);
+    Vec2 p{c.x + r * std::cos(a), c.y + r * std::sin(a)};
+    if (integer) p = {std::round(p.x), std::round(p.y)};
+    if (pts.empty() || !(pts.back() == p)) pts.push_back(p);
+  }
+  if (pts.size() > 1 && pts.front() == pts.back()) pts.pop_back();
+  return pts;
+}
+
+TEST(Sweep, RandomStarsWithHolesAndIslands) {
+  std::mt19937 rng(2026);
+  int swept = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    // Real coordinates, then integer ones (equal y's, collinear runs).
+    const bool integer = trial % 2 == 1;
+    Loops loops;
+    const int outers = 1 + trial % 3;
+    for (int o = 0; o < outers; ++o) {
+      // Outer stars 400 apart: radius at most 150, so they never meet. With
+      // at least 12 vertices no angular gap exceeds 0.3 pi, so every edge
+      // stays 100 cos(0.15 pi) > 89 from the centre, and the holes (squares
+      // or small stars) within 30 sqrt(2) + 24 < 67 of it fit inside.
+      const Vec2 c{400.0 * o, 0.0};
+      std::vector<Vec2> outer = random_star(rng, c, 12 + static_cast<int>(rng() % 50), 100, 150, integer);
+      loops.add(outer, false);
+      const int holes = static_cast<int>(rng() % 4);
+      for (int h = 0; h < holes; ++h) {
+        // Holes in the four quadrants: at most 25 in size, 5 from the axes.
+        const Vec2 hc{c.x + (h % 2 ? 30.0 : -30.0), c.y + (h / 2 ? 30.0 : -30.0)};
+        std::vector<Vec2> hole = h == 0 ? square(hc.x - 12, hc.y - 12, 24, true)
+                                        : random_star(rng, hc, 4 + static_cast<int>(rng() % 12), 8, 24, integer);
+        std::reverse(hole.begin(), hole.end());  // clockwise: filled side on the left
+        if (hole.size() >= 3) loops.add(hole, true);
+      }
+    }
+    if (loops.outers == 0) continue;
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    if (!detail::sweep_triangulate(loops.points, loops.vertices, loops.start, triangles)) {
+      // Integer rounding can put three star vertices on a line through an
+      // extreme vertex; only then may the sweep give up.
+      EXPECT_TRUE(integer);
+      EXPECT_TRUE(triangles.empty());
+      continue;
+    }
+    ++swept;
+    expect_triangulation(loops, triangles);
+  }
+  EXPECT_GT(swept, 300);
+}
+
+TEST(Sweep, AxisAlignedShapesWithEqualHeights) {
+  // An "E", a comb whose teeth end at one height, and a frame with two holes
+  // side by side: many vertices share a y, and the sweep orders them by x.
+  Loops e;
+  e.add({{0, 0}, {10, 0}, {10, 2}, {2, 2}, {2, 4}, {8, 4}, {8, 6}, {2, 6}, {2, 8}, {10, 8}, {10, 10}, {0, 10}}, false);
+  Loops comb;
+  comb.add({{0, 0}, {9, 0}, {9, 5}, {8, 5}, {8, 1}, {7, 1}, {7, 5}, {6, 5}, {6, 1}, {5, 1}, {5, 5}, {4, 5},
+            {4, 1}, {3, 1}, {3, 5}, {2, 5}, {2, 1}, {1, 1}, {1, 5}, {0, 5}},
+           false);
+  Loops frame;
+  frame.add(square(0, 0, 10, true), false);
+  frame.add(square(1, 1, 3, false), true);
+  frame.add(square(6, 1, 3, false), true);
+  for (const Loops* loops : {&e, &comb, &frame}) {
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    ASSERT_TRUE(detail::sweep_triangulate(loops->points, loops->vertices, loops->start, triangles));
+    expect_triangulation(*loops, triangles);
+  }
+}
+
+TEST(Sweep, GivesUpOnTouchingAndDegenerateLoops) {
+  auto gives_up = [](const Loops& loops) {
+    std::vector<std::array<std::uint32_t, 3>> triangles{{7, 8, 9}};
+    const bool ok = detail::sweep_triangulate(loops.points, loops.vertices, loops.start, triangles);
+    EXPECT_EQ(triangles.size(), 1u);  // nothing appended
+    return !ok;
+  };
+  Loops shared_corner;  // two squares touching at (10, 10)
+  shared_corner.add(square(0, 0, 10, true), false);
+  shared_corner.add(square(10, 10, 10, true), false);
+  EXPECT_TRUE(gives_up(shared_corner));
+  Loops on_edge;  // a triangle whose corner lies on the square's top edge
+  on_edge.add(square(0, 0, 10, true), false);
+  on_edge.add({{5, 10}, {8, 15}, {2, 15}}, false);
+  EXPECT_TRUE(gives_up(on_edge));
+  Loops spike;  // zero-width spike down to (5, -5) and back along the same line
+  spike.add({{0, 0}, {5, 0}, {5, -5}, {5, -2}, {10, 0}, {10, 10}, {0, 10}}, false);
+  EXPECT_TRUE(gives_up(spike));
+  Loops two_points;  // fewer than three vertices
+  two_points.add({{0, 0}, {1, 0}}, false);
+  EXPECT_TRUE(gives_up(two_points));
+}
+
+// Flips on the sweep's triangulation: the manifold version gives the same
+// triangles as the general one (no four points cocircular with random real
+// coordinates, so the constrained Delaunay triangulation is unique), and the
+// result is locally Delaunay at every inner edge.
+TEST(DelaunayFlipsManifold, AgreesWithTheGeneralFlips) {
+  std::mt19937 rng(77);
+  for (int trial = 0; trial < 200; ++trial) {
+    Loops loops;
+    loops.add(random_star(rng, {0, 0}, 12 + trial % 60, 100, 150, false), false);
+    if (trial % 2) {
+      std::vector<Vec2> hole = random_star(rng, {0, 0}, 4 + trial % 9, 20, 60, false);
+      std::reverse(hole.begin(), hole.end());
+      loops.add(hole, true);
+    }
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    std::vector<std::array<std::uint32_t, 3>> swept;
+    if (!detail::sweep_triangulate(loops.points, loops.vertices, loops.start, swept)) continue;
+    std::vector<detail::EdgeKey> constrained;
+    for (std::size_t l = 0; l + 1 < loops.start.size(); ++l) {
+      for (std::uint32_t k = loops.start[l]; k < loops.start[l + 1]; ++k) {
+        const std::uint32_t next = k + 1 == loops.start[l + 1] ? loops.start[l] : k + 1;
+        constrained.push_back(detail::edge_key(loops.vertices[k], loops.vertices[next]));
+      }
+    }
+    std::sort(constrained.begin(), constrained.end());
+    auto general = swept, manifold = swept;
+    detail::delaunay_flips(loops.points, general, constrained);
+    detail::delaunay_flips_manifold(loops.points, manifold);
+    expect_triangulation(loops, manifold);
+    auto canonical = [](std::vector<std::array<std::uint32_t, 3>> ts) {
+      for (auto& t : ts) std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+      std::sort(ts.begin(), ts.end());
+      return ts;
+    };
+    EXPECT_EQ(canonical(general), canonical(manifold));
+    // Locally Delaunay: across every inner edge, the opposite vertex is not
+    // strictly inside the circumcircle.
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> opposite;
+    for (const auto& t : manifold)
+      for (int k = 0; k < 3; ++k) opposite[{t[k], t[(k + 1) % 3]}] = t[(k + 2) % 3];
+    for (const auto& [edge, c] : opposite) {
+      const auto other = opposite.find({edge.second, edge.first});
+      if (other == opposite.end() || std::binary_search(constrained.begin(), constrained.end(),
+                                                        detail::edge_key(edge.first, edge.second)))
+        continue;
+      EXPECT_LE(detail::incircle_sign(loops.points[edge.first], loops.points[edge.second], loops.points[c],
+                                      loops.points[other->second]),
+                0);
+    }
   }
 }
 

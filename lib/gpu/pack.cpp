@@ -27,9 +27,11 @@
 namespace curvetext::gpu {
 namespace {
 
+// Unit vector along d; the squared length is finite for every triangle that
+// reaches here (bary_of rejects the others), so no hypot is needed.
 Vec2 unit(Vec2 d) {
-  const double len = length(d);
-  return len > 0 ? d / len : Vec2{};
+  const double len2 = dot(d, d);
+  return len2 > 0 ? d * (1.0 / std::sqrt(len2)) : Vec2{};
 }
 
 // Affine barycentric coordinates (tau1, tau2) of a triangle (a, b, c):
@@ -45,8 +47,9 @@ Bary bary_of(Vec2 a, Vec2 b, Vec2 c) {
   const double scale = dot(b - a, b - a) + dot(c - a, c - a);
   // A flat triangle covers nothing; its barycentrics would be noise.
   if (!(std::isfinite(area2) && std::fabs(area2) > 1e-12 * scale)) return g;
-  g.grad1 = Vec2{(c - a).y, -(c - a).x} / area2;
-  g.grad2 = Vec2{-(b - a).y, (b - a).x} / area2;
+  const double inv = 1.0 / area2;
+  g.grad1 = Vec2{(c - a).y, -(c - a).x} * inv;
+  g.grad2 = Vec2{-(b - a).y, (b - a).x} * inv;
   g.ok = true;
   return g;
 }
@@ -60,30 +63,31 @@ struct Corner {
 // edge moves outward by 1 (times t); see the file comment for the bevels.
 int grown_polygon(const std::array<Vec2, 3>& p, std::array<Corner, 6>& out) {
   const double orientation = cross(p[1] - p[0], p[2] - p[0]) > 0 ? 1.0 : -1.0;
-  std::array<Vec2, 3> normal{};  // outward, of edge k: p[k] -> p[k + 1]
-  for (int k = 0; k < 3; ++k) {
-    const Vec2 d = unit(p[static_cast<std::size_t>((k + 1) % 3)] - p[static_cast<std::size_t>(k)]);
-    normal[static_cast<std::size_t>(k)] = Vec2{d.y, -d.x} * orientation;
+  std::array<Vec2, 3> along{};   // unit direction of edge k: p[k] -> p[k + 1]
+  std::array<Vec2, 3> normal{};  // its outward normal
+  for (std::size_t k = 0; k < 3; ++k) {
+    along[k] = unit(p[(k + 1) % 3] - p[k]);
+    normal[k] = Vec2{along[k].y, -along[k].x} * orientation;
   }
   int count = 0;
-  for (int k = 0; k < 3; ++k) {
-    const Vec2 na = normal[static_cast<std::size_t>((k + 2) % 3)];  // edge arriving at p[k]
-    const Vec2 nb = normal[static_cast<std::size_t>(k)];            // edge leaving p[k]
+  for (std::size_t k = 0; k < 3; ++k) {
+    const std::size_t arriving = (k + 2) % 3;
+    const Vec2 na = normal[arriving];  // edge arriving at p[k]
+    const Vec2 nb = normal[k];         // edge leaving p[k]
     const double denom = 1.0 + dot(na, nb);
     if (denom > tolerance::kMinMiterDenominator) {
-      out[static_cast<std::size_t>(count++)] = Corner{k, (na + nb) / denom};
+      out[static_cast<std::size_t>(count++)] = Corner{static_cast<int>(k), (na + nb) * (1.0 / denom)};
       continue;
     }
     // Bevel: the points of both moved edges at distance 1 from p[k] along
     // the outward bisector u.
-    const Vec2 here = p[static_cast<std::size_t>(k)];
-    const Vec2 ea = unit(here - p[static_cast<std::size_t>((k + 2) % 3)]);  // along the arriving edge, onward
-    const Vec2 eb = unit(here - p[static_cast<std::size_t>((k + 1) % 3)]);  // along the leaving edge, backward
+    const Vec2 ea = along[arriving];  // along the arriving edge, onward
+    const Vec2 eb = along[k] * -1.0;  // along the leaving edge, backward
     const Vec2 u = unit(ea + eb);
     const double ua = dot(u, ea), ub = dot(u, eb);
     if (!(ua > 1e-9 && ub > 1e-9)) return 0;  // a needle with no width: nothing to draw
-    out[static_cast<std::size_t>(count++)] = Corner{k, na + ea * ((1.0 - dot(u, na)) / ua)};
-    out[static_cast<std::size_t>(count++)] = Corner{k, nb + eb * ((1.0 - dot(u, nb)) / ub)};
+    out[static_cast<std::size_t>(count++)] = Corner{static_cast<int>(k), na + ea * ((1.0 - dot(u, na)) / ua)};
+    out[static_cast<std::size_t>(count++)] = Corner{static_cast<int>(k), nb + eb * ((1.0 - dot(u, nb)) / ub)};
   }
   return count;
 }
@@ -96,9 +100,13 @@ constexpr std::array<std::array<float, 2>, 3> kCornerTau{{{0.0f, 0.0f}, {1.0f, 0
 void emit(const std::array<Vec2, 3>& p, const Bary& g, int kind, float s, float w, std::vector<Vertex>& out) {
   std::array<Corner, 6> poly;
   const int count = grown_polygon(p, poly);
-  auto vertex = [&](const Corner& c) {
+  if (count < 3) return;
+  // Each polygon point once, then copied into the fan's triangles.
+  std::array<Vertex, 6> corner_vertex;
+  for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) {
+    const Corner& c = poly[i];
     const auto k = static_cast<std::size_t>(c.vertex);
-    Vertex v{};
+    Vertex& v = corner_vertex[i];
     v.pos[0] = static_cast<float>(p[k].x);
     v.pos[1] = static_cast<float>(p[k].y);
     v.pos[2] = static_cast<float>(c.offset.x);
@@ -111,19 +119,22 @@ void emit(const std::array<Vec2, 3>& p, const Bary& g, int kind, float s, float 
     v.info[1] = w;
     v.info[2] = static_cast<float>(dot(g.grad1, c.offset));
     v.info[3] = static_cast<float>(dot(g.grad2, c.offset));
-    return v;
-  };
-  for (int i = 1; i + 1 < count; ++i) {
-    out.push_back(vertex(poly[0]));
-    out.push_back(vertex(poly[static_cast<std::size_t>(i)]));
-    out.push_back(vertex(poly[static_cast<std::size_t>(i + 1)]));
+  }
+  const std::size_t first = out.size();
+  out.resize(first + 3 * static_cast<std::size_t>(count - 2));
+  Vertex* dst = out.data() + first;
+  for (std::size_t i = 1; i + 1 < static_cast<std::size_t>(count); ++i) {
+    *dst++ = corner_vertex[0];
+    *dst++ = corner_vertex[i];
+    *dst++ = corner_vertex[i + 1];
   }
 }
 
 }  // namespace
 
 void pack_mesh(const Mesh& mesh, std::vector<Vertex>& out) {
-  out.reserve(out.size() + 4 * (mesh.triangles.size() + mesh.curves.size()));
+  // Most triangles grow into 3 or 4 points (3 or 6 vertices).
+  out.reserve(out.size() + 6 * (mesh.triangles.size() + mesh.curves.size()));
   for (const auto& tri : mesh.triangles) {
     const std::array<Vec2, 3> p{mesh.points[tri[0]], mesh.points[tri[1]], mesh.points[tri[2]]};
     const Bary g = bary_of(p[0], p[1], p[2]);

@@ -1,18 +1,10 @@
 // build_mesh: outline -> cleaned rings -> separated hulls -> (crossing,
 // overlapping or edge-sharing contours only: resolve.cpp's non-crossing rings
 // of the nonzero fill, hulls separated again) -> nesting and
-// orientation -> polygon loops + curved triangles -> bridged loops -> ear
-// clipping -> Lawson flips -> indexed mesh (DESIGN.md section 4, paper 3.1).
-#include <algorithm>
-#include <cmath>
-#include <cstddef>
-#include <cstdint>
-#include <cstring>
-#include <map>
-#include <set>
-#include <span>
-#include <utility>
-#include <vector>
+// orientation -> polygon loops + curved triangles -> triangles -> Lawson
+// flips -> indexed mesh (DESIGN.md section 4, paper 3.1). Loops that neither
+// cross nor touch (the usual glyph) are triangulated by one plane sweep
+// (sweep.cpp); the others are bridged and ear-clipped (triangulate.cpp).
 
 #include "curvetext/curves.hpp"
 #include "curvetext/error.hpp"
@@ -792,57 +784,117 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
   thread_local std::vector<EdgeKey> constrained;  // outline edges: never flipped (sorted below)
   constrained.clear();
   constrained.reserve(2 * piece_count);
-  thread_local std::vector<std::array<Vec2, 3>> triangle_points;
-  triangle_points.clear();
-  triangle_points.reserve(2 * piece_count + 8);  // about two triangles per loop vertex
-  for (const Region& region : regions) {
-    auto polygonise = [&](const Ring& ring) {
-      std::vector<Vec2> loop;
-      loop.reserve(ring.size() * 2);
-      // Piece i starts where piece i - 1 ends: its index is carried over
-      // (the same lookups in the same order, minus the repeats).
-      std::uint32_t next_ia = ring.empty() ? 0 : index(ring[0].a);
-      for (std::size_t i = 0; i < ring.size(); ++i) {
-        const Piece& p = ring[i];
-        const Vec2 a = p.a, b = ring_end(ring, i);
-        loop.push_back(a);
-        const std::uint32_t ia = next_ia, ib = index(b);
-        next_ia = ib;
-        if (!p.conic) {
-          mesh.boundary_lines.push_back({ia, ib});
-          constrained.push_back(edge_key(ia, ib));
-          continue;
-        }
-        // Filled side is on the left: a control point on the right of the
-        // chord bulges out (convex, the polygon keeps the chord), on the left
-        // it bulges in (concave, the polygon goes through the control point).
-        const bool convex = orient2d(a, b, p.control) <= 0;
-        const std::uint32_t ic = index(p.control);
-        mesh.curves.push_back({ia, ic, ib, p.weight, convex});
-        if (convex) {
-          constrained.push_back(edge_key(ia, ib));
-        } else {
-          loop.push_back(p.control);
-          constrained.push_back(edge_key(ia, ic));
-          constrained.push_back(edge_key(ic, ib));
-        }
+  // Every region's polygon loops as vertex indices (outer first, then its
+  // holes): loop l is loop_vertices[loop_start[l] .. loop_start[l + 1]).
+  thread_local std::vector<std::uint32_t> loop_vertices, loop_start;
+  loop_vertices.clear();
+  loop_vertices.reserve(2 * piece_count);
+  loop_start.assign(1, 0);
+  auto polygonise = [&](const Ring& ring) {
+    // Piece i starts where piece i - 1 ends: its index is carried over
+    // (the same lookups in the same order, minus the repeats).
+    std::uint32_t next_ia = ring.empty() ? 0 : index(ring[0].a);
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const Piece& p = ring[i];
+      const std::uint32_t ia = next_ia, ib = index(ring_end(ring, i));
+      next_ia = ib;
+      loop_vertices.push_back(ia);
+      if (!p.conic) {
+        mesh.boundary_lines.push_back({ia, ib});
+        constrained.push_back(edge_key(ia, ib));
+        continue;
       }
-      return remove_folds(std::move(loop));
-    };
-    std::vector<Vec2> outer = polygonise(region.outer);
-    std::vector<std::vector<Vec2>> holes;
-    for (const Ring& hole : region.holes) holes.push_back(polygonise(hole));
-    // Where loops touch at vertices, re-link them first so that each polygon
-    // handed to the ear clipper has one filled sector per corner.
-    for (PolygonLoops& polygon : relink_touching_loops(std::move(outer), std::move(holes))) {
-      ear_clip(bridge_holes(std::move(polygon.outer), std::move(polygon.holes)), triangle_points, simple_edges);
+      // Filled side is on the left: a control point on the right of the
+      // chord bulges out (convex, the polygon keeps the chord), on the left
+      // it bulges in (concave, the polygon goes through the control point).
+      const bool convex = orient2d(p.a, ring_end(ring, i), p.control) <= 0;
+      const std::uint32_t ic = index(p.control);
+      mesh.curves.push_back({ia, ic, ib, p.weight, convex});
+      if (convex) {
+        constrained.push_back(edge_key(ia, ib));
+      } else {
+        loop_vertices.push_back(ic);
+        constrained.push_back(edge_key(ia, ic));
+        constrained.push_back(edge_key(ic, ib));
+      }
+    }
+    loop_start.push_back(static_cast<std::uint32_t>(loop_vertices.size()));
+  };
+  thread_local std::vector<std::size_t> region_first_loop;
+  region_first_loop.clear();
+  for (const Region& region : regions) {
+    region_first_loop.push_back(loop_start.size() - 1);
+    polygonise(region.outer);
+    for (const Ring& hole : region.holes) polygonise(hole);
+  }
+  region_first_loop.push_back(loop_start.size() - 1);
+
+  // Fast path: loops that neither cross nor touch (no position twice) are
+  // triangulated by one sweep. Loops of fewer than three vertices (a line and
+  // a convex conic, two convex conics) enclose no polygon area and are left
+  // out, as ear_clip would leave them.
+  bool swept = false;
+  if (simple_edges) {
+    thread_local std::vector<std::uint32_t> sweep_vertices, sweep_start;
+    thread_local std::vector<char> seen;
+    sweep_vertices.clear();
+    sweep_start.assign(1, 0);
+    seen.assign(index.points.size(), 0);
+    bool repeated = false;
+    std::size_t expected_triangles = 0;
+    for (std::size_t r = 0; r + 1 < region_first_loop.size() && !repeated; ++r) {
+      for (std::size_t l = region_first_loop[r]; l < region_first_loop[r + 1]; ++l) {
+        const std::uint32_t first = loop_start[l], last = loop_start[l + 1];
+        if (last - first < 3) continue;
+        for (std::uint32_t k = first; k < last; ++k) {
+          const std::uint32_t v = loop_vertices[k];
+          repeated = repeated || seen[v];
+          seen[v] = 1;
+          sweep_vertices.push_back(v);
+        }
+        sweep_start.push_back(static_cast<std::uint32_t>(sweep_vertices.size()));
+        // n - 2 triangles per outer loop, n + 2 per hole (its two "bridges").
+        expected_triangles += l == region_first_loop[r] ? last - first - 2 : last - first + 2;
+      }
+    }
+    if (!repeated) {
+      swept = sweep_triangulate(index.points, sweep_vertices, sweep_start, mesh.triangles);
+      if (swept && mesh.triangles.size() != expected_triangles) {
+        swept = false;
+        mesh.triangles.clear();
+      }
     }
   }
-  mesh.triangles.reserve(triangle_points.size());
-  for (const auto& t : triangle_points) mesh.triangles.push_back({index(t[0]), index(t[1]), index(t[2])});
-  std::sort(constrained.begin(), constrained.end());
-  constrained.erase(std::unique(constrained.begin(), constrained.end()), constrained.end());
-  delaunay_flips(index.points, mesh.triangles, constrained);
+  if (!swept) {
+    thread_local std::vector<std::array<Vec2, 3>> triangle_points;
+    triangle_points.clear();
+    triangle_points.reserve(2 * piece_count + 8);  // about two triangles per loop vertex
+    auto positions = [&](std::size_t l) {
+      std::vector<Vec2> loop;
+      loop.reserve(loop_start[l + 1] - loop_start[l]);
+      for (std::uint32_t k = loop_start[l]; k < loop_start[l + 1]; ++k) loop.push_back(index.points[loop_vertices[k]]);
+      return remove_folds(std::move(loop));
+    };
+    for (std::size_t r = 0; r + 1 < region_first_loop.size(); ++r) {
+      std::vector<Vec2> outer = positions(region_first_loop[r]);
+      std::vector<std::vector<Vec2>> holes;
+      for (std::size_t l = region_first_loop[r] + 1; l < region_first_loop[r + 1]; ++l) holes.push_back(positions(l));
+      // Where loops touch at vertices, re-link them first so that each polygon
+      // handed to the ear clipper has one filled sector per corner.
+      for (PolygonLoops& polygon : relink_touching_loops(std::move(outer), std::move(holes))) {
+        ear_clip(bridge_holes(std::move(polygon.outer), std::move(polygon.holes)), triangle_points, simple_edges);
+      }
+    }
+    mesh.triangles.reserve(triangle_points.size());
+    for (const auto& t : triangle_points) mesh.triangles.push_back({index(t[0]), index(t[1]), index(t[2])});
+  }
+  if (swept) {
+    delaunay_flips_manifold(index.points, mesh.triangles);
+  } else {
+    std::sort(constrained.begin(), constrained.end());
+    constrained.erase(std::unique(constrained.begin(), constrained.end()), constrained.end());
+    delaunay_flips(index.points, mesh.triangles, constrained);
+  }
   mesh.points = std::move(index.points);
   return mesh;
 }

@@ -769,4 +769,89 @@ void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std:
   }
 }
 
+void delaunay_flips_manifold(const std::vector<Vec2>& points, std::vector<std::array<std::uint32_t, 3>>& triangles) {
+  // Half-edge h = 3 t + k runs from triangles[t][k] to triangles[t][k + 1];
+  // twin[h] is the half-edge running back on the other triangle, or -1.
+  const std::size_t m = triangles.size();
+  if (m < 2) return;
+  thread_local std::vector<std::int32_t> twin;
+  thread_local std::vector<std::uint32_t> bucket_start, fill;
+  thread_local std::vector<std::uint64_t> bucket;
+  twin.assign(3 * m, -1);
+  // Half-edges bucketed by their smaller vertex (a counting sort), each
+  // bucket sorted by the larger vertex (insertion sort: buckets hold a few
+  // entries), then equal neighbours paired; an edge with more than two
+  // sides gets no twin.
+  bucket_start.assign(points.size() + 1, 0);
+  for (const auto& t : triangles) {
+    for (int k = 0; k < 3; ++k) ++bucket_start[std::min(t[k], t[(k + 1) % 3]) + 1];
+  }
+  for (std::size_t v = 0; v < points.size(); ++v) bucket_start[v + 1] += bucket_start[v];
+  fill.assign(bucket_start.begin(), bucket_start.end() - 1);
+  bucket.resize(3 * m);
+  for (std::size_t t = 0; t < m; ++t) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::uint32_t a = triangles[t][k], b = triangles[t][(k + 1) % 3];
+      bucket[fill[std::min(a, b)]++] = (std::uint64_t{std::max(a, b)} << 32) | (3 * t + k);
+    }
+  }
+  for (std::size_t v = 0; v < points.size(); ++v) {
+    std::uint64_t* first = bucket.data() + bucket_start[v];
+    std::uint64_t* last = bucket.data() + bucket_start[v + 1];
+    for (std::uint64_t* i = first + 1; i < last; ++i) {
+      const std::uint64_t key = *i;
+      std::uint64_t* j = i;
+      for (; j > first && *(j - 1) > key; --j) *j = *(j - 1);
+      *j = key;
+    }
+    for (std::uint64_t* i = first; i < last;) {
+      std::uint64_t* run_end = i + 1;
+      while (run_end < last && (*run_end >> 32) == (*i >> 32)) ++run_end;
+      if (run_end - i == 2) {
+        const auto h1 = static_cast<std::uint32_t>(i[0]), h2 = static_cast<std::uint32_t>(i[1]);
+        // Opposite directions: h1's start is h2's end.
+        if (triangles[h1 / 3][h1 % 3] == triangles[h2 / 3][(h2 % 3 + 1) % 3]) {
+          twin[h1] = static_cast<std::int32_t>(h2);
+          twin[h2] = static_cast<std::int32_t>(h1);
+        }
+      }
+      i = run_end;
+    }
+  }
+  thread_local std::vector<std::uint32_t> stack;
+  stack.clear();
+  for (std::size_t h = 0; h < 3 * m; ++h)
+    if (twin[h] > static_cast<std::int32_t>(h)) stack.push_back(static_cast<std::uint32_t>(h));
+  auto link = [&](std::uint32_t h, std::int32_t other) {
+    twin[h] = other;
+    if (other >= 0) twin[static_cast<std::size_t>(other)] = static_cast<std::int32_t>(h);
+  };
+  std::size_t flips_left = 16 * m + 64;  // as in delaunay_flips
+  while (!stack.empty() && flips_left > 0) {
+    const std::uint32_t h = stack.back();
+    stack.pop_back();
+    const std::int32_t g = twin[h];
+    if (g < 0) continue;
+    const std::uint32_t t1 = h / 3, k1 = h % 3, t2 = static_cast<std::uint32_t>(g) / 3, k2 = static_cast<std::uint32_t>(g) % 3;
+    const std::uint32_t a = triangles[t1][k1], b = triangles[t1][(k1 + 1) % 3], c = triangles[t1][(k1 + 2) % 3];
+    const std::uint32_t d = triangles[t2][(k2 + 2) % 3];
+    if (c == d) continue;
+    const Vec2 pa = points[a], pb = points[b], pc = points[c], pd = points[d];
+    if (orient2d(pa, pd, pc) <= 0 || orient2d(pd, pb, pc) <= 0) continue;  // quad not strictly convex
+    if (incircle_sign(pa, pb, pc, pd) <= 0) continue;
+    const std::int32_t bc = twin[3 * t1 + (k1 + 1) % 3], ca = twin[3 * t1 + (k1 + 2) % 3];
+    const std::int32_t ad = twin[3 * t2 + (k2 + 1) % 3], db = twin[3 * t2 + (k2 + 2) % 3];
+    triangles[t1] = {a, d, c};
+    triangles[t2] = {d, b, c};
+    link(3 * t1 + 0, ad);
+    link(3 * t1 + 1, static_cast<std::int32_t>(3 * t2 + 2));
+    link(3 * t1 + 2, ca);
+    link(3 * t2 + 0, db);
+    link(3 * t2 + 1, bc);
+    --flips_left;
+    for (const std::uint32_t e : {3 * t1 + 0, 3 * t1 + 2, 3 * t2 + 0, 3 * t2 + 1})
+      if (twin[e] >= 0) stack.push_back(e);
+  }
+}
+
 }  // namespace curvetext::detail

@@ -49,6 +49,18 @@ std::vector<PolygonLoops> relink_touching_loops(std::vector<Vec2> outer, std::ve
 bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& triangles,
               bool simple_edges = false);
 
+// Triangulates polygon loops that neither cross nor touch (each loop simple,
+// no position repeated anywhere, the filled side on the left of every edge,
+// as nest_rings orients them) by one plane sweep (sweep.cpp), appending
+// counter-clockwise triangles of `points` indices. Loop l is
+// loop_vertices[loop_start[l] .. loop_start[l + 1]) (indices into `points`).
+// Returns false, appending nothing, when the input breaks the contract or any
+// decision is degenerate (a zero orientation where a strict one is needed);
+// the caller then uses bridge_holes and ear_clip.
+bool sweep_triangulate(const std::vector<Vec2>& points, const std::vector<std::uint32_t>& loop_vertices,
+                       const std::vector<std::uint32_t>& loop_start,
+                       std::vector<std::array<std::uint32_t, 3>>& triangles);
+
 using EdgeKey = std::pair<std::uint32_t, std::uint32_t>;  // (min index, max index)
 inline EdgeKey edge_key(std::uint32_t a, std::uint32_t b) {
   return a < b ? EdgeKey{a, b} : EdgeKey{b, a};
@@ -62,4 +74,14 @@ inline EdgeKey edge_key(std::uint32_t a, std::uint32_t b) {
 void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std::uint32_t, 3>>& triangles,
                     const std::vector<EdgeKey>& constrained);
 
+// The same flips for the triangulation of polygon loops that sweep_triangulate
+// makes: planar and manifold, every edge of a loop on exactly one triangle
+// and every other edge on two. The constrained edges are then exactly the
+// edges with one triangle, which are never flipped, so no list is needed;
+// triangle adjacency comes from a counting sort of the half-edges instead of
+// a hash table, and a flip never checks whether the new diagonal exists (in a
+// planar triangulation the diagonal of a convex quad cannot).
+void delaunay_flips_manifold(const std::vector<Vec2>& points, std::vector<std::array<std::uint32_t, 3>>& triangles);
+
 }  // namespace curvetext::detail
+

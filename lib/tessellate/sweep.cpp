@@ -1,0 +1,387 @@
+// Plane-sweep triangulation of non-crossing polygon loops (the fast path of
+// build_mesh; see triangulate.hpp for the contract).
+//
+// One sweep over all loops of a glyph at once, in (y, x) order, with the
+// status kept as the intervals of the fill between a left and a right
+// boundary edge. Each interval carries the monotone polygon being built in it
+// (or two, left and right of a pending merge vertex) as the classic reflex
+// chain stack, so the polygon is triangulated while it is swept: no diagonals
+// are stored, no monotone pieces are extracted, holes need no bridges and
+// nesting needs no point-in-polygon tests. Vertex types (start, split, end,
+// merge, regular) follow de Berg et al., "Computational Geometry", ch. 3, with
+// the filled side on the left of every loop edge.
+//
+// Every decision is an exact orient2d sign. A zero where the algorithm needs a
+// strict answer (a vertex on another loop's edge, a spike, a flat corner at a
+// start or end) makes it give up and return false; so does any emitted
+// triangle that is not strictly counter-clockwise, and a triangle count that
+// differs from the polygon's (vertices - 2 per outer loop + 2 per hole).
+// build_mesh then takes the general path (bridges and ear clipping).
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "tessellate/predicates.hpp"
+#include "tessellate/triangulate.hpp"
+
+namespace curvetext::detail {
+namespace {
+
+constexpr std::uint32_t kRightSide = 0x80000000u;  // stack entry flag: on the right chain
+constexpr std::uint32_t kIndexMask = 0x7fffffffu;
+constexpr int kNone = -1;
+
+// One interval of the fill at the sweep line: between edge `left` and edge
+// `right` (an edge is named by the loop position it starts at). `poly[0]` is
+// the monotone polygon in progress; after a merge vertex `merge` the interval
+// holds two, left (poly[0]) and right (poly[1]) of it, until the next vertex
+// in the interval connects to the merge vertex.
+struct Interval {
+  std::uint32_t left = 0, right = 0;
+  int poly[2] = {kNone, kNone};
+  bool merged = false;
+};
+
+class Sweep {
+ public:
+  Sweep(const std::vector<Vec2>& points, const std::vector<std::uint32_t>& loop_vertices,
+        const std::vector<std::uint32_t>& loop_start, std::vector<std::array<std::uint32_t, 3>>& triangles)
+      : points_(points), vertices_(loop_vertices), start_(loop_start), out_(triangles) {}
+
+  bool run();
+
+ private:
+  const std::vector<Vec2>& points_;
+  const std::vector<std::uint32_t>& vertices_;
+  const std::vector<std::uint32_t>& start_;
+  std::vector<std::array<std::uint32_t, 3>>& out_;
+  bool ok_ = true;
+
+  // Per loop position: the neighbours in its loop, and the rank in sweep order.
+  std::vector<std::uint32_t>& prev_ = scratch_u32(0);
+  std::vector<std::uint32_t>& next_ = scratch_u32(1);
+  std::vector<std::uint32_t>& rank_ = scratch_u32(2);
+  std::vector<std::uint32_t>& order_ = scratch_u32(3);
+  std::vector<Interval> status_;
+  // Monotone polygon stacks: loop positions, kRightSide on right-chain entries.
+  std::vector<std::vector<std::uint32_t>>& stacks_ = scratch_stacks();
+  std::vector<int> free_stacks_;
+  std::size_t stacks_used_ = 0;
+
+  static std::vector<std::uint32_t>& scratch_u32(int k) {
+    thread_local std::vector<std::uint32_t> v[4];
+    return v[k];
+  }
+  static std::vector<std::vector<std::uint32_t>>& scratch_stacks() {
+    thread_local std::vector<std::vector<std::uint32_t>> s;
+    return s;
+  }
+
+  Vec2 at(std::uint32_t position) const { return points_[vertices_[position & kIndexMask]]; }
+
+  int new_poly(std::uint32_t first) {
+    int id;
+    if (!free_stacks_.empty()) {
+      id = free_stacks_.back();
+      free_stacks_.pop_back();
+    } else {
+      if (stacks_used_ == stacks_.size()) stacks_.emplace_back();
+      id = static_cast<int>(stacks_used_++);
+    }
+    stacks_[static_cast<std::size_t>(id)].assign(1, first);
+    return id;
+  }
+
+  void triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    a &= kIndexMask;
+    b &= kIndexMask;
+    c &= kIndexMask;
+    if (orient2d(at(a), at(b), at(c)) <= 0) ok_ = false;
+    out_.push_back({vertices_[a], vertices_[b], vertices_[c]});
+  }
+
+  // The fan from v to every stack edge; v is on the side opposite the top.
+  void fan(std::vector<std::uint32_t>& st, std::uint32_t v) {
+    const bool top_right = (st.back() & kRightSide) != 0;
+    for (std::size_t i = 0; i + 1 < st.size(); ++i) {
+      if (top_right) {
+        triangle(st[i], st[i + 1], v);
+      } else {
+        triangle(st[i], v, st[i + 1]);
+      }
+    }
+  }
+
+  // Vertex v joins the polygon's left (or right) chain.
+  void add(int poly, std::uint32_t v, bool right) {
+    std::vector<std::uint32_t>& st = stacks_[static_cast<std::size_t>(poly)];
+    const std::uint32_t entry = v | (right ? kRightSide : 0u);
+    if (((st.back() & kRightSide) != 0) != right) {
+      fan(st, v);
+      const std::uint32_t top = st.back();
+      st.assign({top, entry});
+      return;
+    }
+    const Vec2 pv = at(v);
+    while (st.size() >= 2) {
+      const std::uint32_t a = st[st.size() - 2], b = st.back();
+      const int o = orient2d(at(a), pv, at(b));
+      if (right ? o >= 0 : o <= 0) break;  // b is not a convex corner seen from v
+      if (right) {
+        triangle(a, b, v);
+      } else {
+        triangle(a, v, b);
+      }
+      st.pop_back();
+    }
+    st.push_back(entry);
+  }
+
+  // Vertex v is the polygon's top: triangulate what is left, free the stack.
+  void close(int poly, std::uint32_t v) {
+    std::vector<std::uint32_t>& st = stacks_[static_cast<std::size_t>(poly)];
+    if (st.size() < 2) ok_ = false;
+    fan(st, v);
+    free_stacks_.push_back(poly);
+  }
+
+  // Strictly inside interval `iv` (right of its left edge, left of its right
+  // edge; both edges leave their first vertex with the fill on the left).
+  // Sets ok_ = false when v is on either edge's line.
+  int side_of_edge(std::uint32_t edge, Vec2 p) { return orient2d(at(edge), at(next_[edge]), p); }
+
+  int find_by_left(std::uint32_t edge) const {
+    for (std::size_t k = 0; k < status_.size(); ++k)
+      if (status_[k].left == edge) return static_cast<int>(k);
+    return kNone;
+  }
+  int find_by_right(std::uint32_t edge) const {
+    for (std::size_t k = 0; k < status_.size(); ++k)
+      if (status_[k].right == edge) return static_cast<int>(k);
+    return kNone;
+  }
+
+  void start(std::uint32_t v, std::uint32_t u);
+  void split(std::uint32_t v, std::uint32_t u);
+  void end(std::uint32_t v, std::uint32_t u);
+  void merge(std::uint32_t v, std::uint32_t u);
+  void regular_left(std::uint32_t v, std::uint32_t u);
+  void regular_right(std::uint32_t v, std::uint32_t u);
+};
+
+// Both edges above v, convex: a new interval [edge u -> v, edge v -> w].
+void Sweep::start(std::uint32_t v, std::uint32_t u) {
+  const Vec2 p = at(v);
+  std::size_t k = 0;
+  for (; k < status_.size(); ++k) {
+    const int s = side_of_edge(status_[k].left, p);
+    if (s == 0) ok_ = false;
+    if (s < 0) break;  // v is left of this interval (and outside every interval)
+  }
+  Interval iv;
+  iv.left = u;
+  iv.right = v;
+  iv.poly[0] = new_poly(v);
+  status_.insert(status_.begin() + static_cast<std::ptrdiff_t>(k), iv);
+}
+
+// Both edges above v, reflex: v splits the interval it lies in, with a
+// diagonal to the interval's last vertex (or to its pending merge vertex).
+void Sweep::split(std::uint32_t v, std::uint32_t u) {
+  const Vec2 p = at(v);
+  int found = kNone;
+  for (std::size_t k = 0; k < status_.size(); ++k) {
+    const int l = side_of_edge(status_[k].left, p), r = side_of_edge(status_[k].right, p);
+    if (l == 0 || r == 0) ok_ = false;
+    if (l > 0 && r > 0) {
+      found = static_cast<int>(k);
+      break;
+    }
+  }
+  if (found == kNone) {
+    ok_ = false;
+    return;
+  }
+  Interval& iv = status_[static_cast<std::size_t>(found)];
+  Interval left_part, right_part;
+  left_part.left = iv.left;
+  left_part.right = v;
+  right_part.left = u;
+  right_part.right = iv.right;
+  if (iv.merged) {
+    add(iv.poly[0], v, true);
+    add(iv.poly[1], v, false);
+    left_part.poly[0] = iv.poly[0];
+    right_part.poly[0] = iv.poly[1];
+  } else {
+    const int poly = iv.poly[0];
+    std::vector<std::uint32_t>& st = stacks_[static_cast<std::size_t>(poly)];
+    const std::uint32_t helper = st.back();
+    if (helper & kRightSide) {
+      // The reflex chain is on the right: it stays with the left part.
+      add(poly, v, true);
+      left_part.poly[0] = poly;
+      right_part.poly[0] = new_poly(helper);
+      add(right_part.poly[0], v, false);
+    } else {
+      add(poly, v, false);
+      right_part.poly[0] = poly;
+      left_part.poly[0] = new_poly(helper);
+      add(left_part.poly[0], v, true);
+    }
+  }
+  iv = left_part;
+  status_.insert(status_.begin() + found + 1, right_part);
+}
+
+// Both edges below v, convex: the interval [edge v -> w, edge u -> v] ends.
+void Sweep::end(std::uint32_t v, std::uint32_t u) {
+  const int k = find_by_left(v);
+  if (k == kNone || status_[static_cast<std::size_t>(k)].right != u) {
+    ok_ = false;
+    return;
+  }
+  const Interval iv = status_[static_cast<std::size_t>(k)];
+  close(iv.poly[0], v);
+  if (iv.merged) close(iv.poly[1], v);
+  status_.erase(status_.begin() + k);
+}
+
+// Both edges below v, reflex: the intervals left and right of v become one,
+// with v as its pending merge vertex.
+void Sweep::merge(std::uint32_t v, std::uint32_t u) {
+  const int k = find_by_right(u);
+  if (k == kNone || static_cast<std::size_t>(k) + 1 >= status_.size() ||
+      status_[static_cast<std::size_t>(k) + 1].left != v) {
+    ok_ = false;
+    return;
+  }
+  Interval& a = status_[static_cast<std::size_t>(k)];
+  const Interval b = status_[static_cast<std::size_t>(k) + 1];
+  int left_poly, right_poly;
+  if (a.merged) {
+    close(a.poly[1], v);
+    add(a.poly[0], v, true);
+  } else {
+    add(a.poly[0], v, true);
+  }
+  left_poly = a.poly[0];
+  if (b.merged) {
+    close(b.poly[0], v);
+    add(b.poly[1], v, false);
+    right_poly = b.poly[1];
+  } else {
+    add(b.poly[0], v, false);
+    right_poly = b.poly[0];
+  }
+  a.right = b.right;
+  a.poly[0] = left_poly;
+  a.poly[1] = right_poly;
+  a.merged = true;
+  status_.erase(status_.begin() + k + 1);
+}
+
+// Edge u -> v above, v -> w below: v is on a left boundary.
+void Sweep::regular_left(std::uint32_t v, std::uint32_t u) {
+  const int k = find_by_left(v);
+  if (k == kNone) {
+    ok_ = false;
+    return;
+  }
+  Interval& iv = status_[static_cast<std::size_t>(k)];
+  if (iv.merged) {
+    close(iv.poly[0], v);
+    iv.poly[0] = iv.poly[1];
+    iv.poly[1] = kNone;
+    iv.merged = false;
+  }
+  add(iv.poly[0], v, false);
+  iv.left = u;
+}
+
+// Edge u -> v below, v -> w above: v is on a right boundary.
+void Sweep::regular_right(std::uint32_t v, std::uint32_t u) {
+  const int k = find_by_right(u);
+  if (k == kNone) {
+    ok_ = false;
+    return;
+  }
+  Interval& iv = status_[static_cast<std::size_t>(k)];
+  if (iv.merged) {
+    close(iv.poly[1], v);
+    iv.poly[1] = kNone;
+    iv.merged = false;
+  }
+  add(iv.poly[0], v, true);
+  iv.right = v;
+}
+
+bool Sweep::run() {
+  const std::size_t n = vertices_.size();
+  if (n >= kIndexMask) return false;
+  prev_.resize(n);
+  next_.resize(n);
+  rank_.resize(n);
+  order_.clear();
+  for (std::size_t l = 0; l + 1 < start_.size(); ++l) {
+    const std::uint32_t first = start_[l], last = start_[l + 1];
+    if (last - first < 3) return false;
+    for (std::uint32_t i = first; i < last; ++i) {
+      prev_[i] = i == first ? last - 1 : i - 1;
+      next_[i] = i + 1 == last ? first : i + 1;
+      order_.push_back(i);
+    }
+  }
+  auto below = [&](std::uint32_t a, std::uint32_t b) {
+    const Vec2 pa = at(a), pb = at(b);
+    return pa.y < pb.y || (pa.y == pb.y && pa.x < pb.x);
+  };
+  std::sort(order_.begin(), order_.end(), below);
+  for (std::size_t k = 0; k < order_.size(); ++k) {
+    if (k > 0 && at(order_[k - 1]) == at(order_[k])) return false;  // repeated position
+    rank_[order_[k]] = static_cast<std::uint32_t>(k);
+  }
+  status_.clear();
+  free_stacks_.clear();
+  stacks_used_ = 0;
+  for (std::size_t k = 0; k < order_.size() && ok_; ++k) {
+    const std::uint32_t v = order_[k], u = prev_[v], w = next_[v];
+    const bool u_below = rank_[u] < rank_[v], w_below = rank_[w] < rank_[v];
+    if (u_below != w_below) {
+      if (u_below) {
+        regular_right(v, u);
+      } else {
+        regular_left(v, u);
+      }
+      continue;
+    }
+    const int turn = orient2d(at(u), at(v), at(w));
+    if (turn == 0) return false;  // a spike or a flat extreme vertex
+    if (!u_below) {
+      if (turn > 0) {
+        start(v, u);
+      } else {
+        split(v, u);
+      }
+    } else if (turn > 0) {
+      end(v, u);
+    } else {
+      merge(v, u);
+    }
+  }
+  return ok_ && status_.empty();
+}
+
+}  // namespace
+
+bool sweep_triangulate(const std::vector<Vec2>& points, const std::vector<std::uint32_t>& loop_vertices,
+                       const std::vector<std::uint32_t>& loop_start,
+                       std::vector<std::array<std::uint32_t, 3>>& triangles) {
+  const std::size_t first_triangle = triangles.size();
+  Sweep sweep(points, loop_vertices, loop_start, triangles);
+  if (sweep.run()) return true;
+  triangles.resize(first_triangle);
+  return false;
+}
+
+}  // namespace curvetext::detail
