@@ -5,6 +5,16 @@
 // flips -> indexed mesh (DESIGN.md section 4, paper 3.1). Loops that neither
 // cross nor touch (the usual glyph) are triangulated by one plane sweep
 // (sweep.cpp); the others are bridged and ear-clipped (triangulate.cpp).
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <map>
+#include <set>
+#include <span>
+#include <utility>
+#include <vector>
 
 #include "curvetext/curves.hpp"
 #include "curvetext/error.hpp"
