@@ -1,6 +1,7 @@
-// Polygon stage of the tessellator (paper 3.1): holes bridged into their
-// container, ear clipping of the resulting weakly simple loops, and Lawson
-// flips towards a constrained Delaunay triangulation.
+// Polygon stage of the tessellator (paper 3.1): the plane sweep for loops
+// that neither cross nor touch (sweep.cpp); for the others, holes bridged
+// into their container and ear clipping of the resulting weakly simple loops;
+// then Lawson flips towards a constrained Delaunay triangulation.
 #pragma once
 
 #include <array>
