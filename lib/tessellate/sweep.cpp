@@ -62,19 +62,21 @@ class Sweep {
   std::vector<std::uint32_t>& next_ = scratch_u32(1);
   std::vector<std::uint32_t>& rank_ = scratch_u32(2);
   std::vector<std::uint32_t>& order_ = scratch_u32(3);
-  std::vector<Interval> status_;
+  std::vector<Interval>& status_ = scratch<Interval, 0>();
   // Monotone polygon stacks: loop positions, kRightSide on right-chain entries.
-  std::vector<std::vector<std::uint32_t>>& stacks_ = scratch_stacks();
-  std::vector<int> free_stacks_;
+  std::vector<std::vector<std::uint32_t>>& stacks_ = scratch<std::vector<std::uint32_t>, 0>();
+  std::vector<int>& free_stacks_ = scratch<int, 0>();
   std::size_t stacks_used_ = 0;
 
+  // Scratch reused across calls (no allocation per glyph once warm).
+  template <class T, int k>
+  static std::vector<T>& scratch() {
+    thread_local std::vector<T> v;
+    return v;
+  }
   static std::vector<std::uint32_t>& scratch_u32(int k) {
     thread_local std::vector<std::uint32_t> v[4];
     return v[k];
-  }
-  static std::vector<std::vector<std::uint32_t>>& scratch_stacks() {
-    thread_local std::vector<std::vector<std::uint32_t>> s;
-    return s;
   }
 
   Vec2 at(std::uint32_t position) const { return points_[vertices_[position & kIndexMask]]; }
