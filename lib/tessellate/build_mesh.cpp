@@ -772,7 +772,7 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
   // non-crossing rings of the nonzero fill first (skipped for the usual
   // glyph whose contours do not meet; separate_hulls's sweep already told).
   // Pieces of separated, non-crossing rings meet only at common vertices,
-  // which lets ear_clip treat loops without repeated positions as simple.
+  // which lets sweep_triangulate take their loops when no position repeats.
   bool simple_edges = separated && !crossing;
   if (kResolveCrossingContours && (separated ? crossing : rings_cross(rings, false))) {
     rings = resolve_crossings(rings);
@@ -839,40 +839,32 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
   }
   region_first_loop.push_back(loop_start.size() - 1);
 
-  // Fast path: loops that neither cross nor touch (no position twice) are
-  // triangulated by one sweep. Loops of fewer than three vertices (a line and
-  // a convex conic, two convex conics) enclose no polygon area and are left
-  // out, as ear_clip would leave them.
+  // Fast path: loops that neither cross nor touch are triangulated by one
+  // sweep (which gives up where a position repeats: touching loops). Loops
+  // of fewer than three vertices (a line and a convex conic, two convex
+  // conics) enclose no polygon area and are left out, as ear_clip would
+  // leave them.
   bool swept = false;
   if (simple_edges) {
     thread_local std::vector<std::uint32_t> sweep_vertices, sweep_start;
-    thread_local std::vector<char> seen;
     sweep_vertices.clear();
     sweep_start.assign(1, 0);
-    seen.assign(index.points.size(), 0);
-    bool repeated = false;
     std::size_t expected_triangles = 0;
-    for (std::size_t r = 0; r + 1 < region_first_loop.size() && !repeated; ++r) {
+    for (std::size_t r = 0; r + 1 < region_first_loop.size(); ++r) {
       for (std::size_t l = region_first_loop[r]; l < region_first_loop[r + 1]; ++l) {
         const std::uint32_t first = loop_start[l], last = loop_start[l + 1];
         if (last - first < 3) continue;
-        for (std::uint32_t k = first; k < last; ++k) {
-          const std::uint32_t v = loop_vertices[k];
-          repeated = repeated || seen[v];
-          seen[v] = 1;
-          sweep_vertices.push_back(v);
-        }
+        sweep_vertices.insert(sweep_vertices.end(), loop_vertices.begin() + first, loop_vertices.begin() + last);
         sweep_start.push_back(static_cast<std::uint32_t>(sweep_vertices.size()));
-        // n - 2 triangles per outer loop, n + 2 per hole (its two "bridges").
+        // n - 2 triangles per outer loop, n + 2 per hole (its two "bridges"):
+        // anything else means the loops broke the sweep's contract.
         expected_triangles += l == region_first_loop[r] ? last - first - 2 : last - first + 2;
       }
     }
-    if (!repeated) {
-      swept = sweep_triangulate(index.points, sweep_vertices, sweep_start, mesh.triangles);
-      if (swept && mesh.triangles.size() != expected_triangles) {
-        swept = false;
-        mesh.triangles.clear();
-      }
+    swept = sweep_triangulate(index.points, sweep_vertices, sweep_start, mesh.triangles);
+    if (swept && mesh.triangles.size() != expected_triangles) {
+      swept = false;
+      mesh.triangles.clear();
     }
   }
   if (!swept) {
@@ -892,7 +884,7 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
       // Where loops touch at vertices, re-link them first so that each polygon
       // handed to the ear clipper has one filled sector per corner.
       for (PolygonLoops& polygon : relink_touching_loops(std::move(outer), std::move(holes))) {
-        ear_clip(bridge_holes(std::move(polygon.outer), std::move(polygon.holes)), triangle_points, simple_edges);
+        ear_clip(bridge_holes(std::move(polygon.outer), std::move(polygon.holes)), triangle_points);
       }
     }
     mesh.triangles.reserve(triangle_points.size());

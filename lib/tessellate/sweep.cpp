@@ -13,10 +13,12 @@
 //
 // Every decision is an exact orient2d sign. A zero where the algorithm needs a
 // strict answer (a vertex on another loop's edge, a spike, a flat corner at a
-// start or end) makes it give up and return false; so does any emitted
-// triangle that is not strictly counter-clockwise, and a triangle count that
-// differs from the polygon's (vertices - 2 per outer loop + 2 per hole).
-// build_mesh then takes the general path (bridges and ear clipping).
+// start or end) makes it give up and return false; so do a repeated position
+// and a fan triangle that is not strictly counter-clockwise (the triangles
+// popped off a chain are strictly so by the test that pops them). build_mesh
+// also compares the triangle count with the polygon's (vertices - 2 per outer
+// loop + 2 per hole), and on any failure takes the general path (bridges and
+// ear clipping).
 #include <algorithm>
 #include <cstdint>
 #include <vector>
@@ -33,9 +35,10 @@ constexpr int kNone = -1;
 
 // One interval of the fill at the sweep line: between edge `left` and edge
 // `right` (an edge is named by the loop position it starts at). `poly[0]` is
-// the monotone polygon in progress; after a merge vertex `merge` the interval
-// holds two, left (poly[0]) and right (poly[1]) of it, until the next vertex
-// in the interval connects to the merge vertex.
+// the monotone polygon in progress; after a merge vertex (`merged`) the
+// interval holds two, left (poly[0]) and right (poly[1]) of it, until the
+// next vertex in the interval connects to the merge vertex, which is the top
+// of both stacks.
 struct Interval {
   std::uint32_t left = 0, right = 0;
   int poly[2] = {kNone, kNone};
@@ -62,14 +65,14 @@ class Sweep {
   std::vector<std::uint32_t>& next_ = scratch_u32(1);
   std::vector<std::uint32_t>& rank_ = scratch_u32(2);
   std::vector<std::uint32_t>& order_ = scratch_u32(3);
-  std::vector<Interval>& status_ = scratch<Interval, 0>();
+  std::vector<Interval>& status_ = scratch<Interval>();
   // Monotone polygon stacks: loop positions, kRightSide on right-chain entries.
-  std::vector<std::vector<std::uint32_t>>& stacks_ = scratch<std::vector<std::uint32_t>, 0>();
-  std::vector<int>& free_stacks_ = scratch<int, 0>();
+  std::vector<std::vector<std::uint32_t>>& stacks_ = scratch<std::vector<std::uint32_t>>();
+  std::vector<int>& free_stacks_ = scratch<int>();
   std::size_t stacks_used_ = 0;
 
   // Scratch reused across calls (no allocation per glyph once warm).
-  template <class T, int k>
+  template <class T>
   static std::vector<T>& scratch() {
     thread_local std::vector<T> v;
     return v;
@@ -95,22 +98,17 @@ class Sweep {
   }
 
   void triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    a &= kIndexMask;
-    b &= kIndexMask;
-    c &= kIndexMask;
-    if (orient2d(at(a), at(b), at(c)) <= 0) ok_ = false;
-    out_.push_back({vertices_[a], vertices_[b], vertices_[c]});
+    out_.push_back({vertices_[a & kIndexMask], vertices_[b & kIndexMask], vertices_[c & kIndexMask]});
   }
 
   // The fan from v to every stack edge; v is on the side opposite the top.
+  // Each triangle is checked: a fan is only as good as the classification.
   void fan(std::vector<std::uint32_t>& st, std::uint32_t v) {
     const bool top_right = (st.back() & kRightSide) != 0;
     for (std::size_t i = 0; i + 1 < st.size(); ++i) {
-      if (top_right) {
-        triangle(st[i], st[i + 1], v);
-      } else {
-        triangle(st[i], v, st[i + 1]);
-      }
+      const std::uint32_t a = st[i], b = top_right ? st[i + 1] : v, c = top_right ? v : st[i + 1];
+      if (orient2d(at(a), at(b), at(c)) <= 0) ok_ = false;
+      triangle(a, b, c);
     }
   }
 
@@ -147,9 +145,8 @@ class Sweep {
     free_stacks_.push_back(poly);
   }
 
-  // Strictly inside interval `iv` (right of its left edge, left of its right
-  // edge; both edges leave their first vertex with the fill on the left).
-  // Sets ok_ = false when v is on either edge's line.
+  // Side of p relative to the line of edge `edge` (> 0: the filled side, as
+  // every edge has the fill on its left).
   int side_of_edge(std::uint32_t edge, Vec2 p) { return orient2d(at(edge), at(next_[edge]), p); }
 
   int find_by_left(std::uint32_t edge) const {

@@ -381,7 +381,7 @@ class LiveEdges {
 
 }  // namespace
 
-bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& triangles, bool simple_edges) {
+bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& triangles) {
   std::size_t n = loop.size();
   if (n < 3) return n == 0;
   if (n >= 0xffffffffu) return false;  // indices are 32-bit
@@ -396,59 +396,15 @@ bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& t
     next[i] = static_cast<std::uint32_t>(next_index(i, n));
   }
   std::size_t remaining = n;
-  // A simple loop (see the header): without repeated positions its edges
-  // meet only at consecutive vertices. Then an ear is a strictly convex
-  // corner whose closed triangle holds no other vertex that is not strictly
-  // convex (if any vertex is inside, a reflex or straight one is), so only
-  // those vertices, kept in `concave`, are looked at.
-  bool simple = false;
-  if (simple_edges) {
-    thread_local std::vector<std::pair<double, double>> sorted;
-    sorted.resize(n);
-    for (std::size_t i = 0; i < n; ++i) sorted[i] = {loop[i].x, loop[i].y};
-    std::sort(sorted.begin(), sorted.end());
-    simple = std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
-  }
-  thread_local std::vector<char> convex;            // simple loops: per vertex, strictly convex
-  thread_local std::vector<std::uint32_t> concave;  // simple loops: the live vertices that are not
-  thread_local std::vector<std::uint32_t> concave_slot;
-  constexpr std::uint32_t kNoSlot = 0xffffffffu;
-  auto update_corner = [&](std::uint32_t p) {
-    const bool c = orient2d(loop[prev[p]], loop[p], loop[next[p]]) > 0;
-    convex[p] = c;
-    if (!c && concave_slot[p] == kNoSlot) {
-      concave_slot[p] = static_cast<std::uint32_t>(concave.size());
-      concave.push_back(p);
-    } else if (c && concave_slot[p] != kNoSlot) {
-      const std::uint32_t k = concave_slot[p];
-      concave[k] = concave.back();
-      concave_slot[concave[k]] = k;
-      concave.pop_back();
-      concave_slot[p] = kNoSlot;
-    }
-  };
-  auto drop_corner = [&](std::uint32_t p) {
-    const std::uint32_t k = concave_slot[p];
-    if (k == kNoSlot) return;
-    concave[k] = concave.back();
-    concave_slot[concave[k]] = k;
-    concave.pop_back();
-    concave_slot[p] = kNoSlot;
-  };
-  bool tracking = false;  // `live` (or, for a simple loop, `concave`) is filled after the first clean-up
+  bool tracking = false;  // `live` is filled after the first clean-up
   auto unlink = [&](std::size_t i) {
     next[prev[i]] = next[i];
     prev[next[i]] = prev[i];
     --remaining;
-    if (!tracking) return;
-    if (simple) {
-      drop_corner(static_cast<std::uint32_t>(i));
-      update_corner(prev[i]);
-      update_corner(next[i]);
-      return;
+    if (tracking) {
+      live.erase(static_cast<std::uint32_t>(i));
+      live.set(prev[i], loop[prev[i]], loop[next[i]]);  // the edge that replaces i's two
     }
-    live.erase(static_cast<std::uint32_t>(i));
-    live.set(prev[i], loop[prev[i]], loop[next[i]]);  // the edge that replaces i's two
   };
   bool clean = true;
   // Consecutive repeats (possible after bridging) carry no area: drop them.
@@ -464,31 +420,9 @@ bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& t
   }
   {
     std::uint32_t p = static_cast<std::uint32_t>(start);
-    if (simple) {
-      convex.resize(n);
-      concave.clear();
-      concave_slot.assign(n, kNoSlot);
-      for (std::size_t k = 0; k < remaining; ++k, p = next[p]) update_corner(p);
-    } else {
-      for (std::size_t k = 0; k < remaining; ++k, p = next[p]) live.set(p, loop[p], loop[next[p]]);
-    }
+    for (std::size_t k = 0; k < remaining; ++k, p = next[p]) live.set(p, loop[p], loop[next[p]]);
     tracking = true;
   }
-
-  auto is_simple_ear = [&](std::size_t ia, std::size_t ib, std::size_t ic) {
-    if (!convex[ib]) return false;  // orient2d(a, b, c) <= 0
-    const Vec2 a = loop[ia], b = loop[ib], c = loop[ic];
-    const double min_x = std::min({a.x, b.x, c.x}), max_x = std::max({a.x, b.x, c.x});
-    const double min_y = std::min({a.y, b.y, c.y}), max_y = std::max({a.y, b.y, c.y});
-    for (const std::uint32_t p : concave) {
-      const Vec2 pp = loop[p];
-      if (pp.x < min_x || pp.x > max_x || pp.y < min_y || pp.y > max_y) continue;
-      if (p == ia || p == ic) continue;
-      // In the closed triangle (orient2d(a, b, c) > 0).
-      if (orient2d(a, b, pp) >= 0 && orient2d(b, c, pp) >= 0 && orient2d(c, a, pp) >= 0) return false;
-    }
-    return true;
-  };
 
   auto is_ear = [&](std::size_t ia, std::size_t ib, std::size_t ic) {
     const Vec2 a = loop[ia], b = loop[ib], c = loop[ic];
@@ -557,7 +491,7 @@ bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& t
   std::size_t stall = 0;
   while (remaining > 3) {
     const std::size_t a = prev[cur], c = next[cur];
-    if (simple ? is_simple_ear(a, cur, c) : is_ear(a, cur, c)) {
+    if (is_ear(a, cur, c)) {
       triangles.push_back({loop[a], loop[cur], loop[c]});
       unlink(cur);
       // Closing a lobe at a repeated vertex leaves two copies side by side.

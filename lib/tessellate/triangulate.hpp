@@ -41,14 +41,9 @@ std::vector<PolygonLoops> relink_touching_loops(std::vector<Vec2> outer, std::ve
 // left). Works on weakly simple loops with repeated vertices and collinear
 // runs. Always terminates in O(n^2) ear tests per removed vertex at most; on an
 // invalid loop it falls back to best-effort ears (check_mesh reports the damage).
-// Returns false when a fallback was needed.
-// `simple_edges`: the caller knows that the loop's edges meet only at
-// common vertices (for build_mesh: pieces of separated, non-crossing rings).
-// Such a loop without repeated positions is simple, and its ears are found
-// with the classic test alone (no vertex that is not strictly convex inside
-// the closed triangle), which gives the same answers as the general test.
-bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& triangles,
-              bool simple_edges = false);
+// Returns false when a fallback was needed. (Simple loops that neither cross
+// nor touch each other go to sweep_triangulate instead.)
+bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& triangles);
 
 // Triangulates polygon loops that neither cross nor touch (each loop simple,
 // no position repeated anywhere, the filled side on the left of every edge,
