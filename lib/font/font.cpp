@@ -503,6 +503,7 @@ Outline Font::glyph_outline(std::uint32_t glyph_id) const {
     throw Error(ErrorCode::FontInvalid, "glyph " + std::to_string(glyph_id) + " has no outline: " + im.path);
 
   Outline outline;
+  outline.contours().reserve(static_cast<std::size_t>(std::max<short>(slot->outline.n_contours, 0)));
   const FT_Size_Metrics& size = im.ft_face->size->metrics;
   // A 26.6 coordinate c is c = units * x_scale / 65536, so units = c * 65536 /
   // x_scale; with x_scale = 64 << 16 this is exactly c / 64.

@@ -42,7 +42,11 @@ GlyphCache::Impl::Vertices GlyphCache::Impl::get(const Font& font, std::uint32_t
     options.cubic_tolerance = cubic_tolerance_for_lod(lod, upem);
   }
   auto vertices = std::make_shared<std::vector<gpu::Vertex>>();
-  if (!outline.empty()) gpu::pack_mesh(build_mesh(outline, options), *vertices);
+  if (!outline.empty()) {
+    thread_local Mesh mesh;  // scratch: its storage serves every miss on this thread
+    build_mesh(outline, options, mesh);
+    gpu::pack_mesh(mesh, *vertices);
+  }
   Vertices result = vertices;
 
   const std::size_t size = bytes_of(*result);

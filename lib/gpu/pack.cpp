@@ -54,10 +54,12 @@ Bary bary_of(Vec2 a, Vec2 b, Vec2 c) {
   return g;
 }
 
+// Left uninitialised (no member initialisers): emit fills the ones it uses.
 struct Corner {
-  int vertex = 0;  // 0, 1, 2: which triangle vertex the point moves from
-  Vec2 offset{};   // per unit of dilation
+  int vertex;  // 0, 1, 2: which triangle vertex the point moves from
+  double ox, oy;  // its offset per unit of dilation
 };
+Corner corner(std::size_t vertex, Vec2 offset) { return {static_cast<int>(vertex), offset.x, offset.y}; }
 
 // The grown triangle as a convex polygon of 3 to 6 points, in order. Each
 // edge moves outward by 1 (times t); see the file comment for the bevels.
@@ -76,7 +78,7 @@ int grown_polygon(const std::array<Vec2, 3>& p, std::array<Corner, 6>& out) {
     const Vec2 nb = normal[k];         // edge leaving p[k]
     const double denom = 1.0 + dot(na, nb);
     if (denom > tolerance::kMinMiterDenominator) {
-      out[static_cast<std::size_t>(count++)] = Corner{static_cast<int>(k), (na + nb) * (1.0 / denom)};
+      out[static_cast<std::size_t>(count++)] = corner(k, (na + nb) * (1.0 / denom));
       continue;
     }
     // Bevel: the points of both moved edges at distance 1 from p[k] along
@@ -86,8 +88,8 @@ int grown_polygon(const std::array<Vec2, 3>& p, std::array<Corner, 6>& out) {
     const Vec2 u = unit(ea + eb);
     const double ua = dot(u, ea), ub = dot(u, eb);
     if (!(ua > 1e-9 && ub > 1e-9)) return 0;  // a needle with no width: nothing to draw
-    out[static_cast<std::size_t>(count++)] = Corner{static_cast<int>(k), na + ea * ((1.0 - dot(u, na)) / ua)};
-    out[static_cast<std::size_t>(count++)] = Corner{static_cast<int>(k), nb + eb * ((1.0 - dot(u, nb)) / ub)};
+    out[static_cast<std::size_t>(count++)] = corner(k, na + ea * ((1.0 - dot(u, na)) / ua));
+    out[static_cast<std::size_t>(count++)] = corner(k, nb + eb * ((1.0 - dot(u, nb)) / ub));
   }
   return count;
 }
@@ -109,16 +111,16 @@ void emit(const std::array<Vec2, 3>& p, const Bary& g, int kind, float s, float 
     Vertex& v = corner_vertex[i];
     v.pos[0] = static_cast<float>(p[k].x);
     v.pos[1] = static_cast<float>(p[k].y);
-    v.pos[2] = static_cast<float>(c.offset.x);
-    v.pos[3] = static_cast<float>(c.offset.y);
+    v.pos[2] = static_cast<float>(c.ox);
+    v.pos[3] = static_cast<float>(c.oy);
     v.coef[0] = kCornerTau[k][0];
     v.coef[1] = kCornerTau[k][1];
     v.coef[2] = s;
     v.coef[3] = 0.0f;
     v.info[0] = static_cast<float>(kind);
     v.info[1] = w;
-    v.info[2] = static_cast<float>(dot(g.grad1, c.offset));
-    v.info[3] = static_cast<float>(dot(g.grad2, c.offset));
+    v.info[2] = static_cast<float>(g.grad1.x * c.ox + g.grad1.y * c.oy);
+    v.info[3] = static_cast<float>(g.grad2.x * c.ox + g.grad2.y * c.oy);
   }
   const std::size_t first = out.size();
   out.resize(first + 3 * static_cast<std::size_t>(count - 2));

@@ -183,26 +183,65 @@ double ring_area(const Ring& ring) {
     if (ring[i].conic) {
       // The arc adds the area between chord and arc when it bulges to the
       // right of a->b (the exterior of a counter-clockwise ring).
-      area += conic_area_ratio(ring[i].weight) * 0.5 * cross(ring[i].control - a, b - a);
+      // (Weight 1, every glyph's conic: the ratio is 2/3, as conic_area_ratio
+      // returns it, without the call.)
+      const double ratio = ring[i].weight == 1.0 ? 2.0 / 3.0 : conic_area_ratio(ring[i].weight);
+      area += ratio * 0.5 * cross(ring[i].control - a, b - a);
     }
   }
   return area;
 }
 
-std::vector<Ring> clean_rings(const Outline& quadratic) {
-  std::vector<Ring> rings;
-  for (const Contour& contour : quadratic.contours()) {
-    Ring ring;
+// Rings out of use, kept with their storage: the rings of the next glyph
+// reuse it (no allocation per glyph once warm).
+std::vector<Ring>& spare_rings() {
+  thread_local std::vector<Ring> spare;
+  return spare;
+}
+
+Ring take_ring() {
+  std::vector<Ring>& spare = spare_rings();
+  if (spare.empty()) return Ring();
+  Ring ring = std::move(spare.back());
+  spare.pop_back();
+  ring.clear();
+  return ring;
+}
+
+void recycle_ring(Ring&& ring) {
+  if (ring.capacity() != 0) spare_rings().push_back(std::move(ring));
+}
+
+void recycle_rings(std::vector<Ring>& rings) {
+  for (Ring& ring : rings) recycle_ring(std::move(ring));
+  rings.clear();
+}
+
+void clean_rings(const Outline& outline, double cubic_tolerance, std::vector<Ring>& rings) {
+  recycle_rings(rings);
+  thread_local std::vector<Segment> quadratics;  // scratch: one cubic's replacement
+  auto add_piece = [](Ring& ring, const Segment& s) {
+    Piece p;
+    p.a = canonical(s.p[0]);
+    if (s.kind == Segment::Kind::Conic) {
+      p.conic = true;
+      p.control = canonical(s.p[1]);
+      p.weight = s.weight;
+    }
+    ring.push_back(p);
+  };
+  for (const Contour& contour : outline.contours()) {
+    Ring ring = take_ring();
     ring.reserve(contour.segments.size());
     for (const Segment& s : contour.segments) {
-      Piece p;
-      p.a = canonical(s.p[0]);
-      if (s.kind == Segment::Kind::Conic) {
-        p.conic = true;
-        p.control = canonical(s.p[1]);
-        p.weight = s.weight;
+      if (s.kind != Segment::Kind::Cubic) {
+        add_piece(ring, s);
+        continue;
       }
-      ring.push_back(p);
+      // What to_quadratic_outline would give, without copying the outline.
+      quadratics.clear();
+      cubic_to_quadratics(s, cubic_tolerance, quadratics);
+      for (const Segment& q : quadratics) add_piece(ring, q);
     }
     // Each pass shrinks the ring or stops the loop; the cap only matters for
     // adversarial input, where leftovers are handled by the ear clipper.
@@ -226,11 +265,11 @@ std::vector<Ring> clean_rings(const Outline& quadratic) {
     // the copy split_at_repeated_vertices would make.
     if (!has_repeated_position(ring.size(), [&](std::size_t i) { return ring[i].a; })) {
       keep(ring);
-      continue;
+    } else {
+      for (Ring& loop : split_at_repeated_vertices(ring)) keep(loop);
     }
-    for (Ring& loop : split_at_repeated_vertices(ring)) keep(loop);
+    recycle_ring(std::move(ring));  // (when not kept)
   }
-  return rings;
 }
 
 // --- Hull separation --------------------------------------------------------------
@@ -448,15 +487,17 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
     thread_local std::vector<HullRef> refs;
     thread_local std::vector<std::size_t> mark_base;  // ring r's marks start at mark_base[r]
     thread_local std::vector<char> split_marks;
-    refs.clear();
     mark_base.assign(rings.size() + 1, 0);
     for (std::size_t r = 0; r < rings.size(); ++r) mark_base[r + 1] = mark_base[r] + rings[r].size();
     split_marks.assign(mark_base.back(), 0);
+    // Grown, never shrunk: resize() would construct every record again.
+    if (refs.size() < mark_base.back()) refs.resize(mark_base.back());
+    HullRef* const unsorted = refs.data();
     for (std::size_t r = 0; r < rings.size(); ++r) {
       const Ring& ring = rings[r];
       for (std::size_t i = 0; i < ring.size(); ++i) {
         const Piece& piece = ring[i];
-        HullRef ref;
+        HullRef& ref = unsorted[mark_base[r] + i];
         ref.hull[0] = piece.a;
         ref.n = piece.conic ? 3 : 2;
         if (piece.conic) ref.hull[1] = piece.control;
@@ -466,27 +507,66 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
         ref.depth = piece.depth;
         ref.weight = piece.weight;
         ref.mark = mark_base[r] + i;
-        refs.push_back(ref);
       }
     }
-    std::sort(refs.begin(), refs.end(), [](const HullRef& a, const HullRef& b) { return a.box.min.x < b.box.min.x; });
+    // Sorted by the boxes' left sides through short keys (the records are
+    // large). Which pairs are met does not depend on the order among equal
+    // keys, and the answers are combined order-independently.
+    struct SortKey {
+      double min_x;
+      std::uint32_t ref;
+    };
+    thread_local std::vector<SortKey> keys;
+    keys.resize(mark_base.back());
+    for (std::size_t k = 0; k < keys.size(); ++k) keys[k] = {unsorted[k].box.min.x, static_cast<std::uint32_t>(k)};
+    std::sort(keys.begin(), keys.end(), [](const SortKey& a, const SortKey& b) { return a.min_x < b.min_x; });
     bool any = false;
     bool overlap_left = false;  // an overlap seen in this pass
     // rings_cross(rings, true) over the same pairs; it stands when this pass
     // is the last (no conic split). Once true, nothing more to look for.
     bool cross_seen = crossing == nullptr;
-    // The boxes again in a compact array: most pairs the sweep meets are
-    // rejected by their boxes alone.
-    thread_local std::vector<Box> boxes;
-    boxes.resize(refs.size());
-    for (std::size_t k = 0; k < refs.size(); ++k) boxes[k] = refs[k].box;
-    for (std::size_t i = 0; i < refs.size(); ++i) {
-      const Box bi = boxes[i];
-      for (std::size_t j = i + 1; j < boxes.size() && boxes[j].min.x <= bi.max.x; ++j) {
-        // (Pieces with the same end points have overlapping boxes.)
-        if (!boxes_overlap(bi, boxes[j])) continue;
-        const HullRef& ri = refs[i];
-        const HullRef& rj = refs[j];
+    // The boxes again, in sorted order, one array per side: most pairs the
+    // sweep meets are rejected by their boxes alone, a test written without
+    // branches (its outcome is unpredictable). (Raw pointers: the stores into
+    // the char marks may alias anything, which would make every access
+    // through the thread-local vectors reload them.)
+    thread_local std::vector<double> box_sides;
+    thread_local std::vector<const HullRef*> sorted_refs;
+    thread_local std::vector<std::uint32_t> candidates;
+    const std::size_t count = keys.size();
+    box_sides.resize(4 * count);
+    sorted_refs.resize(count);
+    candidates.resize(count);
+    double* const min_x = box_sides.data();
+    double* const max_x = min_x + count;
+    double* const min_y = max_x + count;
+    double* const max_y = min_y + count;
+    const HullRef** const ref = sorted_refs.data();
+    std::uint32_t* const candidate = candidates.data();
+    char* const marks = split_marks.data();
+    for (std::size_t k = 0; k < count; ++k) {
+      ref[k] = unsorted + keys[k].ref;
+      const Box& b = ref[k]->box;
+      min_x[k] = b.min.x;
+      max_x[k] = b.max.x;
+      min_y[k] = b.min.y;
+      max_y[k] = b.max.y;
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+      // Boxes j > i start right of box i's left side (sorted): they overlap
+      // it in x while they start left of its right side, and then in both
+      // when their y ranges meet. (Pieces with the same end points have
+      // overlapping boxes.)
+      const double right = max_x[i], bottom = min_y[i], top = max_y[i];
+      std::size_t found = 0;
+      for (std::size_t j = i + 1; j < count && min_x[j] <= right; ++j) {
+        candidate[found] = static_cast<std::uint32_t>(j);
+        found += static_cast<std::size_t>((min_y[j] <= top) & (bottom <= max_y[j]));
+      }
+      for (std::size_t f = 0; f < found; ++f) {
+        const std::size_t j = candidate[f];
+        const HullRef& ri = *ref[i];
+        const HullRef& rj = *ref[j];
         const bool ci = ri.n == 3, cj = rj.n == 3;
         if (!ci && !cj) {
           if (!cross_seen) cross_seen = lines_cross(ri.hull[0], ri.hull[1], rj.hull[0], rj.hull[1]);
@@ -503,11 +583,11 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
         if (!hulls_overlap(ri.hull, ri.n, rj.hull, rj.n)) continue;
         // Subdividing a conic shrinks its hull towards the arc; lines stay.
         if (ci && ri.depth < tolerance::kMaxHullSubdivisionDepth) {
-          split_marks[ri.mark] = 1;
+          marks[ri.mark] = 1;
           any = true;
         }
         if (cj && rj.depth < tolerance::kMaxHullSubdivisionDepth) {
-          split_marks[rj.mark] = 1;
+          marks[rj.mark] = 1;
           any = true;
         }
         overlap_left = true;
@@ -518,13 +598,13 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
       return !overlap_left;
     }
     for (std::size_t r = 0; r < rings.size(); ++r) {
-      const char* marks = split_marks.data() + mark_base[r];
-      if (std::find(marks, marks + rings[r].size(), char{1}) == marks + rings[r].size()) continue;  // nothing to split
-      Ring next;
+      const char* ring_marks = split_marks.data() + mark_base[r];
+      if (std::find(ring_marks, ring_marks + rings[r].size(), char{1}) == ring_marks + rings[r].size()) continue;  // nothing to split
+      Ring next = take_ring();
       next.reserve(rings[r].size() + 8);
       for (std::size_t i = 0; i < rings[r].size(); ++i) {
         const Piece& p = rings[r][i];
-        if (!marks[i]) {
+        if (!ring_marks[i]) {
           next.push_back(p);
           continue;
         }
@@ -533,6 +613,7 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
         next.push_back(conic_piece(halves.second, p.depth + 1));
       }
       rings[r].swap(next);
+      recycle_ring(std::move(next));
     }
   }
   return false;  // passes used up right after splitting: not known to be separated
@@ -593,7 +674,8 @@ void reverse_ring(Ring& ring) {
 
 }  // namespace
 
-std::vector<Region> nest_rings(std::vector<Ring> rings) {
+void nest_rings(std::vector<Ring>& rings, std::vector<std::uint32_t>& region_rings,
+                std::vector<std::uint32_t>& region_start) {
   const std::size_t n = rings.size();
   // Scratch reused across calls (no allocation per glyph once warm).
   thread_local std::vector<double> area;
@@ -636,25 +718,29 @@ std::vector<Region> nest_rings(std::vector<Ring> rings) {
     const bool ccw = area[i] > 0;
     if ((role[i] == Role::Outer) != ccw) reverse_ring(rings[i]);
   }
-  std::vector<Region> regions;
-  thread_local std::vector<std::size_t> region_of;
-  region_of.assign(n, n);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (role[i] != Role::Outer) continue;
-    region_of[i] = regions.size();
-    regions.push_back({std::move(rings[i]), {}});
-  }
+  // Each hole's region is its innermost containing outer ring.
+  thread_local std::vector<std::size_t> owner;
+  owner.assign(n, n);
   for (std::size_t i = 0; i < n; ++i) {
     if (role[i] != Role::Hole) continue;
-    // The innermost outer ring around a hole is its container.
     std::size_t best = n;
     for (std::size_t j : containers(i)) {
       if (role[j] == Role::Outer && (best == n || std::fabs(area[j]) < std::fabs(area[best]))) best = j;
     }
-    if (best == n) continue;  // cannot happen for non-crossing rings
-    regions[region_of[best]].holes.push_back(std::move(rings[i]));
+    owner[i] = best;  // n: cannot happen for non-crossing rings; the hole is dropped
   }
-  return regions;
+  // Regions in the order of their outer rings, each followed by its holes
+  // in ring order.
+  region_rings.clear();
+  region_start.clear();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (role[i] != Role::Outer) continue;
+    region_start.push_back(static_cast<std::uint32_t>(region_rings.size()));
+    region_rings.push_back(static_cast<std::uint32_t>(i));
+    for (std::size_t h = 0; h < n; ++h)
+      if (role[h] == Role::Hole && owner[h] == i) region_rings.push_back(static_cast<std::uint32_t>(h));
+  }
+  region_start.push_back(static_cast<std::uint32_t>(region_rings.size()));
 }
 
 }  // namespace detail
@@ -699,18 +785,22 @@ std::vector<Vec2> remove_folds(std::vector<Vec2> loop) {
 // table on the coordinates' bits (positions are canonical, see canonical()).
 class PointIndex {
  public:
-  std::vector<Vec2> points;
+  std::vector<Vec2>& points;  // index -> position (filled by the lookups)
 
-  explicit PointIndex(std::size_t expected) {
+  PointIndex(std::vector<Vec2>& points_out, std::size_t expected) : points(points_out) {
     std::size_t capacity = 16;
-    while (capacity < 2 * expected + 16) capacity *= 2;
+    shift_ = 60;
+    while (capacity < 2 * expected + 16) {
+      capacity *= 2;
+      --shift_;
+    }
     slots_.assign(capacity, kEmpty);
     points.reserve(expected);
   }
 
   std::uint32_t operator()(Vec2 p) {
     if (2 * (points.size() + 1) > slots_.size()) grow();
-    std::size_t slot = hash(p) & (slots_.size() - 1);
+    std::size_t slot = this->slot(p);
     while (slots_[slot] != kEmpty) {
       if (points[slots_[slot]] == p) return slots_[slot];
       slot = (slot + 1) & (slots_.size() - 1);
@@ -722,7 +812,13 @@ class PointIndex {
 
  private:
   static constexpr std::uint32_t kEmpty = 0xffffffffu;
-  std::vector<std::uint32_t> slots_;
+  // Scratch reused across calls (one index at a time per thread).
+  static std::vector<std::uint32_t>& scratch_slots() {
+    thread_local std::vector<std::uint32_t> slots;
+    return slots;
+  }
+  std::vector<std::uint32_t>& slots_ = scratch_slots();
+  int shift_ = 60;  // 64 - log2(slots_.size())
 
   static std::size_t hash(Vec2 p) {
     p = detail::canonical(p);  // -0.0 == +0.0 must hash alike
@@ -730,21 +826,17 @@ class PointIndex {
     std::memcpy(&x, &p.x, sizeof x);
     std::memcpy(&y, &p.y, sizeof y);
     // Font coordinates are short binary numbers whose low mantissa bits are
-    // zero: mix all bits (murmur3's finaliser) so they reach the low bits.
-    std::uint64_t h = x ^ ((y << 29) | (y >> 35)) ^ 0x9e3779b97f4a7c15ull;
-    h ^= h >> 33;
-    h *= 0xff51afd7ed558ccdull;
-    h ^= h >> 33;
-    h *= 0xc4ceb9fe1a85ec53ull;
-    h ^= h >> 33;
-    return static_cast<std::size_t>(h);
+    // zero: multiply (Fibonacci hashing) and keep the top bits, which every
+    // input bit reaches; slot() takes them.
+    return static_cast<std::size_t>((x * 0x9e3779b97f4a7c15ull) ^ (y * 0xc2b2ae3d27d4eb4full));
   }
+  std::size_t slot(Vec2 p) const { return static_cast<std::size_t>(hash(p) >> shift_); }
 
   void grow() {
-    std::vector<std::uint32_t> old(slots_.size() * 2, kEmpty);
-    old.swap(slots_);
+    slots_.assign(slots_.size() * 2, kEmpty);
+    --shift_;
     for (std::uint32_t i = 0; i < points.size(); ++i) {
-      std::size_t slot = hash(points[i]) & (slots_.size() - 1);
+      std::size_t slot = this->slot(points[i]);
       while (slots_[slot] != kEmpty) slot = (slot + 1) & (slots_.size() - 1);
       slots_[slot] = i;
     }
@@ -753,19 +845,15 @@ class PointIndex {
 
 }  // namespace
 
-Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
+void build_mesh(const Outline& outline, const MeshOptions& options, Mesh& mesh) {
   using namespace detail;
   if (!outline.is_finite()) throw Error(ErrorCode::Geometry, "build_mesh: outline has non-finite coordinates or weights");
   if (!(options.cubic_tolerance > 0.0) || !std::isfinite(options.cubic_tolerance)) {
     throw Error(ErrorCode::Geometry, "build_mesh: cubic_tolerance must be positive and finite");
   }
-  // TrueType outlines have no cubics: clean them as they are, without a copy.
-  bool has_cubic = false;
-  for (const Contour& contour : outline.contours()) {
-    for (const Segment& s : contour.segments) has_cubic = has_cubic || s.kind == Segment::Kind::Cubic;
-  }
-  std::vector<Ring> rings =
-      has_cubic ? clean_rings(to_quadratic_outline(outline, options.cubic_tolerance)) : clean_rings(outline);
+  // The rings (and their storage) are reused from glyph to glyph.
+  thread_local std::vector<Ring> rings;
+  clean_rings(outline, options.cubic_tolerance, rings);
   bool crossing = false;
   const bool separated = separate_hulls(rings, &crossing);
   // Crossing, overlapping or edge-sharing contours: resolve them into
@@ -775,27 +863,29 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
   // which lets sweep_triangulate take their loops when no position repeats.
   bool simple_edges = separated && !crossing;
   if (kResolveCrossingContours && (separated ? crossing : rings_cross(rings, false))) {
-    rings = resolve_crossings(rings);
+    std::vector<Ring> resolved = resolve_crossings(rings);
+    recycle_rings(rings);
+    rings = std::move(resolved);
     separate_hulls(rings);
     simple_edges = false;
   }
-  std::vector<Region> regions = nest_rings(std::move(rings));
+  // Region r is rings region_rings[region_start[r] .. region_start[r + 1]):
+  // its outer ring, then its holes.
+  thread_local std::vector<std::uint32_t> region_rings, region_start;
+  nest_rings(rings, region_rings, region_start);
 
-  Mesh mesh;
+  mesh.points.clear();
+  mesh.triangles.clear();
+  mesh.curves.clear();
+  mesh.boundary_lines.clear();
   std::size_t piece_count = 0;
-  for (const Region& region : regions) {
-    piece_count += region.outer.size();
-    for (const Ring& hole : region.holes) piece_count += hole.size();
-  }
-  PointIndex index(2 * piece_count);
+  for (const std::uint32_t r : region_rings) piece_count += rings[r].size();
+  PointIndex index(mesh.points, 2 * piece_count);
   mesh.boundary_lines.reserve(piece_count);
   mesh.curves.reserve(piece_count);
-  // Scratch reused across calls (no allocation per glyph once warm).
-  thread_local std::vector<EdgeKey> constrained;  // outline edges: never flipped (sorted below)
-  constrained.clear();
-  constrained.reserve(2 * piece_count);
   // Every region's polygon loops as vertex indices (outer first, then its
   // holes): loop l is loop_vertices[loop_start[l] .. loop_start[l + 1]).
+  // Scratch reused across calls (no allocation per glyph once warm).
   thread_local std::vector<std::uint32_t> loop_vertices, loop_start;
   loop_vertices.clear();
   loop_vertices.reserve(2 * piece_count);
@@ -811,7 +901,6 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
       loop_vertices.push_back(ia);
       if (!p.conic) {
         mesh.boundary_lines.push_back({ia, ib});
-        constrained.push_back(edge_key(ia, ib));
         continue;
       }
       // Filled side is on the left: a control point on the right of the
@@ -820,24 +909,18 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
       const bool convex = orient2d(p.a, ring_end(ring, i), p.control) <= 0;
       const std::uint32_t ic = index(p.control);
       mesh.curves.push_back({ia, ic, ib, p.weight, convex});
-      if (convex) {
-        constrained.push_back(edge_key(ia, ib));
-      } else {
-        loop_vertices.push_back(ic);
-        constrained.push_back(edge_key(ia, ic));
-        constrained.push_back(edge_key(ic, ib));
-      }
+      if (!convex) loop_vertices.push_back(ic);
     }
     loop_start.push_back(static_cast<std::uint32_t>(loop_vertices.size()));
   };
   thread_local std::vector<std::size_t> region_first_loop;
   region_first_loop.clear();
-  for (const Region& region : regions) {
+  for (std::size_t r = 0; r + 1 < region_start.size(); ++r) {
     region_first_loop.push_back(loop_start.size() - 1);
-    polygonise(region.outer);
-    for (const Ring& hole : region.holes) polygonise(hole);
+    for (std::uint32_t k = region_start[r]; k < region_start[r + 1]; ++k) polygonise(rings[region_rings[k]]);
   }
   region_first_loop.push_back(loop_start.size() - 1);
+  recycle_rings(rings);
 
   // Fast path: loops that neither cross nor touch are triangulated by one
   // sweep (which gives up where a position repeats: touching loops). Loops
@@ -861,7 +944,8 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
         expected_triangles += l == region_first_loop[r] ? last - first - 2 : last - first + 2;
       }
     }
-    swept = sweep_triangulate(index.points, sweep_vertices, sweep_start, mesh.triangles);
+    mesh.triangles.reserve(expected_triangles);
+    swept = sweep_triangulate(mesh.points, sweep_vertices, sweep_start, mesh.triangles);
     if (swept && mesh.triangles.size() != expected_triangles) {
       swept = false;
       mesh.triangles.clear();
@@ -874,7 +958,7 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
     auto positions = [&](std::size_t l) {
       std::vector<Vec2> loop;
       loop.reserve(loop_start[l + 1] - loop_start[l]);
-      for (std::uint32_t k = loop_start[l]; k < loop_start[l + 1]; ++k) loop.push_back(index.points[loop_vertices[k]]);
+      for (std::uint32_t k = loop_start[l]; k < loop_start[l + 1]; ++k) loop.push_back(mesh.points[loop_vertices[k]]);
       return remove_folds(std::move(loop));
     };
     for (std::size_t r = 0; r + 1 < region_first_loop.size(); ++r) {
@@ -891,13 +975,30 @@ Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
     for (const auto& t : triangle_points) mesh.triangles.push_back({index(t[0]), index(t[1]), index(t[2])});
   }
   if (swept) {
-    delaunay_flips_manifold(index.points, mesh.triangles);
+    delaunay_flips_manifold(mesh.points, mesh.triangles);
   } else {
+    // The outline edges, never flipped: lines, convex curves' chords and
+    // concave curves' legs.
+    thread_local std::vector<EdgeKey> constrained;  // scratch
+    constrained.clear();
+    for (const auto& line : mesh.boundary_lines) constrained.push_back(edge_key(line[0], line[1]));
+    for (const CurvedTriangle& c : mesh.curves) {
+      if (c.convex) {
+        constrained.push_back(edge_key(c.p0, c.p2));
+      } else {
+        constrained.push_back(edge_key(c.p0, c.control));
+        constrained.push_back(edge_key(c.control, c.p2));
+      }
+    }
     std::sort(constrained.begin(), constrained.end());
     constrained.erase(std::unique(constrained.begin(), constrained.end()), constrained.end());
-    delaunay_flips(index.points, mesh.triangles, constrained);
+    delaunay_flips(mesh.points, mesh.triangles, constrained);
   }
-  mesh.points = std::move(index.points);
+}
+
+Mesh build_mesh(const Outline& outline, const MeshOptions& options) {
+  Mesh mesh;
+  build_mesh(outline, options, mesh);
   return mesh;
 }
 

@@ -2,6 +2,7 @@
 // the quadratic outline and the polygon loops.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "curvetext/outline.hpp"
@@ -22,19 +23,23 @@ using Ring = std::vector<Piece>;
 // (i < ring.size(); a compare instead of a division in the hot loops.)
 inline Vec2 ring_end(const Ring& ring, std::size_t i) { return ring[i + 1 == ring.size() ? 0 : i + 1].a; }
 
-// A filled region: its outer ring (counter-clockwise) and its holes (clockwise).
-struct Region {
-  Ring outer;
-  std::vector<Ring> holes;
-};
-
 // Exact signed area of a ring (conic caps included), counter-clockwise > 0.
 double ring_area(const Ring& ring);
 
-// Rings of the quadratic outline with zero-length pieces, flat conics, exact
-// collinear runs and spikes removed, each split at its repeated vertices into
-// sub-rings that pass through every vertex once; rings without area dropped.
-std::vector<Ring> clean_rings(const Outline& quadratic);
+// Rings of the outline (cubics replaced by quadratics within
+// `cubic_tolerance`, as to_quadratic_outline does) with zero-length pieces,
+// flat conics, exact collinear runs and spikes removed, each split at its
+// repeated vertices into sub-rings that pass through every vertex once;
+// rings without area dropped. Replaces the contents of `rings`, whose old
+// rings go to a per-thread pool that take_ring draws from (their storage is
+// reused: no allocation per glyph once warm).
+void clean_rings(const Outline& outline, double cubic_tolerance, std::vector<Ring>& rings);
+
+// An empty ring, with storage from the pool when it has some.
+Ring take_ring();
+// Gives a ring's storage (all rings' storage) to the pool.
+void recycle_ring(Ring&& ring);
+void recycle_rings(std::vector<Ring>& rings);
 
 // True when two hulls (2 points: a segment; 3: a control triangle) share any
 // point other than a common vertex.
@@ -75,7 +80,12 @@ bool lines_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
 std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings);
 
 // Nonzero-rule roles of non-crossing rings: which bound the fill, their
-// orientation normalised, holes attached to their innermost container.
-std::vector<Region> nest_rings(std::vector<Ring> rings);
+// orientation normalised in place (fill on the left: outer rings
+// counter-clockwise, holes clockwise), holes attached to their innermost
+// container. Region r is the rings region_rings[region_start[r] ..
+// region_start[r + 1]): its outer ring, then its holes; rings bounding no fill
+// are in no region.
+void nest_rings(std::vector<Ring>& rings, std::vector<std::uint32_t>& region_rings,
+                std::vector<std::uint32_t>& region_start);
 
 }  // namespace curvetext::detail

@@ -65,6 +65,8 @@ class Sweep {
   std::vector<std::uint32_t>& next_ = scratch_u32(1);
   std::vector<std::uint32_t>& rank_ = scratch_u32(2);
   std::vector<std::uint32_t>& order_ = scratch_u32(3);
+  // Per loop position: its point (one indirection fewer than points_[vertices_[i]]).
+  std::vector<Vec2>& position_ = scratch<Vec2>();
   std::vector<Interval>& status_ = scratch<Interval>();
   // Monotone polygon stacks: loop positions, kRightSide on right-chain entries.
   std::vector<std::vector<std::uint32_t>>& stacks_ = scratch<std::vector<std::uint32_t>>();
@@ -82,7 +84,7 @@ class Sweep {
     return v[k];
   }
 
-  Vec2 at(std::uint32_t position) const { return points_[vertices_[position & kIndexMask]]; }
+  Vec2 at(std::uint32_t position) const { return position_[position & kIndexMask]; }
 
   int new_poly(std::uint32_t first) {
     int id;
@@ -321,24 +323,32 @@ bool Sweep::run() {
   prev_.resize(n);
   next_.resize(n);
   rank_.resize(n);
-  order_.clear();
+  position_.resize(n);
+  // Sorted as (y, x, position) records: the comparisons read one array.
+  struct Key {
+    double y, x;
+    std::uint32_t position;
+  };
+  thread_local std::vector<Key> keys;
+  keys.clear();
   for (std::size_t l = 0; l + 1 < start_.size(); ++l) {
     const std::uint32_t first = start_[l], last = start_[l + 1];
     if (last - first < 3) return false;
     for (std::uint32_t i = first; i < last; ++i) {
       prev_[i] = i == first ? last - 1 : i - 1;
       next_[i] = i + 1 == last ? first : i + 1;
-      order_.push_back(i);
+      const Vec2 p = points_[vertices_[i]];
+      position_[i] = p;
+      keys.push_back({p.y, p.x, i});
     }
   }
-  auto below = [&](std::uint32_t a, std::uint32_t b) {
-    const Vec2 pa = at(a), pb = at(b);
-    return pa.y < pb.y || (pa.y == pb.y && pa.x < pb.x);
-  };
-  std::sort(order_.begin(), order_.end(), below);
-  for (std::size_t k = 0; k < order_.size(); ++k) {
-    if (k > 0 && at(order_[k - 1]) == at(order_[k])) return false;  // repeated position
-    rank_[order_[k]] = static_cast<std::uint32_t>(k);
+  std::sort(keys.begin(), keys.end(),
+            [](const Key& a, const Key& b) { return a.y < b.y || (a.y == b.y && a.x < b.x); });
+  order_.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    if (k > 0 && keys[k - 1].y == keys[k].y && keys[k - 1].x == keys[k].x) return false;  // repeated position
+    order_[k] = keys[k].position;
+    rank_[keys[k].position] = static_cast<std::uint32_t>(k);
   }
   status_.clear();
   free_stacks_.clear();

@@ -704,58 +704,40 @@ void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std:
 }
 
 void delaunay_flips_manifold(const std::vector<Vec2>& points, std::vector<std::array<std::uint32_t, 3>>& triangles) {
-  // Half-edge h = 3 t + k runs from triangles[t][k] to triangles[t][k + 1];
-  // twin[h] is the half-edge running back on the other triangle, or -1.
+  // Half-edge h = 4 t + k (k < 3: a shift and a mask instead of a division)
+  // runs from triangles[t][k] to triangles[t][k + 1]; twin[h] is the
+  // half-edge running back on the other triangle, or -1.
   const std::size_t m = triangles.size();
   if (m < 2) return;
-  thread_local std::vector<std::int32_t> twin;
-  thread_local std::vector<std::uint32_t> bucket_start, fill;
-  thread_local std::vector<std::uint64_t> bucket;
-  twin.assign(3 * m, -1);
-  // Half-edges bucketed by their smaller vertex (a counting sort), each
-  // bucket sorted by the larger vertex (insertion sort: buckets hold a few
-  // entries), then equal neighbours paired; an edge with more than two
-  // sides gets no twin.
-  bucket_start.assign(points.size() + 1, 0);
-  for (const auto& t : triangles) {
-    for (int k = 0; k < 3; ++k) ++bucket_start[std::min(t[k], t[(k + 1) % 3]) + 1];
-  }
-  for (std::size_t v = 0; v < points.size(); ++v) bucket_start[v + 1] += bucket_start[v];
-  fill.assign(bucket_start.begin(), bucket_start.end() - 1);
-  bucket.resize(3 * m);
-  for (std::size_t t = 0; t < m; ++t) {
-    for (std::size_t k = 0; k < 3; ++k) {
-      const std::uint32_t a = triangles[t][k], b = triangles[t][(k + 1) % 3];
-      bucket[fill[std::min(a, b)]++] = (std::uint64_t{std::max(a, b)} << 32) | (3 * t + k);
-    }
-  }
-  for (std::size_t v = 0; v < points.size(); ++v) {
-    std::uint64_t* first = bucket.data() + bucket_start[v];
-    std::uint64_t* last = bucket.data() + bucket_start[v + 1];
-    for (std::uint64_t* i = first + 1; i < last; ++i) {
-      const std::uint64_t key = *i;
-      std::uint64_t* j = i;
-      for (; j > first && *(j - 1) > key; --j) *j = *(j - 1);
-      *j = key;
-    }
-    for (std::uint64_t* i = first; i < last;) {
-      std::uint64_t* run_end = i + 1;
-      while (run_end < last && (*run_end >> 32) == (*i >> 32)) ++run_end;
-      if (run_end - i == 2) {
-        const auto h1 = static_cast<std::uint32_t>(i[0]), h2 = static_cast<std::uint32_t>(i[1]);
-        // Opposite directions: h1's start is h2's end.
-        if (triangles[h1 / 3][h1 % 3] == triangles[h2 / 3][(h2 % 3 + 1) % 3]) {
-          twin[h1] = static_cast<std::int32_t>(h2);
-          twin[h2] = static_cast<std::int32_t>(h1);
+  static constexpr std::uint32_t kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};
+  auto to = [&](std::uint32_t h) { return triangles[h >> 2][kNext[h & 3]]; };
+  thread_local std::vector<std::int32_t> twin, out_next, out_head;
+  twin.assign(4 * m, -1);
+  out_next.resize(4 * m);
+  out_head.assign(points.size(), -1);
+  // Each vertex keeps a list of the half-edges leaving it (a vertex has a
+  // few); a half-edge a -> b looks for b -> a among those leaving b. In a
+  // manifold triangulation each is found once; an edge met a third time is
+  // left without a twin (never flipped).
+  for (std::uint32_t t = 0; t < m; ++t) {
+    for (std::uint32_t k = 0; k < 3; ++k) {
+      const std::uint32_t h = 4 * t + k, a = triangles[t][k], b = triangles[t][kNext[k]];
+      for (std::int32_t g = out_head[b]; g >= 0; g = out_next[static_cast<std::size_t>(g)]) {
+        if (to(static_cast<std::uint32_t>(g)) != a) continue;
+        if (twin[static_cast<std::size_t>(g)] < 0) {
+          twin[static_cast<std::size_t>(g)] = static_cast<std::int32_t>(h);
+          twin[h] = g;
         }
+        break;
       }
-      i = run_end;
+      out_next[h] = out_head[a];
+      out_head[a] = static_cast<std::int32_t>(h);
     }
   }
   thread_local std::vector<std::uint32_t> stack;
   stack.clear();
-  for (std::size_t h = 0; h < 3 * m; ++h)
-    if (twin[h] > static_cast<std::int32_t>(h)) stack.push_back(static_cast<std::uint32_t>(h));
+  for (std::uint32_t h = 0; h < 4 * m; ++h)
+    if (twin[h] > static_cast<std::int32_t>(h)) stack.push_back(h);
   auto link = [&](std::uint32_t h, std::int32_t other) {
     twin[h] = other;
     if (other >= 0) twin[static_cast<std::size_t>(other)] = static_cast<std::int32_t>(h);
@@ -766,24 +748,24 @@ void delaunay_flips_manifold(const std::vector<Vec2>& points, std::vector<std::a
     stack.pop_back();
     const std::int32_t g = twin[h];
     if (g < 0) continue;
-    const std::uint32_t t1 = h / 3, k1 = h % 3, t2 = static_cast<std::uint32_t>(g) / 3, k2 = static_cast<std::uint32_t>(g) % 3;
-    const std::uint32_t a = triangles[t1][k1], b = triangles[t1][(k1 + 1) % 3], c = triangles[t1][(k1 + 2) % 3];
-    const std::uint32_t d = triangles[t2][(k2 + 2) % 3];
+    const std::uint32_t t1 = h >> 2, k1 = h & 3, t2 = static_cast<std::uint32_t>(g) >> 2, k2 = static_cast<std::uint32_t>(g) & 3;
+    const std::uint32_t a = triangles[t1][k1], b = triangles[t1][kNext[k1]], c = triangles[t1][kPrev[k1]];
+    const std::uint32_t d = triangles[t2][kPrev[k2]];
     if (c == d) continue;
     const Vec2 pa = points[a], pb = points[b], pc = points[c], pd = points[d];
     if (orient2d(pa, pd, pc) <= 0 || orient2d(pd, pb, pc) <= 0) continue;  // quad not strictly convex
     if (incircle_sign(pa, pb, pc, pd) <= 0) continue;
-    const std::int32_t bc = twin[3 * t1 + (k1 + 1) % 3], ca = twin[3 * t1 + (k1 + 2) % 3];
-    const std::int32_t ad = twin[3 * t2 + (k2 + 1) % 3], db = twin[3 * t2 + (k2 + 2) % 3];
+    const std::int32_t bc = twin[4 * t1 + kNext[k1]], ca = twin[4 * t1 + kPrev[k1]];
+    const std::int32_t ad = twin[4 * t2 + kNext[k2]], db = twin[4 * t2 + kPrev[k2]];
     triangles[t1] = {a, d, c};
     triangles[t2] = {d, b, c};
-    link(3 * t1 + 0, ad);
-    link(3 * t1 + 1, static_cast<std::int32_t>(3 * t2 + 2));
-    link(3 * t1 + 2, ca);
-    link(3 * t2 + 0, db);
-    link(3 * t2 + 1, bc);
+    link(4 * t1 + 0, ad);
+    link(4 * t1 + 1, static_cast<std::int32_t>(4 * t2 + 2));
+    link(4 * t1 + 2, ca);
+    link(4 * t2 + 0, db);
+    link(4 * t2 + 1, bc);
     --flips_left;
-    for (const std::uint32_t e : {3 * t1 + 0, 3 * t1 + 2, 3 * t2 + 0, 3 * t2 + 1})
+    for (const std::uint32_t e : {4 * t1 + 0, 4 * t1 + 2, 4 * t2 + 0, 4 * t2 + 1})
       if (twin[e] >= 0) stack.push_back(e);
   }
 }

@@ -49,6 +49,9 @@ struct MeshOptions {
 // Error(Geometry) on non-finite input. Never hangs: work is bounded by the
 // input size and tolerance::kMaxHullSubdivisionDepth.
 Mesh build_mesh(const Outline& outline, const MeshOptions& options = {});
+// The same into `mesh`, whose contents are replaced and whose storage is
+// reused (a glyph cache building many meshes in a row allocates less).
+void build_mesh(const Outline& outline, const MeshOptions& options, Mesh& mesh);
 
 // Area enclosed by the mesh: interior triangles plus, for each curved triangle,
 // the area of its filled side (chord side for convex, outer side otherwise).
