@@ -35,6 +35,17 @@ namespace {
 // different vertex indices); adding +0.0 turns -0.0 into +0.0.
 Vec2 canonical(Vec2 p) { return {p.x + 0.0, p.y + 0.0}; }
 
+// A hash of a canonical position's bits for tables of 2^bits slots. Font
+// coordinates are short binary numbers whose low mantissa bits are zero:
+// multiply (Fibonacci hashing) and keep the top bits, which every input bit
+// reaches.
+std::size_t position_hash(Vec2 p, int bits) {
+  std::uint64_t x, y;
+  std::memcpy(&x, &p.x, sizeof x);
+  std::memcpy(&y, &p.y, sizeof y);
+  return static_cast<std::size_t>(((x * 0x9e3779b97f4a7c15ull) ^ (y * 0xc2b2ae3d27d4eb4full)) >> (64 - bits));
+}
+
 bool nearly_flat(Vec2 a, Vec2 control, Vec2 b) {
   const Vec2 chord = b - a;
   const double len2 = dot(chord, chord);
@@ -59,7 +70,8 @@ bool simplify_pass(Ring& ring) {
         changed = true;
         continue;
       }
-      ring[kept++] = ring[i];
+      if (kept != i) ring[kept] = ring[i];  // (the usual ring: nothing moves)
+      ++kept;
     }
     ring.resize(kept);
   }
@@ -80,12 +92,15 @@ bool simplify_pass(Ring& ring) {
   // (a spike, within the flatness tolerance) -> the spike tip is removed.
   if (ring.size() >= 2) {
     thread_local std::vector<char> drop;  // scratch, reused across calls
-    drop.assign(ring.size(), 0);
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-      const std::size_t j = (i + 1) % ring.size();
+    const std::size_t n = ring.size();
+    drop.assign(n, 0);
+    bool any_dropped = false;
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t j = i + 1 == n ? 0 : i + 1;
+      const std::size_t after_j = j + 1 == n ? 0 : j + 1;
       // At the wrap-around the piece after j may already be gone, which would
       // change where j ends; leave that pair to the next pass.
-      if (drop[i] || drop[j] || drop[(j + 1) % ring.size()] || ring[i].conic || ring[j].conic) continue;
+      if (ring[i].conic || ring[j].conic || drop[i] || drop[j] || drop[after_j]) continue;
       const Vec2 a = ring[i].a, b = ring[j].a, c = ring_end(ring, j);
       const Vec2 ab = b - a, bc = c - b;
       const double along = dot(ab, bc);
@@ -94,14 +109,17 @@ bool simplify_pass(Ring& ring) {
                                                                        std::max(dot(ab, ab), dot(bc, bc));
       if (straight || spike) {
         drop[j] = 1;  // the piece starting at b disappears; piece i now ends at c
-        changed = true;
+        any_dropped = true;
       }
     }
-    std::size_t kept = 0;
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-      if (!drop[i]) ring[kept++] = ring[i];
+    if (any_dropped) {
+      changed = true;
+      std::size_t kept = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!drop[i]) ring[kept++] = ring[i];
+      }
+      ring.resize(kept);
     }
-    ring.resize(kept);
   }
   return changed;
 }
@@ -138,13 +156,25 @@ bool all_collinear(const Ring& ring) {
 namespace {
 
 // True when some position occurs twice among `count` points given by `at`.
+// The positions are canonical (no -0.0; finite), so equal positions have
+// equal bits: an open-addressing hash set on the bits answers in one pass.
 template <class PointAt>
 bool has_repeated_position(std::size_t count, PointAt at) {
-  thread_local std::vector<std::pair<double, double>> sorted;  // scratch, reused across calls
-  sorted.resize(count);
-  for (std::size_t i = 0; i < count; ++i) sorted[i] = {at(i).x, at(i).y};
-  std::sort(sorted.begin(), sorted.end());
-  return std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
+  thread_local std::vector<std::uint32_t> slots;  // scratch: index + 1 of the point there, 0 empty
+  int bits = 4;
+  while ((std::size_t{1} << bits) < 2 * count) ++bits;
+  slots.assign(std::size_t{1} << bits, 0);
+  const std::size_t mask = slots.size() - 1;
+  for (std::size_t i = 0; i < count; ++i) {
+    const Vec2 p = at(i);
+    std::size_t slot = position_hash(p, bits);
+    while (slots[slot] != 0) {
+      if (at(slots[slot] - 1) == p) return true;
+      slot = (slot + 1) & mask;
+    }
+    slots[slot] = static_cast<std::uint32_t>(i + 1);
+  }
+  return false;
 }
 
 }  // namespace
@@ -789,10 +819,10 @@ class PointIndex {
 
   PointIndex(std::vector<Vec2>& points_out, std::size_t expected) : points(points_out) {
     std::size_t capacity = 16;
-    shift_ = 60;
+    bits_ = 4;
     while (capacity < 2 * expected + 16) {
       capacity *= 2;
-      --shift_;
+      ++bits_;
     }
     slots_.assign(capacity, kEmpty);
     points.reserve(expected);
@@ -818,23 +848,14 @@ class PointIndex {
     return slots;
   }
   std::vector<std::uint32_t>& slots_ = scratch_slots();
-  int shift_ = 60;  // 64 - log2(slots_.size())
+  int bits_ = 4;  // log2(slots_.size())
 
-  static std::size_t hash(Vec2 p) {
-    p = detail::canonical(p);  // -0.0 == +0.0 must hash alike
-    std::uint64_t x, y;
-    std::memcpy(&x, &p.x, sizeof x);
-    std::memcpy(&y, &p.y, sizeof y);
-    // Font coordinates are short binary numbers whose low mantissa bits are
-    // zero: multiply (Fibonacci hashing) and keep the top bits, which every
-    // input bit reaches; slot() takes them.
-    return static_cast<std::size_t>((x * 0x9e3779b97f4a7c15ull) ^ (y * 0xc2b2ae3d27d4eb4full));
-  }
-  std::size_t slot(Vec2 p) const { return static_cast<std::size_t>(hash(p) >> shift_); }
+  // (-0.0 == +0.0 must hash alike.)
+  std::size_t slot(Vec2 p) const { return detail::position_hash(detail::canonical(p), bits_); }
 
   void grow() {
     slots_.assign(slots_.size() * 2, kEmpty);
-    --shift_;
+    ++bits_;
     for (std::uint32_t i = 0; i < points.size(); ++i) {
       std::size_t slot = this->slot(points[i]);
       while (slots_[slot] != kEmpty) slot = (slot + 1) & (slots_.size() - 1);
