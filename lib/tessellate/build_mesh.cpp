@@ -361,6 +361,8 @@ bool align_tangent_legs(Ring& ring) {
       if (point_on_segment(v, end, first.control) && first.control != v && first.control != end) {
         Piece tail = second;
         tail.a = first.control;
+        tail.fresh = true;
+        second.fresh = true;  // now ends at the control point
         ring.insert(ring.begin() + static_cast<std::ptrdiff_t>(j) + 1, tail);
         return true;
       }
@@ -370,6 +372,8 @@ bool align_tangent_legs(Ring& ring) {
       if (point_on_segment(start, v, second.control) && second.control != v && second.control != start) {
         Piece tail = first;
         tail.a = second.control;
+        tail.fresh = true;
+        first.fresh = true;  // now ends at the control point
         ring.insert(ring.begin() + static_cast<std::ptrdiff_t>(i) + 1, tail);
         return true;
       }
@@ -505,8 +509,16 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
     int depth;
     double weight;
     std::size_t mark;  // index into split_marks
+    bool fresh;
     Vec2 end() const { return hull[n - 1]; }
   };
+  // A pass after the first tests only the pairs with a fresh piece: the
+  // others were tested in the pass before with the same hulls, and gave
+  // "no overlap, no crossing" when that pass found no crossing and no overlap
+  // it could not split (otherwise the pass tests every pair again).
+  bool test_all = true;
+  for (Ring& ring : rings)
+    for (Piece& piece : ring) piece.fresh = true;
   for (int pass = 0; pass <= tolerance::kMaxHullSubdivisionDepth; ++pass) {
     for (Ring& ring : rings) {
       // Each call fixes one tangency; a ring has at most one per vertex.
@@ -517,11 +529,14 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
     thread_local std::vector<HullRef> refs;
     thread_local std::vector<std::size_t> mark_base;  // ring r's marks start at mark_base[r]
     thread_local std::vector<char> split_marks;
+    thread_local std::vector<std::uint32_t> fresh_refs;
     mark_base.assign(rings.size() + 1, 0);
     for (std::size_t r = 0; r < rings.size(); ++r) mark_base[r + 1] = mark_base[r] + rings[r].size();
-    split_marks.assign(mark_base.back(), 0);
+    const std::size_t count = mark_base.back();
+    split_marks.assign(count, 0);
+    fresh_refs.clear();
     // Grown, never shrunk: resize() would construct every record again.
-    if (refs.size() < mark_base.back()) refs.resize(mark_base.back());
+    if (refs.size() < count) refs.resize(count);
     HullRef* const unsorted = refs.data();
     for (std::size_t r = 0; r < rings.size(); ++r) {
       const Ring& ring = rings[r];
@@ -537,98 +552,117 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
         ref.depth = piece.depth;
         ref.weight = piece.weight;
         ref.mark = mark_base[r] + i;
+        ref.fresh = piece.fresh;
+        if (piece.fresh) fresh_refs.push_back(static_cast<std::uint32_t>(ref.mark));
       }
     }
-    // Sorted by the boxes' left sides through short keys (the records are
-    // large). Which pairs are met does not depend on the order among equal
-    // keys, and the answers are combined order-independently.
-    struct SortKey {
-      double min_x;
-      std::uint32_t ref;
-    };
-    thread_local std::vector<SortKey> keys;
-    keys.resize(mark_base.back());
-    for (std::size_t k = 0; k < keys.size(); ++k) keys[k] = {unsorted[k].box.min.x, static_cast<std::uint32_t>(k)};
-    std::sort(keys.begin(), keys.end(), [](const SortKey& a, const SortKey& b) { return a.min_x < b.min_x; });
     bool any = false;
     bool overlap_left = false;  // an overlap seen in this pass
+    bool unsplit_overlap = false;  // one where neither piece could be split
     // rings_cross(rings, true) over the same pairs; it stands when this pass
     // is the last (no conic split). Once true, nothing more to look for.
     bool cross_seen = crossing == nullptr;
-    // The boxes again, in sorted order, one array per side: most pairs the
-    // sweep meets are rejected by their boxes alone, a test written without
-    // branches (its outcome is unpredictable). (Raw pointers: the stores into
-    // the char marks may alias anything, which would make every access
-    // through the thread-local vectors reload them.)
-    thread_local std::vector<double> box_sides;
-    thread_local std::vector<const HullRef*> sorted_refs;
-    thread_local std::vector<std::uint32_t> candidates;
-    const std::size_t count = keys.size();
-    box_sides.resize(4 * count);
-    sorted_refs.resize(count);
-    candidates.resize(count);
-    double* const min_x = box_sides.data();
-    double* const max_x = min_x + count;
-    double* const min_y = max_x + count;
-    double* const max_y = min_y + count;
-    const HullRef** const ref = sorted_refs.data();
-    std::uint32_t* const candidate = candidates.data();
+    // (Raw pointers: the stores into the char marks may alias anything,
+    // which would make every access through the thread-local vectors reload
+    // them.)
     char* const marks = split_marks.data();
-    for (std::size_t k = 0; k < count; ++k) {
-      ref[k] = unsorted + keys[k].ref;
-      const Box& b = ref[k]->box;
-      min_x[k] = b.min.x;
-      max_x[k] = b.max.x;
-      min_y[k] = b.min.y;
-      max_y[k] = b.max.y;
-    }
-    for (std::size_t i = 0; i < count; ++i) {
-      // Boxes j > i start right of box i's left side (sorted): they overlap
-      // it in x while they start left of its right side, and then in both
-      // when their y ranges meet. (Pieces with the same end points have
-      // overlapping boxes.)
-      const double right = max_x[i], bottom = min_y[i], top = max_y[i];
-      std::size_t found = 0;
-      for (std::size_t j = i + 1; j < count && min_x[j] <= right; ++j) {
-        candidate[found] = static_cast<std::uint32_t>(j);
-        found += static_cast<std::size_t>((min_y[j] <= top) & (bottom <= max_y[j]));
+    auto test_pair = [&](const HullRef& ri, const HullRef& rj) {
+      const bool ci = ri.n == 3, cj = rj.n == 3;
+      if (!ci && !cj) {
+        if (!cross_seen) cross_seen = lines_cross(ri.hull[0], ri.hull[1], rj.hull[0], rj.hull[1]);
+        return;
       }
-      for (std::size_t f = 0; f < found; ++f) {
-        const std::size_t j = candidate[f];
-        const HullRef& ri = *ref[i];
-        const HullRef& rj = *ref[j];
-        const bool ci = ri.n == 3, cj = rj.n == 3;
-        if (!ci && !cj) {
-          if (!cross_seen) cross_seen = lines_cross(ri.hull[0], ri.hull[1], rj.hull[0], rj.hull[1]);
-          continue;
+      const Vec2 ai = ri.hull[0], ei = ri.end(), aj = rj.hull[0], ej = rj.end();
+      const bool same_ends = (ai == aj && ei == ej) || (ai == ej && ei == aj);
+      // A conic and a piece with the same end points: their chords would
+      // coincide, rings_cross's answer is true.
+      cross_seen = cross_seen || same_ends;
+      // Identical curves (duplicated contours) overlap at every depth;
+      // splitting them is useless, the crossing resolver merges them.
+      if (same_ends && ci && cj && ri.hull[1] == rj.hull[1] && ri.weight == rj.weight) return;
+      if (!hulls_overlap(ri.hull, ri.n, rj.hull, rj.n)) return;
+      // Subdividing a conic shrinks its hull towards the arc; lines stay.
+      bool split_one = false;
+      if (ci && ri.depth < tolerance::kMaxHullSubdivisionDepth) {
+        marks[ri.mark] = 1;
+        split_one = true;
+      }
+      if (cj && rj.depth < tolerance::kMaxHullSubdivisionDepth) {
+        marks[rj.mark] = 1;
+        split_one = true;
+      }
+      any = any || split_one;
+      unsplit_overlap = unsplit_overlap || !split_one;
+      overlap_left = true;
+    };
+    if (test_all) {
+      // Sorted by the boxes' left sides through short keys (the records are
+      // large). Which pairs are met does not depend on the order among equal
+      // keys, and the answers are combined order-independently.
+      struct SortKey {
+        double min_x;
+        std::uint32_t ref;
+      };
+      thread_local std::vector<SortKey> keys;
+      keys.resize(count);
+      for (std::size_t k = 0; k < count; ++k) keys[k] = {unsorted[k].box.min.x, static_cast<std::uint32_t>(k)};
+      std::sort(keys.begin(), keys.end(), [](const SortKey& a, const SortKey& b) { return a.min_x < b.min_x; });
+      // The boxes again, in sorted order, one array per side: most pairs the
+      // sweep meets are rejected by their boxes alone, a test written
+      // without branches (its outcome is unpredictable).
+      thread_local std::vector<double> box_sides;
+      thread_local std::vector<const HullRef*> sorted_refs;
+      thread_local std::vector<std::uint32_t> candidates;
+      box_sides.resize(4 * count);
+      sorted_refs.resize(count);
+      candidates.resize(count);
+      double* const min_x = box_sides.data();
+      double* const max_x = min_x + count;
+      double* const min_y = max_x + count;
+      double* const max_y = min_y + count;
+      const HullRef** const ref = sorted_refs.data();
+      std::uint32_t* const candidate = candidates.data();
+      for (std::size_t k = 0; k < count; ++k) {
+        ref[k] = unsorted + keys[k].ref;
+        const Box& b = ref[k]->box;
+        min_x[k] = b.min.x;
+        max_x[k] = b.max.x;
+        min_y[k] = b.min.y;
+        max_y[k] = b.max.y;
+      }
+      for (std::size_t i = 0; i < count; ++i) {
+        // Boxes j > i start right of box i's left side (sorted): they overlap
+        // it in x while they start left of its right side, and then in both
+        // when their y ranges meet. (Pieces with the same end points have
+        // overlapping boxes.)
+        const double right = max_x[i], bottom = min_y[i], top = max_y[i];
+        std::size_t found = 0;
+        for (std::size_t j = i + 1; j < count && min_x[j] <= right; ++j) {
+          candidate[found] = static_cast<std::uint32_t>(j);
+          found += static_cast<std::size_t>((min_y[j] <= top) & (bottom <= max_y[j]));
         }
-        const Vec2 ai = ri.hull[0], ei = ri.end(), aj = rj.hull[0], ej = rj.end();
-        const bool same_ends = (ai == aj && ei == ej) || (ai == ej && ei == aj);
-        // A conic and a piece with the same end points: their chords would
-        // coincide, rings_cross's answer is true.
-        cross_seen = cross_seen || same_ends;
-        // Identical curves (duplicated contours) overlap at every depth;
-        // splitting them is useless, the crossing resolver merges them.
-        if (same_ends && ci && cj && ri.hull[1] == rj.hull[1] && ri.weight == rj.weight) continue;
-        if (!hulls_overlap(ri.hull, ri.n, rj.hull, rj.n)) continue;
-        // Subdividing a conic shrinks its hull towards the arc; lines stay.
-        if (ci && ri.depth < tolerance::kMaxHullSubdivisionDepth) {
-          marks[ri.mark] = 1;
-          any = true;
+        for (std::size_t f = 0; f < found; ++f) test_pair(*ref[i], *ref[candidate[f]]);
+      }
+    } else {
+      // Each fresh piece against every piece whose box meets its own (a
+      // fresh pair once, from its first piece).
+      for (const std::uint32_t i : fresh_refs) {
+        const HullRef& ri = unsorted[i];
+        for (std::size_t j = 0; j < count; ++j) {
+          const HullRef& rj = unsorted[j];
+          if (j == i || (rj.fresh && j < i) || !boxes_overlap(ri.box, rj.box)) continue;
+          test_pair(ri, rj);
         }
-        if (cj && rj.depth < tolerance::kMaxHullSubdivisionDepth) {
-          marks[rj.mark] = 1;
-          any = true;
-        }
-        overlap_left = true;
       }
     }
     if (!any) {
       if (!overlap_left && crossing) *crossing = cross_seen;
       return !overlap_left;
     }
+    test_all = unsplit_overlap || (crossing != nullptr && cross_seen);
     for (std::size_t r = 0; r < rings.size(); ++r) {
       const char* ring_marks = split_marks.data() + mark_base[r];
+      for (Piece& piece : rings[r]) piece.fresh = false;
       if (std::find(ring_marks, ring_marks + rings[r].size(), char{1}) == ring_marks + rings[r].size()) continue;  // nothing to split
       Ring next = take_ring();
       next.reserve(rings[r].size() + 8);

@@ -17,6 +17,9 @@ struct Piece {
   double weight = 1.0;
   bool conic = false;
   int depth = 0;  // hull-separation subdivisions that produced this piece
+  // separate_hulls: the piece's hull is new since its last pass (a new piece,
+  // or one whose end moved); only pairs with a fresh piece are tested again.
+  bool fresh = true;
 };
 using Ring = std::vector<Piece>;
 
