@@ -753,8 +753,10 @@ void delaunay_flips_manifold(const std::vector<Vec2>& points, std::vector<std::a
     const std::uint32_t d = triangles[t2][kPrev[k2]];
     if (c == d) continue;
     const Vec2 pa = points[a], pb = points[b], pc = points[c], pd = points[d];
-    if (orient2d(pa, pd, pc) <= 0 || orient2d(pd, pb, pc) <= 0) continue;  // quad not strictly convex
+    // (The incircle test first: most edges of the sweep's triangulation are
+    // already locally Delaunay, and it rejects them in one test.)
     if (incircle_sign(pa, pb, pc, pd) <= 0) continue;
+    if (orient2d(pa, pd, pc) <= 0 || orient2d(pd, pb, pc) <= 0) continue;  // quad not strictly convex
     const std::int32_t bc = twin[4 * t1 + kNext[k1]], ca = twin[4 * t1 + kPrev[k1]];
     const std::int32_t ad = twin[4 * t2 + kNext[k2]], db = twin[4 * t2 + kPrev[k2]];
     triangles[t1] = {a, d, c};
