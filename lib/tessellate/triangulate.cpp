@@ -735,9 +735,14 @@ void delaunay_flips_manifold(const std::vector<Vec2>& points, std::vector<std::a
     }
   }
   thread_local std::vector<std::uint32_t> stack;
-  stack.clear();
-  for (std::uint32_t h = 0; h < 4 * m; ++h)
-    if (twin[h] > static_cast<std::int32_t>(h)) stack.push_back(h);
+  // Every inner edge once (from its first side), written without a branch.
+  stack.resize(4 * m);
+  std::size_t inner = 0;
+  for (std::uint32_t h = 0; h < 4 * m; ++h) {
+    stack[inner] = h;
+    inner += static_cast<std::size_t>(twin[h] > static_cast<std::int32_t>(h));
+  }
+  stack.resize(inner);
   auto link = [&](std::uint32_t h, std::int32_t other) {
     twin[h] = other;
     if (other >= 0) twin[static_cast<std::size_t>(other)] = static_cast<std::int32_t>(h);
