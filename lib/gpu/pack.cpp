@@ -97,12 +97,13 @@ int grown_polygon(const std::array<Vec2, 3>& p, std::array<Corner, 6>& out) {
 // The barycentrics (tau1, tau2) at a triangle's own vertices.
 constexpr std::array<std::array<float, 2>, 3> kCornerTau{{{0.0f, 0.0f}, {1.0f, 0.0f}, {0.0f, 1.0f}}};
 
-// Appends triangle p (of vertex kind `kind`) grown as above, as a fan.
+// Writes triangle p (of vertex kind `kind`) grown as above, as a fan, at
+// dst (room for 12 vertices); returns the number of vertices written.
 // s and w: a curve's filled side and weight (0 for interior triangles).
-void emit(const std::array<Vec2, 3>& p, const Bary& g, int kind, float s, float w, std::vector<Vertex>& out) {
+std::size_t emit(const std::array<Vec2, 3>& p, const Bary& g, float kind, float s, float w, Vertex* dst) {
   std::array<Corner, 6> poly;
   const int count = grown_polygon(p, poly);
-  if (count < 3) return;
+  if (count < 3) return 0;
   // Each polygon point once, then copied into the fan's triangles.
   std::array<Vertex, 6> corner_vertex;
   for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) {
@@ -117,36 +118,42 @@ void emit(const std::array<Vec2, 3>& p, const Bary& g, int kind, float s, float 
     v.coef[1] = kCornerTau[k][1];
     v.coef[2] = s;
     v.coef[3] = 0.0f;
-    v.info[0] = static_cast<float>(kind);
+    v.info[0] = kind;
     v.info[1] = w;
     v.info[2] = static_cast<float>(g.grad1.x * c.ox + g.grad1.y * c.oy);
     v.info[3] = static_cast<float>(g.grad2.x * c.ox + g.grad2.y * c.oy);
   }
-  const std::size_t first = out.size();
-  out.resize(first + 3 * static_cast<std::size_t>(count - 2));
-  Vertex* dst = out.data() + first;
+  Vertex* const first = dst;
   for (std::size_t i = 1; i + 1 < static_cast<std::size_t>(count); ++i) {
     *dst++ = corner_vertex[0];
     *dst++ = corner_vertex[i];
     *dst++ = corner_vertex[i + 1];
   }
+  return static_cast<std::size_t>(dst - first);
 }
 
 }  // namespace
 
 void pack_mesh(const Mesh& mesh, std::vector<Vertex>& out) {
-  // Most triangles grow into 3 or 4 points (3 or 6 vertices).
-  out.reserve(out.size() + 6 * (mesh.triangles.size() + mesh.curves.size()));
+  // Written into scratch with room for the most a triangle can grow into
+  // (6 points: 12 vertices), then appended at once: `out` gets exactly its
+  // vertices, with no zero-filling or growth on the way.
+  thread_local std::vector<Vertex> scratch;
+  const std::size_t room = 12 * (mesh.triangles.size() + mesh.curves.size());
+  if (scratch.size() < room) scratch.resize(room);
+  Vertex* const begin = scratch.data();
+  Vertex* dst = begin;
   for (const auto& tri : mesh.triangles) {
     const std::array<Vec2, 3> p{mesh.points[tri[0]], mesh.points[tri[1]], mesh.points[tri[2]]};
     const Bary g = bary_of(p[0], p[1], p[2]);
-    if (g.ok) emit(p, g, kSolid, 0.0f, 0.0f, out);
+    if (g.ok) dst += emit(p, g, static_cast<float>(kSolid), 0.0f, 0.0f, dst);
   }
   for (const CurvedTriangle& ct : mesh.curves) {
     const std::array<Vec2, 3> p{mesh.points[ct.p0], mesh.points[ct.control], mesh.points[ct.p2]};
     const Bary g = bary_of(p[0], p[1], p[2]);
-    if (g.ok) emit(p, g, kCurve, ct.convex ? 1.0f : -1.0f, static_cast<float>(ct.weight), out);
+    if (g.ok) dst += emit(p, g, static_cast<float>(kCurve), ct.convex ? 1.0f : -1.0f, static_cast<float>(ct.weight), dst);
   }
+  out.insert(out.end(), begin, dst);
 }
 
 void append_translated(const std::vector<Vertex>& in, Vec2 offset, std::vector<Vertex>& out) {
