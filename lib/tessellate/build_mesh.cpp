@@ -645,14 +645,35 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
       }
     } else {
       // Each fresh piece against every piece whose box meets its own (a
-      // fresh pair once, from its first piece).
+      // fresh pair once, from its first piece); the boxes in one array per
+      // side and the test without branches, as above.
+      thread_local std::vector<double> box_sides;
+      thread_local std::vector<std::uint32_t> candidates;
+      box_sides.resize(4 * count);
+      candidates.resize(count);
+      double* const min_x = box_sides.data();
+      double* const max_x = min_x + count;
+      double* const min_y = max_x + count;
+      double* const max_y = min_y + count;
+      std::uint32_t* const candidate = candidates.data();
+      for (std::size_t k = 0; k < count; ++k) {
+        const Box& b = unsorted[k].box;
+        min_x[k] = b.min.x;
+        max_x[k] = b.max.x;
+        min_y[k] = b.min.y;
+        max_y[k] = b.max.y;
+      }
       for (const std::uint32_t i : fresh_refs) {
-        const HullRef& ri = unsorted[i];
+        const double left = min_x[i], right = max_x[i], bottom = min_y[i], top = max_y[i];
+        std::size_t found = 0;
         for (std::size_t j = 0; j < count; ++j) {
-          const HullRef& rj = unsorted[j];
-          if (j == i || (rj.fresh && j < i) || !boxes_overlap(ri.box, rj.box)) continue;
-          test_pair(ri, rj);
+          candidate[found] = static_cast<std::uint32_t>(j);
+          const bool meets = (min_x[j] <= right) & (left <= max_x[j]) & (min_y[j] <= top) & (bottom <= max_y[j]);
+          // (j != i, and a fresh pair from its first piece only.)
+          const bool other = (j > i) | ((j < i) & !unsorted[j].fresh);
+          found += static_cast<std::size_t>(meets & other);
         }
+        for (std::size_t f = 0; f < found; ++f) test_pair(unsorted[i], unsorted[candidate[f]]);
       }
     }
     if (!any) {
