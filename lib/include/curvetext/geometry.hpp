@@ -29,10 +29,12 @@ struct Box {
   Vec2 max{-1e300, -1e300};
   bool empty() const { return min.x > max.x || min.y > max.y; }
   void add(Vec2 p) {
-    if (p.x < min.x) min.x = p.x;
-    if (p.y < min.y) min.y = p.y;
-    if (p.x > max.x) max.x = p.x;
-    if (p.y > max.y) max.y = p.y;
+    // (Selects rather than branches: compiled to min/max instructions. A NaN
+    // coordinate leaves the box as it is.)
+    min.x = p.x < min.x ? p.x : min.x;
+    min.y = p.y < min.y ? p.y : min.y;
+    max.x = p.x > max.x ? p.x : max.x;
+    max.y = p.y > max.y ? p.y : max.y;
   }
 };
 
