@@ -283,12 +283,13 @@ void clean_rings(const Outline& outline, double cubic_tolerance, std::vector<Rin
     // vertex in the middle of an edge of the sub-ring, a T-junction against
     // the other sub-ring that touches it there.
     auto keep = [&](Ring& loop) {
-      const bool has_conic = std::any_of(loop.begin(), loop.end(), [](const Piece& p) { return p.conic; });
-      if (loop.size() < 2 || (loop.size() == 2 && !has_conic)) return;  // a lone back-and-forth: no area
+      if (loop.size() < 2) return;
+      if (loop.size() == 2 && !loop[0].conic && !loop[1].conic) return;  // a lone back-and-forth: no area
       // A ring without area is dropped only when it is a flat run of lines:
       // a self-crossing ring (a bow-tie) can have zero signed area and still
-      // fill its lobes, which the crossing resolver sorts out.
-      if (ring_area(loop) == 0.0 && (!kResolveCrossingContours || all_collinear(loop))) return;
+      // fill its lobes, which the crossing resolver sorts out. (The cheap
+      // test first: the usual ring's second vertex is off the first line.)
+      if (kResolveCrossingContours ? all_collinear(loop) && ring_area(loop) == 0.0 : ring_area(loop) == 0.0) return;
       rings.push_back(std::move(loop));
     };
     // The usual ring passes through each vertex once: kept as it is, without
@@ -603,9 +604,19 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
         double min_x;
         std::uint32_t ref;
       };
+      // The sweep runs along the glyph's longer side, where the boxes
+      // overlap less (a tall glyph's pieces share x ranges): "x" below is
+      // that axis.
+      Box all;
+      for (std::size_t k = 0; k < count; ++k) {
+        all.add(unsorted[k].box.min);
+        all.add(unsorted[k].box.max);
+      }
+      const bool along_y = all.max.y - all.min.y > all.max.x - all.min.x;
       thread_local std::vector<SortKey> keys;
       keys.resize(count);
-      for (std::size_t k = 0; k < count; ++k) keys[k] = {unsorted[k].box.min.x, static_cast<std::uint32_t>(k)};
+      for (std::size_t k = 0; k < count; ++k)
+        keys[k] = {along_y ? unsorted[k].box.min.y : unsorted[k].box.min.x, static_cast<std::uint32_t>(k)};
       std::sort(keys.begin(), keys.end(), [](const SortKey& a, const SortKey& b) { return a.min_x < b.min_x; });
       // The boxes again, in sorted order, one array per side: most pairs the
       // sweep meets are rejected by their boxes alone, a test written
@@ -625,10 +636,10 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
       for (std::size_t k = 0; k < count; ++k) {
         ref[k] = unsorted + keys[k].ref;
         const Box& b = ref[k]->box;
-        min_x[k] = b.min.x;
-        max_x[k] = b.max.x;
-        min_y[k] = b.min.y;
-        max_y[k] = b.max.y;
+        min_x[k] = along_y ? b.min.y : b.min.x;
+        max_x[k] = along_y ? b.max.y : b.max.x;
+        min_y[k] = along_y ? b.min.x : b.min.y;
+        max_y[k] = along_y ? b.max.x : b.max.y;
       }
       for (std::size_t i = 0; i < count; ++i) {
         // Boxes j > i start right of box i's left side (sorted): they overlap
