@@ -674,6 +674,10 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
         min_y[k] = b.min.y;
         max_y[k] = b.max.y;
       }
+      thread_local std::vector<unsigned char> fresh_flags;
+      fresh_flags.resize(count);
+      unsigned char* const fresh = fresh_flags.data();
+      for (std::size_t k = 0; k < count; ++k) fresh[k] = unsorted[k].fresh ? 1 : 0;
       for (const std::uint32_t i : fresh_refs) {
         const double left = min_x[i], right = max_x[i], bottom = min_y[i], top = max_y[i];
         std::size_t found = 0;
@@ -681,7 +685,7 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
           candidate[found] = static_cast<std::uint32_t>(j);
           const bool meets = (min_x[j] <= right) & (left <= max_x[j]) & (min_y[j] <= top) & (bottom <= max_y[j]);
           // (j != i, and a fresh pair from its first piece only.)
-          const bool other = (j > i) | ((j < i) & !unsorted[j].fresh);
+          const bool other = (j > i) | ((j < i) & (fresh[j] == 0));
           found += static_cast<std::size_t>(meets & other);
         }
         for (std::size_t f = 0; f < found; ++f) test_pair(unsorted[i], unsorted[candidate[f]]);
