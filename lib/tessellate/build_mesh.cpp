@@ -500,6 +500,10 @@ bool hulls_overlap(const Vec2* p, int np, const Vec2* q, int nq) {
   return np == 3 && nq == 3 && triangle_interiors_intersect(p, q);
 }
 
+// Up to this many pieces hull separation tests every pair's boxes instead
+// of sorting them first.
+constexpr std::size_t kAllPairsLimit = 48;
+
 bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
   // A piece's hull with what the sweep needs, copied out of the rings so the
   // pair loop reads one compact array.
@@ -596,84 +600,28 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
       unsplit_overlap = unsplit_overlap || !split_one;
       overlap_left = true;
     };
-    if (test_all) {
-      // Sorted by the boxes' left sides through short keys (the records are
-      // large). Which pairs are met does not depend on the order among equal
-      // keys, and the answers are combined order-independently.
-      struct SortKey {
-        double min_x;
-        std::uint32_t ref;
-      };
-      // The sweep runs along the glyph's longer side, where the boxes
-      // overlap less (a tall glyph's pieces share x ranges): "x" below is
-      // that axis.
-      Box all;
-      for (std::size_t k = 0; k < count; ++k) {
-        all.add(unsorted[k].box.min);
-        all.add(unsorted[k].box.max);
-      }
-      const bool along_y = all.max.y - all.min.y > all.max.x - all.min.x;
-      thread_local std::vector<SortKey> keys;
-      keys.resize(count);
-      for (std::size_t k = 0; k < count; ++k)
-        keys[k] = {along_y ? unsorted[k].box.min.y : unsorted[k].box.min.x, static_cast<std::uint32_t>(k)};
-      std::sort(keys.begin(), keys.end(), [](const SortKey& a, const SortKey& b) { return a.min_x < b.min_x; });
-      // The boxes again, in sorted order, one array per side: most pairs the
-      // sweep meets are rejected by their boxes alone, a test written
-      // without branches (its outcome is unpredictable).
-      thread_local std::vector<double> box_sides;
-      thread_local std::vector<const HullRef*> sorted_refs;
-      thread_local std::vector<std::uint32_t> candidates;
-      box_sides.resize(4 * count);
-      sorted_refs.resize(count);
-      candidates.resize(count);
-      double* const min_x = box_sides.data();
-      double* const max_x = min_x + count;
-      double* const min_y = max_x + count;
-      double* const max_y = min_y + count;
-      const HullRef** const ref = sorted_refs.data();
-      std::uint32_t* const candidate = candidates.data();
-      for (std::size_t k = 0; k < count; ++k) {
-        ref[k] = unsorted + keys[k].ref;
-        const Box& b = ref[k]->box;
-        min_x[k] = along_y ? b.min.y : b.min.x;
-        max_x[k] = along_y ? b.max.y : b.max.x;
-        min_y[k] = along_y ? b.min.x : b.min.y;
-        max_y[k] = along_y ? b.max.x : b.max.y;
-      }
-      for (std::size_t i = 0; i < count; ++i) {
-        // Boxes j > i start right of box i's left side (sorted): they overlap
-        // it in x while they start left of its right side, and then in both
-        // when their y ranges meet. (Pieces with the same end points have
-        // overlapping boxes.)
-        const double right = max_x[i], bottom = min_y[i], top = max_y[i];
-        std::size_t found = 0;
-        for (std::size_t j = i + 1; j < count && min_x[j] <= right; ++j) {
-          candidate[found] = static_cast<std::uint32_t>(j);
-          found += static_cast<std::size_t>((min_y[j] <= top) & (bottom <= max_y[j]));
-        }
-        for (std::size_t f = 0; f < found; ++f) test_pair(*ref[i], *ref[candidate[f]]);
-      }
-    } else {
+    // The boxes in one array per side, for tests written without branches
+    // (their outcomes are unpredictable; most pairs are rejected by their
+    // boxes alone).
+    thread_local std::vector<double> box_sides;
+    thread_local std::vector<std::uint32_t> candidates;
+    box_sides.resize(4 * count);
+    candidates.resize(count);
+    double* const min_x = box_sides.data();
+    double* const max_x = min_x + count;
+    double* const min_y = max_x + count;
+    double* const max_y = min_y + count;
+    std::uint32_t* const candidate = candidates.data();
+    for (std::size_t k = 0; k < count; ++k) {
+      const Box& b = unsorted[k].box;
+      min_x[k] = b.min.x;
+      max_x[k] = b.max.x;
+      min_y[k] = b.min.y;
+      max_y[k] = b.max.y;
+    }
+    if (!test_all) {
       // Each fresh piece against every piece whose box meets its own (a
-      // fresh pair once, from its first piece); the boxes in one array per
-      // side and the test without branches, as above.
-      thread_local std::vector<double> box_sides;
-      thread_local std::vector<std::uint32_t> candidates;
-      box_sides.resize(4 * count);
-      candidates.resize(count);
-      double* const min_x = box_sides.data();
-      double* const max_x = min_x + count;
-      double* const min_y = max_x + count;
-      double* const max_y = min_y + count;
-      std::uint32_t* const candidate = candidates.data();
-      for (std::size_t k = 0; k < count; ++k) {
-        const Box& b = unsorted[k].box;
-        min_x[k] = b.min.x;
-        max_x[k] = b.max.x;
-        min_y[k] = b.min.y;
-        max_y[k] = b.max.y;
-      }
+      // fresh pair once, from its first piece).
       thread_local std::vector<unsigned char> fresh_flags;
       fresh_flags.resize(count);
       unsigned char* const fresh = fresh_flags.data();
@@ -689,6 +637,70 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
           found += static_cast<std::size_t>(meets & other);
         }
         for (std::size_t f = 0; f < found; ++f) test_pair(unsorted[i], unsorted[candidate[f]]);
+      }
+    } else if (count <= kAllPairsLimit) {
+      // A glyph's few dozen pieces: every pair's boxes, which costs less
+      // than sorting them (a sort's branches are unpredictable too).
+      for (std::size_t i = 0; i < count; ++i) {
+        const double left = min_x[i], right = max_x[i], bottom = min_y[i], top = max_y[i];
+        std::size_t found = 0;
+        for (std::size_t j = i + 1; j < count; ++j) {
+          candidate[found] = static_cast<std::uint32_t>(j);
+          found += static_cast<std::size_t>((min_x[j] <= right) & (left <= max_x[j]) & (min_y[j] <= top) &
+                                            (bottom <= max_y[j]));
+        }
+        for (std::size_t f = 0; f < found; ++f) test_pair(unsorted[i], unsorted[candidate[f]]);
+      }
+    } else {
+      // Sweep and prune: sorted by the boxes' lower sides along the glyph's
+      // longer axis, where the boxes overlap less (a tall glyph's pieces
+      // share x ranges); "a" below is that axis, "b" the other. Which pairs
+      // are met does not depend on the order among equal keys, and the
+      // answers are combined order-independently.
+      Box all;
+      for (std::size_t k = 0; k < count; ++k) {
+        all.add(unsorted[k].box.min);
+        all.add(unsorted[k].box.max);
+      }
+      const bool along_y = all.max.y - all.min.y > all.max.x - all.min.x;
+      const double* const min_a = along_y ? min_y : min_x;
+      const double* const max_a = along_y ? max_y : max_x;
+      const double* const min_b = along_y ? min_x : min_y;
+      const double* const max_b = along_y ? max_x : max_y;
+      struct SortKey {
+        double min_a;
+        std::uint32_t ref;
+      };
+      thread_local std::vector<SortKey> keys;
+      keys.resize(count);
+      for (std::size_t k = 0; k < count; ++k) keys[k] = {min_a[k], static_cast<std::uint32_t>(k)};
+      std::sort(keys.begin(), keys.end(), [](const SortKey& a, const SortKey& b) { return a.min_a < b.min_a; });
+      // The sides again in sorted order (the scan reads them in a row).
+      thread_local std::vector<double> sorted_sides;
+      sorted_sides.resize(4 * count);
+      double* const s_min_a = sorted_sides.data();
+      double* const s_max_a = s_min_a + count;
+      double* const s_min_b = s_max_a + count;
+      double* const s_max_b = s_min_b + count;
+      for (std::size_t k = 0; k < count; ++k) {
+        const std::uint32_t r = keys[k].ref;
+        s_min_a[k] = min_a[r];
+        s_max_a[k] = max_a[r];
+        s_min_b[k] = min_b[r];
+        s_max_b[k] = max_b[r];
+      }
+      for (std::size_t i = 0; i < count; ++i) {
+        // Boxes after box i in the order start at or after its lower side
+        // along a: they overlap it along a while they start before its upper
+        // side, and then in both when their b ranges meet. (Pieces with the
+        // same end points have overlapping boxes.)
+        const double upper = s_max_a[i], low_b = s_min_b[i], high_b = s_max_b[i];
+        std::size_t found = 0;
+        for (std::size_t j = i + 1; j < count && s_min_a[j] <= upper; ++j) {
+          candidate[found] = keys[j].ref;
+          found += static_cast<std::size_t>((s_min_b[j] <= high_b) & (low_b <= s_max_b[j]));
+        }
+        for (std::size_t f = 0; f < found; ++f) test_pair(unsorted[keys[i].ref], unsorted[candidate[f]]);
       }
     }
     if (!any) {
