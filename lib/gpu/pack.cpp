@@ -104,12 +104,14 @@ std::size_t emit(const std::array<Vec2, 3>& p, const Bary& g, float kind, float 
   std::array<Corner, 6> poly;
   const int count = grown_polygon(p, poly);
   if (count < 3) return 0;
-  // Each polygon point once, then copied into the fan's triangles.
-  std::array<Vertex, 6> corner_vertex;
-  for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) {
+  // Each polygon point built once and stored where the fan's triangles
+  // (0, i, i + 1) use it: point 0 starts every triangle, point i ends
+  // triangle i - 1 and is the middle of triangle i.
+  const std::size_t n = static_cast<std::size_t>(count);
+  for (std::size_t i = 0; i < n; ++i) {
     const Corner& c = poly[i];
     const auto k = static_cast<std::size_t>(c.vertex);
-    Vertex& v = corner_vertex[i];
+    Vertex v;
     v.pos[0] = static_cast<float>(p[k].x);
     v.pos[1] = static_cast<float>(p[k].y);
     v.pos[2] = static_cast<float>(c.ox);
@@ -122,14 +124,14 @@ std::size_t emit(const std::array<Vec2, 3>& p, const Bary& g, float kind, float 
     v.info[1] = w;
     v.info[2] = static_cast<float>(g.grad1.x * c.ox + g.grad1.y * c.oy);
     v.info[3] = static_cast<float>(g.grad2.x * c.ox + g.grad2.y * c.oy);
+    if (i == 0) {
+      for (std::size_t t = 0; t + 2 < n; ++t) dst[3 * t] = v;
+    } else {
+      if (i >= 2) dst[3 * (i - 2) + 2] = v;
+      if (i + 1 < n) dst[3 * (i - 1) + 1] = v;
+    }
   }
-  Vertex* const first = dst;
-  for (std::size_t i = 1; i + 1 < static_cast<std::size_t>(count); ++i) {
-    *dst++ = corner_vertex[0];
-    *dst++ = corner_vertex[i];
-    *dst++ = corner_vertex[i + 1];
-  }
-  return static_cast<std::size_t>(dst - first);
+  return 3 * (n - 2);
 }
 
 }  // namespace
