@@ -107,7 +107,8 @@ struct FtFace {
 // Times every glyph `rounds` times and keeps each glyph's fastest time, so the
 // median is of per-glyph costs without scheduler noise. The mesh side is what
 // the glyph cache pays on a miss: outline load + build_mesh (into a reused
-// scratch mesh, as the cache does) + gpu::pack_mesh into a new vector,
+// scratch outline and mesh, as the cache does) + gpu::pack_mesh into a new
+// vector,
 // with the cubic tolerance of the 32 px level of detail. The FreeType side is
 // what an atlas renderer pays: FT_Load_Glyph + FT_Render_Glyph (AA, 32 px).
 PrepResult measure(const FontCase& fc, const std::vector<unsigned>& glyphs, int rounds) {
@@ -124,11 +125,12 @@ PrepResult measure(const FontCase& fc, const std::vector<unsigned>& glyphs, int 
   PrepResult r;
   r.glyphs = glyphs.size();
   double triangles = 0, bytes = 0;
-  curvetext::Mesh mesh;  // reused, as GlyphCache reuses its scratch mesh
+  curvetext::Outline outline;  // reused, as GlyphCache reuses its scratch outline
+  curvetext::Mesh mesh;        // and mesh
   for (int round = 0; round < rounds; ++round) {
     for (std::size_t i = 0; i < glyphs.size(); ++i) {
       auto t0 = clock::now();
-      const curvetext::Outline outline = font.glyph_outline(glyphs[i]);
+      font.glyph_outline(glyphs[i], outline);
       curvetext::build_mesh(outline, {tolerance}, mesh);
       std::vector<curvetext::gpu::Vertex> packed;  // new, as the cache stores each glyph's own
       curvetext::gpu::pack_mesh(mesh, packed);
@@ -210,10 +212,12 @@ void BM_CurvetextMesh(benchmark::State& state, const FontCase* fc) {
   const std::vector<unsigned> glyphs = latin_glyphs(font);
   const double upem = font.metrics().units_per_em;
   const double tolerance = curvetext::cubic_tolerance_for_lod(curvetext::lod_for_scale(32.0 / upem, upem), upem);
+  curvetext::Outline outline;
   curvetext::Mesh mesh;
   std::size_t i = 0;
   for (auto _ : state) {
-    curvetext::build_mesh(font.glyph_outline(glyphs[i++ % glyphs.size()]), {tolerance}, mesh);
+    font.glyph_outline(glyphs[i++ % glyphs.size()], outline);
+    curvetext::build_mesh(outline, {tolerance}, mesh);
     std::vector<curvetext::gpu::Vertex> packed;
     curvetext::gpu::pack_mesh(mesh, packed);
     benchmark::DoNotOptimize(packed.data());

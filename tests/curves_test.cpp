@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 
@@ -70,6 +71,40 @@ TEST(Outline, BuilderClosesContoursAndSkipsEmptyOnes) {
   EXPECT_NEAR(o.signed_area(), 50.0, 1e-12);  // counter-clockwise triangle
 }
 
+TEST(Outline, ClearKeepsNoContours) {
+  Outline o;
+  o.move_to({0, 0});
+  o.conic_to({5, 10}, {10, 0});
+  o.move_to({20, 0});
+  o.line_to({30, 0});
+  o.line_to({30, 10});
+  o.close();
+  ASSERT_EQ(o.contours().size(), 2u);
+  o.clear();
+  EXPECT_TRUE(o.contours().empty());
+  EXPECT_TRUE(o.empty());
+  // Built again after clear(): the same as built in a new outline, with no
+  // segment left over from before.
+  Outline fresh;
+  for (Outline* out : {&o, &fresh}) {
+    out->move_to({1, 1});
+    out->line_to({4, 1});
+    out->line_to({1, 5});
+    out->close();
+  }
+  ASSERT_EQ(o.contours().size(), 1u);
+  ASSERT_EQ(o.contours()[0].segments.size(), fresh.contours()[0].segments.size());
+  EXPECT_EQ(o.contours()[0].segments.size(), 3u);
+  EXPECT_EQ(o.signed_area(), fresh.signed_area());
+  // An open contour is dropped by clear(), not closed into the next one.
+  o.clear();
+  o.move_to({0, 0});
+  o.line_to({9, 9});
+  o.clear();
+  o.close();
+  EXPECT_TRUE(o.contours().empty());
+}
+
 TEST(Outline, CubicAreaMatchesPolyline) {
   Outline o;
   o.move_to({0, 0});
@@ -96,6 +131,11 @@ TEST(Outline, FiniteCheck) {
   Outline z = circle({0, 0}, 1);
   z.contours()[0].segments[0].weight = 0.0;
   EXPECT_FALSE(z.is_finite());
+  Outline inf = circle({0, 0}, 1);
+  inf.contours()[0].segments[2].p[0].y = -std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(inf.is_finite());
+  Outline huge = circle({0, 0}, 1e300);  // large but finite
+  EXPECT_TRUE(huge.is_finite());
 }
 
 // Barycentric implicit form of DESIGN.md section 3: zero on the conic.

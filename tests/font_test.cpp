@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -119,6 +120,34 @@ TEST(Font, TrueTypeOutlines) {
 
   EXPECT_TRUE(outline_of(font, U' ').empty());
   EXPECT_EQ(error_code_of([&] { (void)font.glyph_outline(font.glyph_count()); }), ct::ErrorCode::FontInvalid);
+}
+
+// The outline loaded into a reused Outline (what the glyph cache does) is the
+// outline loaded fresh, for TrueType (FreeType's path) and CFF (HarfBuzz's),
+// whatever the reused one held before.
+TEST(Font, GlyphOutlineIntoReusedOutline) {
+  for (const std::string& path : {kDejaVu, kNimbus}) {
+    const ct::Font font = ct::Font::open(path);
+    ct::Outline reused;
+    std::size_t contours = 0;
+    for (std::uint32_t g = 0; g < std::min(font.glyph_count(), 400u); ++g) {
+      const ct::Outline fresh = font.glyph_outline(g);
+      font.glyph_outline(g, reused);
+      ASSERT_EQ(reused.contours().size(), fresh.contours().size()) << path << " glyph " << g;
+      for (std::size_t c = 0; c < fresh.contours().size(); ++c) {
+        const auto& a = fresh.contours()[c].segments;
+        const auto& b = reused.contours()[c].segments;
+        ASSERT_EQ(a.size(), b.size()) << path << " glyph " << g;
+        for (std::size_t k = 0; k < a.size(); ++k) {
+          EXPECT_EQ(a[k].kind, b[k].kind);
+          for (int i = 0; i < 4; ++i) EXPECT_EQ(a[k].p[i], b[k].p[i]) << path << " glyph " << g;
+          EXPECT_EQ(a[k].weight, b[k].weight);
+        }
+      }
+      contours += fresh.contours().size();
+    }
+    EXPECT_GT(contours, 300u) << path;  // the comparison saw real outlines
+  }
 }
 
 TEST(Font, TrueTypeOutlineMatchesFreeTypeUnscaled) {

@@ -15,6 +15,7 @@
 
 #include "curvetext/curves.hpp"
 #include "curvetext/error.hpp"
+#include "curvetext/font.hpp"
 #include "curvetext/mesh.hpp"
 #include "curvetext/outline.hpp"
 #include "tessellate/predicates.hpp"
@@ -100,6 +101,35 @@ TEST(Predicates, Orient2dIsExactNearDegeneracy) {
       EXPECT_EQ(orient2d(p, q, r), i == j ? 0 : (j > i ? 1 : -1));
     }
   }
+}
+
+// build_mesh into a reused Mesh (and through the per-thread ring pool) gives
+// what a fresh build gives, glyph after glyph: overlapping, holed and simple
+// glyphs in a row, each built twice into the same mesh.
+TEST(BuildMesh, IntoReusedMeshMatchesFresh) {
+  const curvetext::Font font = curvetext::Font::open("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf");
+  Mesh reused;
+  std::size_t triangles = 0;
+  for (std::uint32_t g = 0; g < 600; ++g) {
+    const Outline outline = font.glyph_outline(g);
+    const Mesh fresh = build_mesh(outline);
+    for (int twice = 0; twice < 2; ++twice) {
+      build_mesh(outline, {}, reused);
+      ASSERT_EQ(reused.points, fresh.points) << "glyph " << g;
+      ASSERT_EQ(reused.triangles, fresh.triangles) << "glyph " << g;
+      ASSERT_EQ(reused.boundary_lines, fresh.boundary_lines) << "glyph " << g;
+      ASSERT_EQ(reused.curves.size(), fresh.curves.size()) << "glyph " << g;
+      for (std::size_t k = 0; k < fresh.curves.size(); ++k) {
+        const CurvedTriangle& a = fresh.curves[k];
+        const CurvedTriangle& b = reused.curves[k];
+        EXPECT_TRUE(a.p0 == b.p0 && a.control == b.control && a.p2 == b.p2 && a.weight == b.weight &&
+                    a.convex == b.convex)
+            << "glyph " << g << " curve " << k;
+      }
+    }
+    triangles += fresh.triangles.size();
+  }
+  EXPECT_GT(triangles, 10000u);  // real glyphs were compared
 }
 
 TEST(BuildMesh, SquareBothOrientations) {

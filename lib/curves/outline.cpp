@@ -45,12 +45,27 @@ Vec2 Segment::end() const {
 
 void Outline::move_to(Vec2 p) {
   close();
-  contours_.emplace_back();
-  // Glyph contours have tens of segments: start with room for a few dozen
-  // rather than growing one segment at a time (1, 2, 4, ... reallocations).
-  contours_.back().segments.reserve(32);
+  if (!spare_.empty()) {
+    contours_.push_back(std::move(spare_.back()));
+    spare_.pop_back();
+  } else {
+    contours_.emplace_back();
+    // Glyph contours have tens of segments: start with room for a few dozen
+    // rather than growing one segment at a time (1, 2, 4, ... reallocations).
+    contours_.back().segments.reserve(32);
+  }
   start_ = pen_ = p;
   open_ = true;
+}
+
+void Outline::clear() {
+  for (Contour& contour : contours_) {
+    contour.segments.clear();
+    spare_.push_back(std::move(contour));
+  }
+  contours_.clear();
+  start_ = pen_ = Vec2{};
+  open_ = false;
 }
 
 void Outline::line_to(Vec2 p) {
@@ -75,7 +90,10 @@ void Outline::cubic_to(Vec2 c1, Vec2 c2, Vec2 p) {
 void Outline::close() {
   if (!open_) return;
   if (!(pen_ == start_)) contours_.back().segments.push_back(Segment::line(pen_, start_));
-  if (contours_.back().segments.empty()) contours_.pop_back();
+  if (contours_.back().segments.empty()) {
+    spare_.push_back(std::move(contours_.back()));
+    contours_.pop_back();
+  }
   pen_ = start_;
   open_ = false;
 }

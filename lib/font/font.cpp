@@ -482,16 +482,22 @@ hb_draw_funcs_t* draw_funcs() {
 }  // namespace
 
 Outline Font::glyph_outline(std::uint32_t glyph_id) const {
+  Outline outline;
+  glyph_outline(glyph_id, outline);
+  return outline;
+}
+
+void Font::glyph_outline(std::uint32_t glyph_id, Outline& outline) const {
   const Impl& im = *impl_;
+  outline.clear();
   if (glyph_id >= static_cast<std::uint32_t>(im.ft_face->num_glyphs))
     throw Error(ErrorCode::FontInvalid, "glyph id " + std::to_string(glyph_id) + " out of range (font has " +
                                             std::to_string(im.ft_face->num_glyphs) + " glyphs): " + im.path);
   if (im.outlines_from_harfbuzz()) {
-    Outline outline;
     DecomposeState state{&outline, 1.0, 1.0, Vec2{}};
     hb_font_get_glyph_shape(im.hb_font, glyph_id, draw_funcs(), &state);
     outline.close();
-    return outline;
+    return;
   }
 
   std::lock_guard<std::mutex> lock(im.ft_mutex);
@@ -502,7 +508,6 @@ Outline Font::glyph_outline(std::uint32_t glyph_id) const {
   if (slot->format != FT_GLYPH_FORMAT_OUTLINE)
     throw Error(ErrorCode::FontInvalid, "glyph " + std::to_string(glyph_id) + " has no outline: " + im.path);
 
-  Outline outline;
   outline.contours().reserve(static_cast<std::size_t>(std::max<short>(slot->outline.n_contours, 0)));
   const FT_Size_Metrics& size = im.ft_face->size->metrics;
   // A 26.6 coordinate c is c = units * x_scale / 65536, so units = c * 65536 /
@@ -520,7 +525,6 @@ Outline Font::glyph_outline(std::uint32_t glyph_id) const {
     throw Error(ErrorCode::FontInvalid, "cannot decompose glyph " + std::to_string(glyph_id) + " (" +
                                             ft_error_text(error) + "): " + im.path);
   outline.close();
-  return outline;
 }
 
 }  // namespace curvetext

@@ -34,7 +34,8 @@ GlyphCache::Impl::Vertices GlyphCache::Impl::get(const Font& font, std::uint32_t
     }
   }
   ++stats.misses;
-  const Outline outline = font.glyph_outline(glyph_id);
+  thread_local Outline outline;  // scratch: its storage serves every miss on this thread
+  font.glyph_outline(glyph_id, outline);
   int lod = 0;
   MeshOptions options;
   if (outline.has_cubics()) {

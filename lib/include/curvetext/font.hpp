@@ -61,6 +61,8 @@ class Font {
   // Empty outline for glyphs without contours (space). Throws Error(FontInvalid)
   // for glyph ids out of range.
   Outline glyph_outline(std::uint32_t glyph_id) const;
+  // The same into `out`, which is cleared first (its storage is reused).
+  void glyph_outline(std::uint32_t glyph_id, Outline& out) const;
   // Glyph id for a Unicode code point, 0 when the font has none.
   std::uint32_t glyph_for_codepoint(char32_t codepoint) const;
 

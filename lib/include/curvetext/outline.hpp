@@ -44,6 +44,10 @@ class Outline {
   void conic_to(Vec2 control, Vec2 p, double weight = 1.0);
   void cubic_to(Vec2 c1, Vec2 c2, Vec2 p);
   void close();
+  // Removes every contour. Their storage is kept for the contours added next,
+  // so a caller that fills one Outline glyph after glyph allocates nothing
+  // once warm.
+  void clear();
 
   const std::vector<Contour>& contours() const { return contours_; }
   std::vector<Contour>& contours() { return contours_; }
@@ -59,6 +63,7 @@ class Outline {
 
  private:
   std::vector<Contour> contours_;
+  std::vector<Contour> spare_;  // cleared contours whose storage move_to reuses
   Vec2 start_{};
   Vec2 pen_{};
   bool open_ = false;
