@@ -239,7 +239,11 @@ Ring take_ring() {
 }
 
 void recycle_ring(Ring&& ring) {
-  if (ring.capacity() != 0) spare_rings().push_back(std::move(ring));
+  // A glyph uses a few rings at a time; the crossing resolver makes new ones
+  // that come back here too, so the pool is capped (beyond it rings are freed).
+  constexpr std::size_t kMaxSpareRings = 64;
+  std::vector<Ring>& spare = spare_rings();
+  if (ring.capacity() != 0 && spare.size() < kMaxSpareRings) spare.push_back(std::move(ring));
 }
 
 void recycle_rings(std::vector<Ring>& rings) {
