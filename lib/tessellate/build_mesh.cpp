@@ -6,6 +6,7 @@
 // cross nor touch (the usual glyph) are triangulated by one plane sweep
 // (sweep.cpp); the others are bridged and ear-clipped (triangulate.cpp).
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -15,6 +16,10 @@
 #include <span>
 #include <utility>
 #include <vector>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "curvetext/curves.hpp"
 #include "curvetext/error.hpp"
@@ -506,7 +511,8 @@ bool hulls_overlap(const Vec2* p, int np, const Vec2* q, int nq) {
 
 // Up to this many pieces hull separation tests every pair's boxes instead
 // of sorting them first.
-constexpr std::size_t kAllPairsLimit = 48;
+constexpr std::size_t kAllPairsLimit = 64;  // at most 64: one bit per piece
+static_assert(kAllPairsLimit <= 64);
 
 bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
   // A piece's hull with what the sweep needs, copied out of the rings so the
@@ -623,7 +629,38 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
       min_y[k] = b.min.y;
       max_y[k] = b.max.y;
     }
-    if (!test_all) {
+    // Up to 64 pieces: one bit per piece j >= from whose box meets box i,
+    // two boxes per step with SSE2 (part of every x86-64 CPU).
+    auto meets_mask = [&](std::size_t i, std::size_t from) {
+      const double left = min_x[i], right = max_x[i], bottom = min_y[i], top = max_y[i];
+      std::uint64_t hits = 0;
+      std::size_t j = from & ~std::size_t{1};
+#if defined(__SSE2__)
+      const __m128d vl = _mm_set1_pd(left), vr = _mm_set1_pd(right), vb = _mm_set1_pd(bottom), vt = _mm_set1_pd(top);
+      for (; j + 2 <= count; j += 2) {
+        const __m128d in_x = _mm_and_pd(_mm_cmple_pd(_mm_loadu_pd(min_x + j), vr), _mm_cmple_pd(vl, _mm_loadu_pd(max_x + j)));
+        const __m128d in_y = _mm_and_pd(_mm_cmple_pd(_mm_loadu_pd(min_y + j), vt), _mm_cmple_pd(vb, _mm_loadu_pd(max_y + j)));
+        hits |= static_cast<std::uint64_t>(_mm_movemask_pd(_mm_and_pd(in_x, in_y))) << j;
+      }
+#endif
+      for (; j < count; ++j) {
+        const bool meets = (min_x[j] <= right) & (left <= max_x[j]) & (min_y[j] <= top) & (bottom <= max_y[j]);
+        hits |= static_cast<std::uint64_t>(meets) << j;
+      }
+      return from < 64 ? hits & ~((std::uint64_t{1} << from) - 1) : std::uint64_t{0};
+    };
+    auto below = [](std::size_t i) { return (std::uint64_t{1} << i) - 1; };  // bits 0 .. i - 1
+    if (!test_all && count <= 64) {
+      // Each fresh piece against every piece whose box meets its own (a
+      // fresh pair once, from its first piece).
+      std::uint64_t fresh_bits = 0;
+      for (const std::uint32_t i : fresh_refs) fresh_bits |= std::uint64_t{1} << i;
+      for (const std::uint32_t i : fresh_refs) {
+        const std::uint64_t others = (below(i) & ~fresh_bits) | (~below(i) & ~(std::uint64_t{1} << i));
+        for (std::uint64_t hits = meets_mask(i, 0) & others; hits != 0; hits &= hits - 1)
+          test_pair(unsorted[i], unsorted[static_cast<std::size_t>(std::countr_zero(hits))]);
+      }
+    } else if (!test_all) {
       // Each fresh piece against every piece whose box meets its own (a
       // fresh pair once, from its first piece).
       thread_local std::vector<unsigned char> fresh_flags;
@@ -646,14 +683,8 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
       // A glyph's few dozen pieces: every pair's boxes, which costs less
       // than sorting them (a sort's branches are unpredictable too).
       for (std::size_t i = 0; i < count; ++i) {
-        const double left = min_x[i], right = max_x[i], bottom = min_y[i], top = max_y[i];
-        std::size_t found = 0;
-        for (std::size_t j = i + 1; j < count; ++j) {
-          candidate[found] = static_cast<std::uint32_t>(j);
-          found += static_cast<std::size_t>((min_x[j] <= right) & (left <= max_x[j]) & (min_y[j] <= top) &
-                                            (bottom <= max_y[j]));
-        }
-        for (std::size_t f = 0; f < found; ++f) test_pair(unsorted[i], unsorted[candidate[f]]);
+        for (std::uint64_t hits = meets_mask(i, i + 1); hits != 0; hits &= hits - 1)
+          test_pair(unsorted[i], unsorted[static_cast<std::size_t>(std::countr_zero(hits))]);
       }
     } else {
       // Sweep and prune: sorted by the boxes' lower sides along the glyph's
