@@ -1004,8 +1004,10 @@ void build_mesh(const Outline& outline, const MeshOptions& options, Mesh& mesh) 
     std::vector<Ring> resolved = resolve_crossings(rings);
     recycle_rings(rings);
     rings = std::move(resolved);
-    separate_hulls(rings);
-    simple_edges = false;
+    // The resolved rings do not cross; where the same test as above agrees
+    // (and no position repeats: the sweep checks), they take the sweep too.
+    bool still_crossing = true;
+    simple_edges = separate_hulls(rings, &still_crossing) && !still_crossing;
   }
   // Region r is rings region_rings[region_start[r] .. region_start[r + 1]):
   // its outer ring, then its holes.
