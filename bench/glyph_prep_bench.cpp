@@ -81,6 +81,7 @@ double median(std::vector<double> v) {
 struct PrepResult {
   std::size_t glyphs = 0, empty = 0, mesh_faster = 0, ft_errors = 0;
   double mesh_us_median = 0, ft_us_median = 0;
+  double mesh_us_mean = 0, ft_us_mean = 0;  // the tail (glyphs with overlapping contours) shows here
   double mean_triangles = 0, mean_gpu_bytes = 0;
   double atlas_bytes[kAtlasSizeCount] = {};         // mean width x rows, 1 byte per pixel
   double atlas_bytes_padded[kAtlasSizeCount] = {};  // the same with 1 px of padding on each side
@@ -171,6 +172,10 @@ PrepResult measure(const FontCase& fc, const std::vector<unsigned>& glyphs, int 
 
   r.mesh_us_median = median(mesh_us);
   r.ft_us_median = median(ft_us);
+  for (std::size_t i = 0; i < glyphs.size(); ++i) {
+    r.mesh_us_mean += mesh_us[i] / static_cast<double>(glyphs.size());
+    r.ft_us_mean += ft_us[i] / static_cast<double>(glyphs.size());
+  }
   r.mean_triangles = triangles / static_cast<double>(glyphs.size());
   r.mean_gpu_bytes = bytes / static_cast<double>(glyphs.size());
   r.seconds = std::chrono::duration<double>(clock::now() - start).count();
@@ -197,6 +202,9 @@ void print_notes(const std::vector<std::pair<const FontCase*, PrepResult>>& rows
   }
   std::printf("mesh faster than FreeType 32 px on %zu of %zu glyphs (%.1f%%)\n", faster, total,
               total ? 100.0 * static_cast<double>(faster) / static_cast<double>(total) : 0.0);
+  std::printf("means over glyphs, us (mesh / FT32; glyphs with overlapping contours weigh on the mesh side):");
+  for (const auto& [fc, r] : rows) std::printf(" %s %.2f / %.2f;", fc->name, r.mesh_us_mean, r.ft_us_mean);
+  std::printf("\n");
   std::printf("atlas cells with 1 px padding per side (mean bytes, 16/32/64/128 px):");
   for (const auto& [fc, r] : rows)
     std::printf(" %s %.0f/%.0f/%.0f/%.0f;", fc->name, r.atlas_bytes_padded[0], r.atlas_bytes_padded[1],

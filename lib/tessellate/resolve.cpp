@@ -369,6 +369,9 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
       if (j == i) continue;
       const Edge& f = edges[j];
       const Vec2 a = tf(f.a), b = tf(f.b);
+      // Only an edge whose span straddles the ray's line can be crossed (the
+      // cheap test first: most candidates of a bin do not).
+      if ((a.y <= m.y) == (b.y <= m.y)) continue;
       // For an edge sharing an end point with e, every point of e's open
       // interior is on the side of f's line where e's other end is; asking
       // that end instead of the rounded midpoint is exact even for a tiny e.
