@@ -324,12 +324,15 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
   // Only edges whose span in the ray's perpendicular coordinate contains the
   // midpoint's can be crossed. Edges go into bins of y (for horizontal rays)
   // and of x (for vertical ones) by their closed span, so a query looks at
-  // the edges of one bin: about sqrt(n) bins keep it near-linear for glyphs
-  // while every bin still holds the edges it must.
+  // the edges of one bin. About n / 2 bins: a glyph's edges are short against
+  // its size (those of a crossing are split small), so a bin holds a few and
+  // an edge spans a few; the bins are one array (counted, then filled), not a
+  // vector per bin.
   struct Bins {
     double lo = 0.0, scale = 0.0;
     std::size_t count = 1;
-    std::vector<std::vector<std::uint32_t>> members;
+    std::vector<std::uint32_t> start;    // bin k's edges: members[start[k] .. start[k + 1])
+    std::vector<std::uint32_t> members;
     std::size_t bin(double v) const {
       const double k = (v - lo) * scale;
       if (!(k > 0.0)) return 0;
@@ -341,18 +344,29 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
     all.add(e.a);
     all.add(e.b);
   }
-  const std::size_t count = std::max<std::size_t>(1, static_cast<std::size_t>(std::sqrt(static_cast<double>(n))));
+  const std::size_t count = std::clamp<std::size_t>(n / 2, 1, 4096);
   auto make_bins = [&](bool use_x) {
     Bins b;
     b.count = count;
     b.lo = use_x ? all.min.x : all.min.y;
     const double hi = use_x ? all.max.x : all.max.y;
     b.scale = hi > b.lo ? static_cast<double>(count) / (hi - b.lo) : 0.0;
-    b.members.resize(count);
-    for (std::uint32_t j = 0; j < n; ++j) {
+    auto span = [&](std::uint32_t j) {
       const double v0 = use_x ? std::min(edges[j].a.x, edges[j].b.x) : std::min(edges[j].a.y, edges[j].b.y);
       const double v1 = use_x ? std::max(edges[j].a.x, edges[j].b.x) : std::max(edges[j].a.y, edges[j].b.y);
-      for (std::size_t k = b.bin(v0), last = b.bin(v1); k <= last; ++k) b.members[k].push_back(j);
+      return std::pair{b.bin(v0), b.bin(v1)};
+    };
+    b.start.assign(count + 1, 0);
+    for (std::uint32_t j = 0; j < n; ++j) {
+      const auto [first, last] = span(j);
+      for (std::size_t k = first; k <= last; ++k) ++b.start[k + 1];
+    }
+    for (std::size_t k = 0; k < count; ++k) b.start[k + 1] += b.start[k];
+    b.members.resize(b.start[count]);
+    std::vector<std::uint32_t> fill(b.start.begin(), b.start.end() - 1);
+    for (std::uint32_t j = 0; j < n; ++j) {
+      const auto [first, last] = span(j);
+      for (std::size_t k = first; k <= last; ++k) b.members[fill[k]++] = j;
     }
     return b;
   };
@@ -363,9 +377,11 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
     auto tf = [rotate](Vec2 p) { return rotate ? Vec2{p.y, -p.x} : p; };
     const Vec2 mid = (e.a + e.b) * 0.5;
     const Vec2 m = tf(mid);
-    const std::vector<std::uint32_t>& candidates = rotate ? by_x.members[by_x.bin(mid.x)] : by_y.members[by_y.bin(mid.y)];
+    const Bins& bins = rotate ? by_x : by_y;
+    const std::size_t k = bins.bin(rotate ? mid.x : mid.y);
     int w = 0;
-    for (const std::uint32_t j : candidates) {
+    for (std::uint32_t c = bins.start[k]; c < bins.start[k + 1]; ++c) {
+      const std::uint32_t j = bins.members[c];
       if (j == i) continue;
       const Edge& f = edges[j];
       const Vec2 a = tf(f.a), b = tf(f.b);
