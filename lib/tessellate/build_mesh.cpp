@@ -227,8 +227,12 @@ double ring_area(const Ring& ring) {
   return area;
 }
 
+namespace {
+
 // Rings out of use, kept with their storage: the rings of the next glyph
-// reuse it (no allocation per glyph once warm).
+// reuse it (no allocation per glyph once warm). take_ring gives an empty
+// ring, with storage from the pool when it has some; recycle_ring(s) give
+// storage back.
 std::vector<Ring>& spare_rings() {
   thread_local std::vector<Ring> spare;
   return spare;
@@ -255,6 +259,8 @@ void recycle_rings(std::vector<Ring>& rings) {
   for (Ring& ring : rings) recycle_ring(std::move(ring));
   rings.clear();
 }
+
+}  // namespace
 
 void clean_rings(const Outline& outline, double cubic_tolerance, std::vector<Ring>& rings) {
   recycle_rings(rings);

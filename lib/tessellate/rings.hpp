@@ -34,15 +34,9 @@ double ring_area(const Ring& ring);
 // flat conics, exact collinear runs and spikes removed, each split at its
 // repeated vertices into sub-rings that pass through every vertex once;
 // rings without area dropped. Replaces the contents of `rings`, whose old
-// rings go to a per-thread pool that take_ring draws from (their storage is
-// reused: no allocation per glyph once warm).
+// rings go to a per-thread pool that the new ones draw from (their storage
+// is reused: no allocation per glyph once warm).
 void clean_rings(const Outline& outline, double cubic_tolerance, std::vector<Ring>& rings);
-
-// An empty ring, with storage from the pool when it has some.
-Ring take_ring();
-// Gives a ring's storage (all rings' storage) to the pool.
-void recycle_ring(Ring&& ring);
-void recycle_rings(std::vector<Ring>& rings);
 
 // True when two hulls (2 points: a segment; 3: a control triangle) share any
 // point other than a common vertex.
