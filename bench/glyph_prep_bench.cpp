@@ -133,9 +133,10 @@ PrepResult measure(const FontCase& fc, const std::vector<unsigned>& glyphs, int 
       auto t0 = clock::now();
       font.glyph_outline(glyphs[i], outline);
       curvetext::build_mesh(outline, {tolerance}, mesh);
-      std::vector<curvetext::gpu::Vertex> packed;  // new, as the cache stores each glyph's own
+      curvetext::gpu::PackedMesh packed;  // new, as the cache stores each glyph's own
       curvetext::gpu::pack_mesh(mesh, packed);
-      benchmark::DoNotOptimize(packed.data());
+      benchmark::DoNotOptimize(packed.vertices.data());
+      benchmark::DoNotOptimize(packed.indices.data());
       auto t1 = clock::now();
       const FT_Error load_error = FT_Load_Glyph(ft.face, glyphs[i], FT_LOAD_DEFAULT);
       const FT_Error render_error = load_error ? load_error : FT_Render_Glyph(ft.face->glyph, FT_RENDER_MODE_NORMAL);
@@ -147,7 +148,7 @@ PrepResult measure(const FontCase& fc, const std::vector<unsigned>& glyphs, int 
         if (render_error) ++r.ft_errors;
         if (outline.empty()) ++r.empty;
         triangles += static_cast<double>(mesh.triangles.size() + mesh.curves.size());
-        bytes += static_cast<double>(packed.size() * sizeof(curvetext::gpu::Vertex));
+        bytes += static_cast<double>(packed.gpu_bytes());
       }
     }
   }
@@ -226,9 +227,10 @@ void BM_CurvetextMesh(benchmark::State& state, const FontCase* fc) {
   for (auto _ : state) {
     font.glyph_outline(glyphs[i++ % glyphs.size()], outline);
     curvetext::build_mesh(outline, {tolerance}, mesh);
-    std::vector<curvetext::gpu::Vertex> packed;
+    curvetext::gpu::PackedMesh packed;
     curvetext::gpu::pack_mesh(mesh, packed);
-    benchmark::DoNotOptimize(packed.data());
+    benchmark::DoNotOptimize(packed.vertices.data());
+    benchmark::DoNotOptimize(packed.indices.data());
   }
   state.SetItemsProcessed(state.iterations());
 }
@@ -285,9 +287,9 @@ int main(int argc, char** argv) {
   std::printf("\nmesh = outline load + build_mesh + gpu::pack_mesh (cubic tolerance of the 32 px level of detail);\n"
               "FT32 = FT_Load_Glyph + FT_Render_Glyph, AA, 32 px. Fastest of %d rounds per glyph, median over glyphs;\n"
               "ratio = FT32 / mesh (>= 1: the mesh is prepared at least as fast); faster = share of glyphs whose\n"
-              "mesh is faster than their bitmap; triangles, GPU bytes (%zu-byte vertices) and atlas cells\n"
-              "(atlN: mean FreeType bitmap width x rows at N px, 1 byte per pixel, no padding) are means over all\n"
-              "glyphs of the row, empty ones included.\n",
+              "mesh is faster than their bitmap; triangles, GPU bytes (%zu-byte vertices and 16-bit indices) and\n"
+              "atlas cells (atlN: mean FreeType bitmap width x rows at N px, 1 byte per pixel, no padding) are\n"
+              "means over all glyphs of the row, empty ones included.\n",
               rounds, sizeof(curvetext::gpu::Vertex));
 
   std::printf("\nLatin glyphs (U+0020..U+024F)  [target: ratio >= 1.0 and mesh < 5 us]\n");

@@ -19,6 +19,7 @@
 #include "curvetext/renderer.hpp"
 #include "curvetext/font.hpp"
 #include "curvetext/shaping.hpp"
+#include "gpu/batch_impl.hpp"
 #include "gpu/vertex_format.hpp"
 #include "support/coverage.hpp"
 #include "support/fonts.hpp"
@@ -392,7 +393,7 @@ TEST(Text, GlyphBatchMatchesFreeTypeReference) {
   Renderer renderer;
   DrawBatch batch = DrawBatch::from_text(cache, font, line, ppem);
   EXPECT_GT(batch.vertex_count(), 0u);
-  EXPECT_EQ(batch.gpu_bytes(), batch.vertex_count() * sizeof(gpu::Vertex));
+  EXPECT_GT(batch.gpu_bytes(), batch.vertex_count() * sizeof(gpu::Vertex));  // and the indices
   renderer.begin(width, height, Color{1, 1, 1, 1});
   renderer.draw(batch, placement, DrawOptions{});
   const test::Coverage got = test::coverage_from_black_on_white(renderer.read_pixels());
@@ -459,31 +460,38 @@ TEST(Packing, GrownTrianglesHoldEveryPointWithinTheGrowth) {
   // A right triangle (miters) and a needle of about 6 degrees at (10, 20) (a bevel there).
   m.points = {{0, 0}, {4, 0}, {0, 4}, {10, 20}, {40, 20}, {40, 23}};
   m.triangles = {{0, 1, 2}, {3, 4, 5}};
-  const auto packed = gpu::pack_mesh(m);
-  // 3 vertices for the first; the needle's sharp corner adds one polygon
-  // vertex (4 points, 2 fan triangles).
-  ASSERT_EQ(packed.size(), 3u * (1 + 2));
+  const gpu::PackedMesh packed = gpu::pack_mesh(m);
+  // 3 points for the first; the needle's sharp corner adds one polygon point
+  // (4 points, 2 fan triangles).
+  ASSERT_EQ(packed.vertices.size(), 3u + 4u);
+  ASSERT_EQ(packed.indices.size(), 3u * (1 + 2));
+  for (std::uint32_t i : packed.indices) ASSERT_LT(i, packed.vertices.size());
   const double t = 1.0;
-  auto grown = [&](std::size_t i) {
-    const auto& v = packed[i];
+  auto grown = [&](std::uint32_t i) {
+    const auto& v = packed.vertices[i];
     return Vec2{v.pos[0] + t * v.pos[2], v.pos[1] + t * v.pos[3]};
   };
+  // Index triangles [begin, end) of the fan.
   auto in_fan = [&](std::size_t begin, std::size_t end, Vec2 x) {
     for (std::size_t i = begin; i < end; i += 3) {
-      const Vec2 a = grown(i), b = grown(i + 1), c = grown(i + 2);
+      const Vec2 a = grown(packed.indices[i]), b = grown(packed.indices[i + 1]), c = grown(packed.indices[i + 2]);
       const double d1 = cross(b - a, x - a), d2 = cross(c - b, x - b), d3 = cross(a - c, x - c);
       if ((d1 >= -1e-9 && d2 >= -1e-9 && d3 >= -1e-9) || (d1 <= 1e-9 && d2 <= 1e-9 && d3 <= 1e-9)) return true;
     }
     return false;
   };
   for (std::size_t tri = 0; tri < 2; ++tri) {
+    const std::size_t vbegin = tri == 0 ? 0 : 3, vend = tri == 0 ? 3 : 7;
     const std::size_t begin = tri == 0 ? 0 : 3, end = tri == 0 ? 3 : 9;
-    for (std::size_t i = begin; i < end; ++i) {
-      const Vec2 base{packed[i].pos[0], packed[i].pos[1]};
-      bool own = false;
-      for (std::uint32_t k : m.triangles[tri]) own = own || base == m.points[k];
-      EXPECT_TRUE(own) << "vertex " << i << " does not start at its triangle's vertex";
-      EXPECT_LE(length(Vec2{packed[i].pos[2], packed[i].pos[3]}), 4.0 + 1e-6) << "miter limit";
+    for (std::size_t i = vbegin; i < vend; ++i) {
+      const gpu::Vertex& v = packed.vertices[i];
+      // The code names the corner the point moves from (interior: side 0).
+      const int corner = static_cast<int>(v.info[0]);
+      ASSERT_TRUE(corner >= 0 && corner < 3 && v.info[0] == static_cast<float>(corner)) << "vertex " << i;
+      const Vec2 own = m.points[m.triangles[tri][static_cast<std::size_t>(corner)]];
+      EXPECT_EQ(v.pos[0], static_cast<float>(own.x)) << "vertex " << i << " does not start at its corner";
+      EXPECT_EQ(v.pos[1], static_cast<float>(own.y)) << "vertex " << i << " does not start at its corner";
+      EXPECT_LE(length(Vec2{v.pos[2], v.pos[3]}), 4.0 + 1e-6) << "miter limit";
     }
     // Points at distance 0.999 t from the triangle: around each vertex and
     // along each edge's outside.
@@ -500,6 +508,81 @@ TEST(Packing, GrownTrianglesHoldEveryPointWithinTheGrowth) {
       }
     }
   }
+}
+
+// A curved triangle's vertices carry its side (convex +1 -> side 1, concave
+// -> side 2) and weight; the fan indices are numbered past what `out`
+// already holds when appending.
+TEST(Packing, CurveCodesAndAppendedIndices) {
+  Mesh m;
+  m.points = {{0, 0}, {5, 8}, {10, 0}};
+  m.curves = {CurvedTriangle{0, 1, 2, 0.7, true}, CurvedTriangle{2, 1, 0, 1.0, false}};
+  const gpu::PackedMesh packed = gpu::pack_mesh(m);
+  ASSERT_EQ(packed.vertices.size(), 6u);
+  for (std::size_t i = 0; i < 6; ++i) {
+    const int side = i < 3 ? gpu::kConvexCurve : gpu::kConcaveCurve;
+    const float code = packed.vertices[i].info[0];
+    EXPECT_GE(code, static_cast<float>(gpu::kSideStride * side)) << i;
+    EXPECT_LT(code, static_cast<float>(gpu::kSideStride * (side + 1))) << i;
+    EXPECT_EQ(packed.vertices[i].info[1], i < 3 ? 0.7f : 1.0f) << i;
+  }
+  gpu::PackedMesh both = packed;
+  gpu::append_translated(packed, Vec2{100, 0}, both);
+  ASSERT_EQ(both.vertices.size(), 12u);
+  ASSERT_EQ(both.indices.size(), 2 * packed.indices.size());
+  for (std::size_t i = 0; i < packed.indices.size(); ++i) {
+    EXPECT_EQ(both.indices[packed.indices.size() + i], packed.indices[i] + 6u);
+    const gpu::Vertex& a = packed.vertices[packed.indices[i]];
+    const gpu::Vertex& b = both.vertices[both.indices[packed.indices.size() + i]];
+    EXPECT_EQ(b.pos[0], a.pos[0] + 100.0f);
+    EXPECT_EQ(b.info[0], a.info[0]);
+  }
+}
+
+// The three ways a batch's indices reach the GPU (16-bit, 32-bit, expanded
+// arrays) draw the same pixels, and gpu_bytes counts what was uploaded.
+TEST(DrawBatchUpload, SixteenBitThirtyTwoBitAndArraysDrawTheSame) {
+  context();
+  const Font font = Font::open(test::kDejaVuSans);
+  const ShapedLine line = shape_line(font, "Quag@8");
+  GlyphCache cache;
+  gpu::PackedMesh packed;
+  double pen = 0;
+  for (const ShapedGlyph& g : line.glyphs) {
+    gpu::append_translated(*cache.impl().get(font, g.glyph_id, 30.0), Vec2{pen + g.x_offset, g.y_offset}, packed);
+    pen += g.x_advance;
+  }
+  ASSERT_FALSE(packed.empty());
+  const double scale = 30.0 / font.metrics().units_per_em;
+  const Placement placement{scale, 3.25, 30.5};
+  Renderer renderer;
+  std::vector<Image> images;
+  for (gpu::IndexUpload how : {gpu::IndexUpload::Bits16, gpu::IndexUpload::Bits32, gpu::IndexUpload::Arrays}) {
+    DrawBatch batch = DrawBatchAccess::make(gpu::upload(packed, how));
+    const std::size_t expected = how == gpu::IndexUpload::Bits16 ? packed.vertices.size() * 32 + packed.indices.size() * 2
+                                 : how == gpu::IndexUpload::Bits32 ? packed.vertices.size() * 32 + packed.indices.size() * 4
+                                                                   : packed.indices.size() * 32;
+    EXPECT_EQ(batch.gpu_bytes(), expected);
+    for (AntiAliasing aa : {AntiAliasing::Full, AntiAliasing::Curves}) {
+      renderer.begin(160, 44, Color{1, 1, 1, 1});
+      renderer.draw(batch, placement, DrawOptions(Color{0, 0, 0, 1}, aa));
+      images.push_back(renderer.read_pixels());
+    }
+  }
+  for (std::size_t i = 2; i < images.size(); ++i) {
+    const Image& a = images[i % 2];
+    const Image& b = images[i];
+    ASSERT_EQ(a.rgba, b.rgba) << "upload way " << i / 2 << ", mode " << i % 2 << " differs from 16-bit";
+  }
+  // Some ink was drawn.
+  std::size_t dark = 0;
+  for (std::size_t i = 0; i < images[0].rgba.size(); i += 4) dark += images[0].rgba[i] < 128;
+  EXPECT_GT(dark, 100u);
+
+  gpu::PackedMesh too_many;
+  too_many.vertices.resize(65537);
+  too_many.indices = {0, 1, 65536};
+  EXPECT_THROW(gpu::upload(too_many, gpu::IndexUpload::Bits16), Error);
 }
 
 TEST(Png, RoundTrip) {

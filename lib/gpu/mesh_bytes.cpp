@@ -3,6 +3,6 @@
 
 namespace curvetext {
 
-std::size_t gpu_bytes(const Mesh& mesh) { return gpu::pack_mesh(mesh).size() * sizeof(gpu::Vertex); }
+std::size_t gpu_bytes(const Mesh& mesh) { return gpu::pack_mesh(mesh).gpu_bytes(); }
 
 }  // namespace curvetext

@@ -94,19 +94,16 @@ int grown_polygon(const std::array<Vec2, 3>& p, std::array<Corner, 6>& out) {
   return count;
 }
 
-// The barycentrics (tau1, tau2) at a triangle's own vertices.
-constexpr std::array<std::array<float, 2>, 3> kCornerTau{{{0.0f, 0.0f}, {1.0f, 0.0f}, {0.0f, 1.0f}}};
-
-// Writes triangle p (of vertex kind `kind`) grown as above, as a fan, at
-// dst (room for 12 vertices); returns the number of vertices written.
-// s and w: a curve's filled side and weight (0 for interior triangles).
-std::size_t emit(const std::array<Vec2, 3>& p, const Bary& g, float kind, float s, float w, Vertex* dst) {
+// Writes triangle p grown as above: its polygon's points at dst (room for 6
+// vertices), numbered from `base`, and the fan's triangles (0, i, i + 1) at
+// idx (room for 12 indices). `side` is a VertexSide, w a curve's weight (0
+// for interior triangles). Returns the number of points (0 when the triangle
+// has no width).
+std::size_t emit(const std::array<Vec2, 3>& p, const Bary& g, int side, float w, std::uint32_t base, Vertex* dst,
+                 std::uint32_t* idx) {
   std::array<Corner, 6> poly;
   const int count = grown_polygon(p, poly);
   if (count < 3) return 0;
-  // Each polygon point built once and stored where the fan's triangles
-  // (0, i, i + 1) use it: point 0 starts every triangle, point i ends
-  // triangle i - 1 and is the middle of triangle i.
   const std::size_t n = static_cast<std::size_t>(count);
   for (std::size_t i = 0; i < n; ++i) {
     const Corner& c = poly[i];
@@ -116,56 +113,62 @@ std::size_t emit(const std::array<Vec2, 3>& p, const Bary& g, float kind, float 
     v.pos[1] = static_cast<float>(p[k].y);
     v.pos[2] = static_cast<float>(c.ox);
     v.pos[3] = static_cast<float>(c.oy);
-    v.coef[0] = kCornerTau[k][0];
-    v.coef[1] = kCornerTau[k][1];
-    v.coef[2] = s;
-    v.coef[3] = 0.0f;
-    v.info[0] = kind;
+    v.info[0] = static_cast<float>(c.vertex + kSideStride * side);
     v.info[1] = w;
     v.info[2] = static_cast<float>(g.grad1.x * c.ox + g.grad1.y * c.oy);
     v.info[3] = static_cast<float>(g.grad2.x * c.ox + g.grad2.y * c.oy);
-    if (i == 0) {
-      for (std::size_t t = 0; t + 2 < n; ++t) dst[3 * t] = v;
-    } else {
-      if (i >= 2) dst[3 * (i - 2) + 2] = v;
-      if (i + 1 < n) dst[3 * (i - 1) + 1] = v;
-    }
+    dst[i] = v;
   }
-  return 3 * (n - 2);
+  for (std::uint32_t t = 0; t + 2 < n; ++t) {
+    idx[3 * t] = base;
+    idx[3 * t + 1] = base + t + 1;
+    idx[3 * t + 2] = base + t + 2;
+  }
+  return n;
 }
 
 }  // namespace
 
-void pack_mesh(const Mesh& mesh, std::vector<Vertex>& out) {
+void pack_mesh(const Mesh& mesh, PackedMesh& out) {
   // Written into scratch with room for the most a triangle can grow into
-  // (6 points: 12 vertices), then appended at once: `out` gets exactly its
-  // vertices, with no zero-filling or growth on the way.
-  thread_local std::vector<Vertex> scratch;
-  const std::size_t room = 12 * (mesh.triangles.size() + mesh.curves.size());
-  if (scratch.size() < room) scratch.resize(room);
-  Vertex* const begin = scratch.data();
-  Vertex* dst = begin;
-  for (const auto& tri : mesh.triangles) {
-    const std::array<Vec2, 3> p{mesh.points[tri[0]], mesh.points[tri[1]], mesh.points[tri[2]]};
+  // (6 points, 4 fan triangles), then appended at once: `out` gets exactly
+  // its vertices and indices, with no zero-filling or growth on the way.
+  thread_local std::vector<Vertex> vertex_scratch;
+  thread_local std::vector<std::uint32_t> index_scratch;
+  const std::size_t triangles = mesh.triangles.size() + mesh.curves.size();
+  if (vertex_scratch.size() < 6 * triangles) vertex_scratch.resize(6 * triangles);
+  if (index_scratch.size() < 12 * triangles) index_scratch.resize(12 * triangles);
+  Vertex* const vertices = vertex_scratch.data();
+  std::uint32_t* const indices = index_scratch.data();
+  const auto base = static_cast<std::uint32_t>(out.vertices.size());
+  std::size_t nv = 0, ni = 0;
+  auto add = [&](const std::array<Vec2, 3>& p, int side, float w) {
     const Bary g = bary_of(p[0], p[1], p[2]);
-    if (g.ok) dst += emit(p, g, static_cast<float>(kSolid), 0.0f, 0.0f, dst);
-  }
-  for (const CurvedTriangle& ct : mesh.curves) {
-    const std::array<Vec2, 3> p{mesh.points[ct.p0], mesh.points[ct.control], mesh.points[ct.p2]};
-    const Bary g = bary_of(p[0], p[1], p[2]);
-    if (g.ok) dst += emit(p, g, static_cast<float>(kCurve), ct.convex ? 1.0f : -1.0f, static_cast<float>(ct.weight), dst);
-  }
-  out.insert(out.end(), begin, dst);
+    if (!g.ok) return;
+    const std::size_t n = emit(p, g, side, w, base + static_cast<std::uint32_t>(nv), vertices + nv, indices + ni);
+    nv += n;
+    ni += n >= 3 ? 3 * (n - 2) : 0;
+  };
+  for (const auto& tri : mesh.triangles)
+    add({mesh.points[tri[0]], mesh.points[tri[1]], mesh.points[tri[2]]}, kInterior, 0.0f);
+  for (const CurvedTriangle& ct : mesh.curves)
+    add({mesh.points[ct.p0], mesh.points[ct.control], mesh.points[ct.p2]}, ct.convex ? kConvexCurve : kConcaveCurve,
+        static_cast<float>(ct.weight));
+  out.vertices.insert(out.vertices.end(), vertices, vertices + nv);
+  out.indices.insert(out.indices.end(), indices, indices + ni);
 }
 
-void append_translated(const std::vector<Vertex>& in, Vec2 offset, std::vector<Vertex>& out) {
-  out.reserve(out.size() + in.size());
-  for (Vertex v : in) {
+void append_translated(const PackedMesh& in, Vec2 offset, PackedMesh& out) {
+  const auto base = static_cast<std::uint32_t>(out.vertices.size());
+  out.vertices.reserve(out.vertices.size() + in.vertices.size());
+  for (Vertex v : in.vertices) {
     // Add in double so equal inputs stay equal after the shift.
     v.pos[0] = static_cast<float>(static_cast<double>(v.pos[0]) + offset.x);
     v.pos[1] = static_cast<float>(static_cast<double>(v.pos[1]) + offset.y);
-    out.push_back(v);
+    out.vertices.push_back(v);
   }
+  out.indices.reserve(out.indices.size() + in.indices.size());
+  for (std::uint32_t i : in.indices) out.indices.push_back(base + i);
 }
 
 }  // namespace curvetext::gpu

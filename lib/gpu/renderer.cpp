@@ -204,7 +204,8 @@ struct Renderer::Impl {
   Blending blending = Blending::Srgb;  // of the target begin() made
   bool gles = true;
   GLuint debug_ibo = 0;  // --debug: GL_LINES indices over the triangles
-  std::size_t debug_ibo_vertices = 0;
+  std::uint64_t debug_ibo_batch = 0;  // the serial of the batch they were made for
+  std::size_t debug_ibo_lines = 0;    // indices in debug_ibo
   GLuint framebuffer = 0;
   GLuint texture = 0;
   int width = 0, height = 0;
@@ -308,7 +309,7 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
   compile(vs, GL_VERTEX_SHADER, shader_source::curve_vert_glsl, gles);
   compile(fs, GL_FRAGMENT_SHADER, shader_source::curve_frag_glsl, gles);
   Impl& r = *impl_;
-  r.program = link_program(vs, fs, {"a_pos", "a_coef", "a_info"}, "curve shader program");
+  r.program = link_program(vs, fs, {"a_pos", "a_info"}, "curve shader program");
   r.curve_u = ProgramUniforms::of(r.program);
   r.u_aa = glGetUniformLocation(r.program, "u_aa");
   r.u_debug = glGetUniformLocation(r.program, "u_debug");
@@ -318,7 +319,7 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
     Shader avs(GL_VERTEX_SHADER), afs(GL_FRAGMENT_SHADER);
     compile(avs, GL_VERTEX_SHADER, shader_source::curve_vert_glsl, gles);
     compile(afs, GL_FRAGMENT_SHADER, shader_source::area_frag_glsl, gles);
-    r.area_program = link_program(avs, afs, {"a_pos", "a_coef", "a_info"}, "full antialiasing program");
+    r.area_program = link_program(avs, afs, {"a_pos", "a_info"}, "full antialiasing program");
     r.area_u = ProgramUniforms::of(r.area_program);
   }
 
@@ -488,21 +489,36 @@ GLfloat coverage_exponent(float gamma) {
                            static_cast<float>(tolerance::kMaxCoverageGamma));
 }
 
-// Draws the batch's triangles with the current program and blending; the
-// attributes sit at locations 0, 1, 2 (link_program binds them in order).
-void draw_triangles(const DrawBatch::Impl& b) {
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_STENCIL_TEST);
-  glDisable(GL_CULL_FACE);  // triangles come in either orientation
+// Binds the batch's vertex buffer to the attributes at locations 0, 1
+// (link_program binds them in order).
+void bind_vertices(const DrawBatch::Impl& b) {
   glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
   const GLsizei stride = static_cast<GLsizei>(sizeof(gpu::Vertex));
   for (GLuint i = 0; i < gpu::kVertexAttributes; ++i) {
     glEnableVertexAttribArray(i);
     glVertexAttribPointer(i, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(static_cast<std::uintptr_t>(i) * 16u));
   }
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(b.vertex_count));
+}
+
+void unbind_vertices() {
   for (GLuint i = 0; i < gpu::kVertexAttributes; ++i) glDisableVertexAttribArray(i);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+}
+
+// Draws the batch's triangles with the current program and blending.
+void draw_triangles(const DrawBatch::Impl& b) {
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_STENCIL_TEST);
+  glDisable(GL_CULL_FACE);  // triangles come in either orientation
+  bind_vertices(b);
+  if (b.index_type != 0) {
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, b.ibo);
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(b.index_count), b.index_type, nullptr);
+  } else {
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(b.vertex_count));
+  }
+  unbind_vertices();
   if (GLenum err = glGetError(); err != GL_NO_ERROR) {
     throw Error(ErrorCode::Gl, "drawing a batch failed (GL error " + hex(err) + ")");
   }
@@ -660,19 +676,20 @@ bool Renderer::draw_offscreen(const DrawBatch::Impl& b, const Transform& full, f
 // curve program with u_debug = 2), over what draw_curves drew.
 void Renderer::draw_debug_edges(const DrawBatch::Impl& b, const Transform& full, float vw, float vh) {
   Impl& r = *impl_;
-  if (r.debug_ibo == 0 || r.debug_ibo_vertices != b.vertex_count) {
+  if (r.debug_ibo == 0 || r.debug_ibo_batch != b.serial) {
     std::vector<GLuint> indices;
-    indices.reserve(b.vertex_count * 2);
-    for (GLuint t = 0; t + 2 < b.vertex_count; t += 3)
-      for (GLuint e = 0; e < 3; ++e) {
-        indices.push_back(t + e);
-        indices.push_back(t + (e + 1) % 3);
+    indices.reserve(b.indices.size() * 2);
+    for (std::size_t t = 0; t + 2 < b.indices.size(); t += 3)
+      for (std::size_t e = 0; e < 3; ++e) {
+        indices.push_back(b.indices[t + e]);
+        indices.push_back(b.indices[t + (e + 1) % 3]);
       }
     if (r.debug_ibo == 0) glGenBuffers(1, &r.debug_ibo);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, r.debug_ibo);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(GLuint)), indices.data(),
                  GL_STATIC_DRAW);
-    r.debug_ibo_vertices = b.vertex_count;
+    r.debug_ibo_batch = b.serial;
+    r.debug_ibo_lines = indices.size();
   }
   glUseProgram(r.program);
   set_view(r.curve_u.transform, r.curve_u.viewport, full, vw, vh);
@@ -680,17 +697,10 @@ void Renderer::draw_debug_edges(const DrawBatch::Impl& b, const Transform& full,
   glUniform1i(r.u_debug, 2);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
+  bind_vertices(b);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, r.debug_ibo);
-  const GLsizei stride = static_cast<GLsizei>(sizeof(gpu::Vertex));
-  for (GLuint i = 0; i < gpu::kVertexAttributes; ++i) {
-    glEnableVertexAttribArray(i);
-    glVertexAttribPointer(i, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(static_cast<std::uintptr_t>(i) * 16u));
-  }
-  glDrawElements(GL_LINES, static_cast<GLsizei>(b.vertex_count / 3 * 6), GL_UNSIGNED_INT, nullptr);
-  for (GLuint i = 0; i < gpu::kVertexAttributes; ++i) glDisableVertexAttribArray(i);
-  glBindBuffer(GL_ARRAY_BUFFER, 0);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+  glDrawElements(GL_LINES, static_cast<GLsizei>(r.debug_ibo_lines), GL_UNSIGNED_INT, nullptr);
+  unbind_vertices();
   glUniform1i(r.u_debug, 0);
   if (GLenum err = glGetError(); err != GL_NO_ERROR)
     throw Error(ErrorCode::Gl, "drawing debug edges failed (GL error " + hex(err) + ")");

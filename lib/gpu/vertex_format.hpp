@@ -2,26 +2,34 @@
 // curve.frag.glsl or area.frag.glsl) and the packing of meshes into it.
 // Private to the library; tests include it.
 //
-// Unindexed triangles, 3 vec4 per vertex (48 bytes). Every interior triangle
+// Indexed triangles, 2 vec4 per vertex (32 bytes). Every interior triangle
 // and every curved triangle's control triangle of the mesh is one polygon of
-// 3 to 6 vertices (its grown outline, lib/gpu/pack.cpp), drawn as a fan:
+// 3 to 6 vertices (its grown outline, lib/gpu/pack.cpp), each vertex stored
+// once and the polygon drawn as a fan of indexed triangles:
 //   a_pos  = (x, y, ox, oy)   position in outline units of one of the
 //            triangle's own vertices; (ox, oy) the direction it moves per
 //            outline unit of dilation t (edges move out by t).
-//   a_coef = (tau1, tau2, s, 0): the triangle's affine barycentrics at (x, y)
-//            (its vertices 0 -> (0, 0), 1 -> (1, 0), 2 -> (0, 1); for a curved
-//            triangle p0, control, p2); s = +1 a curve filled on its chord's
-//            side (convex), -1 beyond its arc (concave), 0 interior.
-//   a_info = (kind, w, dtau1, dtau2): kind 0 interior, 2 curved; w the conic
-//            weight; the barycentrics' change per unit of t along (ox, oy).
-// The vertex shader computes pos = xy + (ox, oy) t, tau = tau + dtau t with
-// t = u_fringe_px / (pixels per outline unit): 0 for the single-pass modes
-// (the triangles as they are; a bevel's extra vertices coincide), a pixel's
-// reach for full antialiasing.
+//   a_info = (code, w, dtau1, dtau2): code = corner + 3 * side, with corner
+//            0, 1, 2 the triangle vertex the point moves from (affine
+//            barycentrics (tau1, tau2) there: (0, 0), (1, 0), (0, 1); for a
+//            curved triangle p0, control, p2) and side 0 interior, 1 a curve
+//            filled on its chord's side (convex, s = +1), 2 a curve filled
+//            beyond its arc (concave, s = -1); w the conic weight; (dtau1,
+//            dtau2) the barycentrics' change per unit of t along (ox, oy).
+// The vertex shader decodes code, computes pos = xy + (ox, oy) t and
+// tau = tau + dtau t with t = u_fringe_px / (pixels per outline unit): 0 for
+// the single-pass modes (the triangles as they are; a bevel's extra vertices
+// coincide), a pixel's reach for full antialiasing.
+//
+// Indices are 32-bit here; a batch uploads them as 16-bit when it has at most
+// 65,536 vertices (the GLES2 floor), else as 32-bit where the context has
+// them (GLES3, desktop GL, OES_element_index_uint), else expands the
+// triangles into plain vertex arrays.
 
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "curvetext/geometry.hpp"
@@ -31,24 +39,48 @@ namespace curvetext::gpu {
 
 struct Vertex {
   float pos[4];
-  float coef[4];
   float info[4];
 };
-static_assert(sizeof(Vertex) == 48, "the shaders' attribute layout assumes 48-byte vertices");
-inline constexpr unsigned kVertexAttributes = 3;  // vec4 each
+static_assert(sizeof(Vertex) == 32, "the shaders' attribute layout assumes 32-byte vertices");
+inline constexpr unsigned kVertexAttributes = 2;  // vec4 each
 
-enum VertexKind : int { kSolid = 0, kCurve = 2 };
+// a_info.x: corner + kSideStride * side.
+enum VertexSide : int { kInterior = 0, kConvexCurve = 1, kConcaveCurve = 2 };
+inline constexpr int kSideStride = 3;
+
+// Vertices and the triangles over them (3 indices each, counter-clockwise or
+// not: the shaders do not cull).
+struct PackedMesh {
+  std::vector<Vertex> vertices;
+  std::vector<std::uint32_t> indices;
+
+  bool empty() const { return indices.empty(); }
+  void clear() {
+    vertices.clear();
+    indices.clear();
+  }
+  // Bytes in a vertex buffer and an index buffer of the width a batch of
+  // this many vertices uploads (16-bit up to 65,536 vertices, else 32-bit).
+  std::size_t gpu_bytes() const {
+    return vertices.size() * sizeof(Vertex) + indices.size() * (vertices.size() <= 65536 ? 2 : 4);
+  }
+  // Bytes this object holds in CPU memory (the glyph cache's budget).
+  std::size_t memory_bytes() const {
+    return vertices.size() * sizeof(Vertex) + indices.size() * sizeof(std::uint32_t);
+  }
+};
 
 // Appends the packed triangles (interior and curved) of `mesh`.
-void pack_mesh(const Mesh& mesh, std::vector<Vertex>& out);
-inline std::vector<Vertex> pack_mesh(const Mesh& mesh) {
-  std::vector<Vertex> out;
+void pack_mesh(const Mesh& mesh, PackedMesh& out);
+inline PackedMesh pack_mesh(const Mesh& mesh) {
+  PackedMesh out;
   pack_mesh(mesh, out);
   return out;
 }
 
-// Appends `in` translated by `offset` (outline units). Barycentrics are
-// translation invariant, so only positions change.
-void append_translated(const std::vector<Vertex>& in, Vec2 offset, std::vector<Vertex>& out);
+// Appends `in` translated by `offset` (outline units), its indices moved past
+// the vertices already in `out`. Barycentrics are translation invariant, so
+// only positions change.
+void append_translated(const PackedMesh& in, Vec2 offset, PackedMesh& out);
 
 }  // namespace curvetext::gpu

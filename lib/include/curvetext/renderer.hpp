@@ -90,8 +90,9 @@ struct DrawOptions {
       : color(color_), antialiasing(aa), curve_mode(mode) {}
 };
 
-// Bytes `mesh` takes in a GPU vertex buffer once packed (interior and curved
-// triangles, each grown for antialiasing), as DrawBatch uploads it.
+// Bytes `mesh` takes in GPU vertex and index buffers once packed (interior and
+// curved triangles, each grown for antialiasing; 32-byte vertices, 16-bit
+// indices up to 65,536 vertices, else 32-bit), as DrawBatch uploads it.
 std::size_t gpu_bytes(const Mesh& mesh);
 
 // Meshes packed for the GPU, per glyph, keyed by (font cache key, glyph, level
@@ -118,7 +119,7 @@ class GlyphCache {
   std::unique_ptr<Impl> impl_;
 };
 
-// One vertex buffer drawn with one draw call. Built from shaped text (one
+// One vertex buffer and one index buffer drawn with one draw call. Built from shaped text (one
 // font) or from arbitrary meshes; moving or scaling it changes only uniforms.
 class DrawBatch {
  public:
@@ -133,13 +134,14 @@ class DrawBatch {
   DrawBatch& operator=(DrawBatch&&) noexcept;
   ~DrawBatch();
 
-  std::size_t vertex_count() const;
-  std::size_t gpu_bytes() const;
+  std::size_t vertex_count() const;  // in the vertex buffer
+  std::size_t gpu_bytes() const;     // vertex and index buffers
 
   struct Impl;
   Impl& impl() const { return *impl_; }
 
  private:
+  friend struct DrawBatchAccess;  // lib/gpu/batch_impl.hpp
   explicit DrawBatch(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
 };
