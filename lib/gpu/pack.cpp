@@ -27,97 +27,61 @@
 namespace curvetext::gpu {
 namespace {
 
-// Unit vector along d; the squared length is finite for every triangle that
-// reaches here (bary_of rejects the others), so no hypot is needed.
-Vec2 unit(Vec2 d) {
-  const double len2 = dot(d, d);
-  return len2 > 0 ? d * (1.0 / std::sqrt(len2)) : Vec2{};
-}
-
-// Affine barycentric coordinates (tau1, tau2) of a triangle (a, b, c):
-// tau1 is b's weight, tau2 c's (a -> (0, 0), b -> (1, 0), c -> (0, 1)).
-struct Bary {
-  Vec2 grad1{}, grad2{};
-  bool ok = false;
-};
-
-Bary bary_of(Vec2 a, Vec2 b, Vec2 c) {
-  Bary g;
-  const double area2 = cross(b - a, c - a);
-  const double scale = dot(b - a, b - a) + dot(c - a, c - a);
-  // A flat triangle covers nothing; its barycentrics would be noise.
-  if (!(std::isfinite(area2) && std::fabs(area2) > 1e-12 * scale)) return g;
-  const double inv = 1.0 / area2;
-  g.grad1 = Vec2{(c - a).y, -(c - a).x} * inv;
-  g.grad2 = Vec2{-(b - a).y, (b - a).x} * inv;
-  g.ok = true;
-  return g;
-}
-
-// Left uninitialised (no member initialisers): emit fills the ones it uses.
-struct Corner {
-  int vertex;  // 0, 1, 2: which triangle vertex the point moves from
-  double ox, oy;  // its offset per unit of dilation
-};
-Corner corner(std::size_t vertex, Vec2 offset) { return {static_cast<int>(vertex), offset.x, offset.y}; }
-
-// The grown triangle as a convex polygon of 3 to 6 points, in order. Each
-// edge moves outward by 1 (times t); see the file comment for the bevels.
-int grown_polygon(const std::array<Vec2, 3>& p, std::array<Corner, 6>& out) {
-  const double orientation = cross(p[1] - p[0], p[2] - p[0]) > 0 ? 1.0 : -1.0;
-  std::array<Vec2, 3> along{};   // unit direction of edge k: p[k] -> p[k + 1]
-  std::array<Vec2, 3> normal{};  // its outward normal
-  for (std::size_t k = 0; k < 3; ++k) {
-    along[k] = unit(p[(k + 1) % 3] - p[k]);
-    normal[k] = Vec2{along[k].y, -along[k].x} * orientation;
-  }
-  int count = 0;
-  for (std::size_t k = 0; k < 3; ++k) {
-    const std::size_t arriving = (k + 2) % 3;
-    const Vec2 na = normal[arriving];  // edge arriving at p[k]
-    const Vec2 nb = normal[k];         // edge leaving p[k]
-    const double denom = 1.0 + dot(na, nb);
-    if (denom > tolerance::kMinMiterDenominator) {
-      out[static_cast<std::size_t>(count++)] = corner(k, (na + nb) * (1.0 / denom));
-      continue;
-    }
-    // Bevel: the points of both moved edges at distance 1 from p[k] along
-    // the outward bisector u.
-    const Vec2 ea = along[arriving];  // along the arriving edge, onward
-    const Vec2 eb = along[k] * -1.0;  // along the leaving edge, backward
-    const Vec2 u = unit(ea + eb);
-    const double ua = dot(u, ea), ub = dot(u, eb);
-    if (!(ua > 1e-9 && ub > 1e-9)) return 0;  // a needle with no width: nothing to draw
-    out[static_cast<std::size_t>(count++)] = corner(k, na + ea * ((1.0 - dot(u, na)) / ua));
-    out[static_cast<std::size_t>(count++)] = corner(k, nb + eb * ((1.0 - dot(u, nb)) / ub));
-  }
-  return count;
-}
-
 // Writes triangle p grown as above: its polygon's points at dst (room for 6
 // vertices), numbered from `base`, and the fan's triangles (0, i, i + 1) at
 // idx (room for 12 indices). `side` is a VertexSide, w a curve's weight (0
-// for interior triangles). Returns the number of points (0 when the triangle
-// has no width).
-std::size_t emit(const std::array<Vec2, 3>& p, const Bary& g, int side, float w, std::uint32_t base, Vertex* dst,
-                 std::uint32_t* idx) {
-  std::array<Corner, 6> poly;
-  const int count = grown_polygon(p, poly);
-  if (count < 3) return 0;
-  const std::size_t n = static_cast<std::size_t>(count);
-  for (std::size_t i = 0; i < n; ++i) {
-    const Corner& c = poly[i];
-    const auto k = static_cast<std::size_t>(c.vertex);
-    Vertex v;
-    v.pos[0] = static_cast<float>(p[k].x);
-    v.pos[1] = static_cast<float>(p[k].y);
-    v.pos[2] = static_cast<float>(c.ox);
-    v.pos[3] = static_cast<float>(c.oy);
-    v.info[0] = static_cast<float>(c.vertex + kSideStride * side);
+// for interior triangles). Returns the number of points (0 for a flat
+// triangle, which covers nothing).
+std::size_t emit(const std::array<Vec2, 3>& p, int side, float w, std::uint32_t base, Vertex* dst, std::uint32_t* idx) {
+  const Vec2 e[3] = {p[1] - p[0], p[2] - p[1], p[0] - p[2]};  // edge k: p[k] -> p[k + 1]
+  const double area2 = cross(e[0], p[2] - p[0]);
+  const double len2[3] = {dot(e[0], e[0]), dot(e[1], e[1]), dot(e[2], e[2])};
+  // A flat triangle covers nothing, and its barycentrics would be noise.
+  if (!(std::isfinite(area2) && std::fabs(area2) > 1e-12 * (len2[0] + len2[2]))) return 0;
+  // Gradients of the affine barycentrics (tau1, tau2): p[1]'s weight and
+  // p[2]'s (p[0] -> (0, 0), p[1] -> (1, 0), p[2] -> (0, 1)).
+  const double inv = 1.0 / area2;
+  const Vec2 grad1 = Vec2{-e[2].y, e[2].x} * inv;
+  const Vec2 grad2 = Vec2{-e[0].y, e[0].x} * inv;
+  const double orientation = area2 > 0 ? 1.0 : -1.0;
+  Vec2 along[3], normal[3];  // unit direction of edge k and its outward normal
+  for (int k = 0; k < 3; ++k) {
+    along[k] = e[k] * (1.0 / std::sqrt(len2[k]));
+    normal[k] = Vec2{along[k].y, -along[k].x} * orientation;
+  }
+  std::size_t n = 0;
+  auto put = [&](int k, Vec2 offset) {
+    Vertex& v = dst[n++];
+    v.pos[0] = static_cast<float>(p[static_cast<std::size_t>(k)].x);
+    v.pos[1] = static_cast<float>(p[static_cast<std::size_t>(k)].y);
+    v.pos[2] = static_cast<float>(offset.x);
+    v.pos[3] = static_cast<float>(offset.y);
+    v.info[0] = static_cast<float>(k + kSideStride * side);
     v.info[1] = w;
-    v.info[2] = static_cast<float>(g.grad1.x * c.ox + g.grad1.y * c.oy);
-    v.info[3] = static_cast<float>(g.grad2.x * c.ox + g.grad2.y * c.oy);
-    dst[i] = v;
+    v.info[2] = static_cast<float>(grad1.x * offset.x + grad1.y * offset.y);
+    v.info[3] = static_cast<float>(grad2.x * offset.x + grad2.y * offset.y);
+  };
+  for (int k = 0; k < 3; ++k) {
+    const int arriving = (k + 2) % 3;
+    const Vec2 na = normal[arriving], nb = normal[k];  // of the edges arriving at and leaving p[k]
+    const double denom = 1.0 + dot(na, nb);
+    if (denom > tolerance::kMinMiterDenominator) {
+      put(k, (na + nb) * (1.0 / denom));  // the miter
+      continue;
+    }
+    // Bevel: the points of both moved edges at distance 1 from p[k] along
+    // the outward bisector u = (ea + eb) / |ea + eb| of the unit vectors ea
+    // (along the arriving edge, onward) and eb (along the leaving edge,
+    // backward). With c = ea . eb = -na . nb, |ea + eb| = sqrt(2 (1 + c)) and
+    // u . ea = u . eb = (1 + c) / |ea + eb|; a point na + ea s on the moved
+    // arriving edge is at distance 1 along u when s = (|ea + eb| - eb . na) /
+    // (1 + c), and likewise on the leaving edge. 1 + c = 2 - denom >= 1.875 here.
+    const Vec2 ea = along[arriving], eb = along[k] * -1.0;
+    const double one_plus_c = 2.0 - denom;
+    const double bisector_length = std::sqrt(2.0 * one_plus_c);
+    const double inv_one_plus_c = 1.0 / one_plus_c;
+    put(k, na + ea * ((bisector_length - dot(eb, na)) * inv_one_plus_c));
+    put(k, nb + eb * ((bisector_length - dot(ea, nb)) * inv_one_plus_c));
   }
   for (std::uint32_t t = 0; t + 2 < n; ++t) {
     idx[3 * t] = base;
@@ -143,9 +107,7 @@ void pack_mesh(const Mesh& mesh, PackedMesh& out) {
   const auto base = static_cast<std::uint32_t>(out.vertices.size());
   std::size_t nv = 0, ni = 0;
   auto add = [&](const std::array<Vec2, 3>& p, int side, float w) {
-    const Bary g = bary_of(p[0], p[1], p[2]);
-    if (!g.ok) return;
-    const std::size_t n = emit(p, g, side, w, base + static_cast<std::uint32_t>(nv), vertices + nv, indices + ni);
+    const std::size_t n = emit(p, side, w, base + static_cast<std::uint32_t>(nv), vertices + nv, indices + ni);
     nv += n;
     ni += n >= 3 ? 3 * (n - 2) : 0;
   };
