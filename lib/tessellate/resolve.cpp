@@ -22,7 +22,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <map>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -134,6 +133,9 @@ bool pieces_conflict(const Edge& e, const Edge& f) {
 
 std::vector<Edge> edges_of(const std::vector<Ring>& rings) {
   std::vector<Edge> edges;
+  std::size_t count = 0;
+  for (const Ring& ring : rings) count += ring.size();
+  edges.reserve(count);
   for (const Ring& ring : rings) {
     for (std::size_t i = 0; i < ring.size(); ++i) {
       Edge e;
@@ -156,7 +158,12 @@ std::vector<Edge> edges_of(const std::vector<Ring>& rings) {
 // edge become that end point, and to each other the first of them (the merge
 // distance is 1e-9 font units or 1e-12 of the outline's size, far above the
 // rounding error of a crossing of lines that are not nearly parallel).
-void snap_cuts(const std::vector<Edge>& edges, std::vector<std::vector<Vec2>>& cuts) {
+struct Cut {
+  std::uint32_t edge;
+  Vec2 p;
+};
+
+void snap_cuts(const std::vector<Edge>& edges, std::vector<Cut>& cuts) {
   std::vector<Vec2> vertices;
   Box all;
   for (const Edge& e : edges) {
@@ -189,25 +196,25 @@ void snap_cuts(const std::vector<Edge>& edges, std::vector<std::vector<Vec2>>& c
   // discovery), then the remaining cut points onto each other.
   struct Loose {
     Vec2 p;
-    std::size_t edge, slot;
+    std::size_t cut;
   };
   std::vector<Loose> loose;
-  for (std::size_t i = 0; i < cuts.size(); ++i) {
-    for (std::size_t k = 0; k < cuts[i].size(); ++k) {
-      Vec2 v;
-      if (nearest(vertices, cuts[i][k], v)) {
-        cuts[i][k] = v;
-      } else {
-        loose.push_back({cuts[i][k], i, k});
-      }
+  for (std::size_t k = 0; k < cuts.size(); ++k) {
+    Vec2 v;
+    if (nearest(vertices, cuts[k].p, v)) {
+      cuts[k].p = v;
+    } else {
+      loose.push_back({cuts[k].p, k});
     }
   }
+  // (Only equal points compare equal here, and they snap alike: the result
+  // does not depend on the order of the cuts.)
   std::sort(loose.begin(), loose.end(), [&](const Loose& a, const Loose& b) { return by_x(a.p, b.p); });
   std::vector<Vec2> reps;  // sorted by x because `loose` is
   for (const Loose& l : loose) {
     Vec2 r;
     if (nearest(reps, l.p, r)) {
-      cuts[l.edge][l.slot] = r;
+      cuts[l.cut].p = r;
     } else {
       reps.push_back(l.p);
     }
@@ -219,13 +226,16 @@ void snap_cuts(const std::vector<Edge>& edges, std::vector<std::vector<Vec2>>& c
 // and, very rarely, create a new conflict; a few rounds settle that (bounded).
 void split_lines(std::vector<Edge>& edges) {
   constexpr int kRounds = 4;
+  // Scratch reused across rounds and calls: the cut points of all edges in
+  // one list (edge, point), in the order found.
+  thread_local std::vector<Cut> cuts;
+  thread_local std::vector<Vec2> along;
+  thread_local std::vector<Edge> next;
   for (int round = 0; round < kRounds; ++round) {
-    std::vector<std::vector<Vec2>> cuts(edges.size());
-    bool any = false;
+    cuts.clear();
     auto cut = [&](std::uint32_t i, Vec2 p) {
       if (p == edges[i].a || p == edges[i].b) return;
-      cuts[i].push_back(canonical(p));
-      any = true;
+      cuts.push_back({i, canonical(p)});
     };
     for_each_close_pair(edges, [&](std::uint32_t i, std::uint32_t j) {
       const Edge& e = edges[i];
@@ -251,23 +261,27 @@ void split_lines(std::vector<Edge>& edges) {
       if (o4 == 0 && point_on_segment(f.a, f.b, e.b)) cut(j, e.b);
       return false;
     });
-    if (!any) return;
+    if (cuts.empty()) return;
     snap_cuts(edges, cuts);
-    std::vector<Edge> next;
-    next.reserve(edges.size() + 16);
+    // Each edge's cuts together, in the order found.
+    std::stable_sort(cuts.begin(), cuts.end(), [](const Cut& a, const Cut& b) { return a.edge < b.edge; });
+    next.clear();
+    next.reserve(edges.size() + cuts.size());
+    std::size_t k = 0;
     for (std::size_t i = 0; i < edges.size(); ++i) {
-      if (cuts[i].empty()) {
+      if (k == cuts.size() || cuts[k].edge != i) {
         next.push_back(edges[i]);
         continue;
       }
       const Edge& e = edges[i];
       const Vec2 dir = e.b - e.a;
-      std::vector<Vec2>& c = cuts[i];
-      std::sort(c.begin(), c.end(), [&](Vec2 p, Vec2 q) { return dot(p - e.a, dir) < dot(q - e.a, dir); });
-      c.erase(std::unique(c.begin(), c.end()), c.end());
+      along.clear();
+      for (; k < cuts.size() && cuts[k].edge == i; ++k) along.push_back(cuts[k].p);
+      std::sort(along.begin(), along.end(), [&](Vec2 p, Vec2 q) { return dot(p - e.a, dir) < dot(q - e.a, dir); });
+      along.erase(std::unique(along.begin(), along.end()), along.end());
       Vec2 from = e.a;
-      c.push_back(e.b);
-      for (const Vec2 p : c) {
+      along.push_back(e.b);
+      for (const Vec2 p : along) {
         if (p == from) continue;
         Edge piece = e;
         piece.a = from;
@@ -285,8 +299,16 @@ void split_lines(std::vector<Edge>& edges) {
 // whose count cancels (a contour running back over another) disappear.
 std::vector<Edge> merge_coincident(const std::vector<Edge>& edges) {
   using Key = std::tuple<double, double, double, double, bool, double, double, double>;
-  std::map<Key, std::size_t> index;
-  std::vector<Edge> merged;
+  // Each edge directed from its smaller end, with its key; sorted by key
+  // (stable, so the first of a group is its first in the input).
+  struct Keyed {
+    Key key;
+    std::uint32_t index;
+  };
+  std::vector<Edge> directed;
+  directed.reserve(edges.size());
+  std::vector<Keyed> keyed;
+  keyed.reserve(edges.size());
   for (const Edge& e0 : edges) {
     Edge e = e0;
     if (std::make_pair(e.b.x, e.b.y) < std::make_pair(e.a.x, e.a.y)) {
@@ -294,17 +316,27 @@ std::vector<Edge> merge_coincident(const std::vector<Edge>& edges) {
       e.count = -e.count;
     }
     if (e.a == e.b) continue;
-    const Key key{e.a.x, e.a.y, e.b.x, e.b.y, e.conic, e.conic ? e.control.x : 0.0, e.conic ? e.control.y : 0.0,
-                  e.conic ? e.weight : 0.0};
-    const auto [it, inserted] = index.try_emplace(key, merged.size());
-    if (inserted) {
-      merged.push_back(e);
-    } else {
-      merged[it->second].count += e.count;
-    }
+    keyed.push_back({Key{e.a.x, e.a.y, e.b.x, e.b.y, e.conic, e.conic ? e.control.x : 0.0,
+                         e.conic ? e.control.y : 0.0, e.conic ? e.weight : 0.0},
+                     static_cast<std::uint32_t>(directed.size())});
+    directed.push_back(e);
   }
-  merged.erase(std::remove_if(merged.begin(), merged.end(), [](const Edge& e) { return e.count == 0; }),
-               merged.end());
+  std::stable_sort(keyed.begin(), keyed.end(), [](const Keyed& a, const Keyed& b) { return a.key < b.key; });
+  // One edge per group of equal keys, with the group's total count, in the
+  // order of the groups' first edges.
+  std::vector<std::uint32_t> firsts;
+  for (std::size_t g = 0; g < keyed.size();) {
+    Edge& first = directed[keyed[g].index];
+    std::size_t h = g + 1;
+    for (; h < keyed.size() && !(keyed[g].key < keyed[h].key); ++h) first.count += directed[keyed[h].index].count;
+    firsts.push_back(keyed[g].index);
+    g = h;
+  }
+  std::sort(firsts.begin(), firsts.end());
+  std::vector<Edge> merged;
+  merged.reserve(firsts.size());
+  for (const std::uint32_t i : firsts)
+    if (directed[i].count != 0) merged.push_back(directed[i]);
   return merged;
 }
 
@@ -453,8 +485,10 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings) {
   // conflict, so the loop ends after at most kMaxHullSubdivisionDepth + 2
   // rounds with no conic in conflict.
   constexpr int kMaxRounds = tolerance::kMaxHullSubdivisionDepth + 2;
+  std::vector<char> marked;
+  std::vector<Edge> next;
   for (int round = 0; round <= kMaxRounds; ++round) {
-    std::vector<char> marked(edges.size(), 0);
+    marked.assign(edges.size(), 0);
     bool any = false;
     for_each_close_pair(edges, [&](std::uint32_t i, std::uint32_t j) {
       const Edge& e = edges[i];
@@ -468,7 +502,7 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings) {
     });
     if (!any && round > 0) break;
     if (round == kMaxRounds) break;
-    std::vector<Edge> next;
+    next.clear();
     next.reserve(edges.size() + 16);
     for (std::size_t i = 0; i < edges.size(); ++i) {
       const Edge& e = edges[i];
@@ -512,18 +546,36 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings) {
     kept.push_back(e);
   }
 
-  // Outgoing kept edges per vertex.
-  std::map<std::pair<double, double>, std::vector<std::uint32_t>> outgoing;
-  for (std::uint32_t i = 0; i < kept.size(); ++i) outgoing[{kept[i].a.x, kept[i].a.y}].push_back(i);
+  // Outgoing kept edges per vertex: kept edge indices sorted by start point
+  // (stable: each vertex's in increasing index order).
+  std::vector<std::uint32_t> by_start(kept.size());
+  for (std::uint32_t i = 0; i < kept.size(); ++i) by_start[i] = i;
+  auto start_of = [&](std::uint32_t i) { return std::make_pair(kept[i].a.x, kept[i].a.y); };
+  std::stable_sort(by_start.begin(), by_start.end(),
+                   [&](std::uint32_t x, std::uint32_t y) { return start_of(x) < start_of(y); });
+  struct Outs {
+    const std::uint32_t* first;
+    const std::uint32_t* last;
+    const std::uint32_t* begin() const { return first; }
+    const std::uint32_t* end() const { return last; }
+    std::size_t size() const { return static_cast<std::size_t>(last - first); }
+  };
+  auto outgoing = [&](Vec2 v) {
+    const auto key = std::make_pair(v.x, v.y);
+    const auto lo = std::lower_bound(by_start.begin(), by_start.end(), key,
+                                     [&](std::uint32_t i, const std::pair<double, double>& k) { return start_of(i) < k; });
+    auto hi = lo;
+    while (hi != by_start.end() && !(key < start_of(*hi))) ++hi;
+    return Outs{by_start.data() + (lo - by_start.begin()), by_start.data() + (hi - by_start.begin())};
+  };
 
   // At v, coming along u -> v: the next edge is the first outgoing one
   // clockwise from the direction back to u. Fill-on-left edges alternate in
   // and out around v, so this pairs each incoming edge with one outgoing edge.
   auto next_edge = [&](const Edge& in) -> std::uint32_t {
     const Vec2 v = in.b;
-    const std::vector<std::uint32_t>& outs = outgoing[{v.x, v.y}];
     std::uint32_t best_before = UINT32_MAX, best_any = UINT32_MAX;
-    for (const std::uint32_t o : outs) {
+    for (const std::uint32_t o : outgoing(v)) {
       const Vec2 p = kept[o].b;
       if (best_any == UINT32_MAX || angle_less(v, kept[best_any].b, p)) best_any = o;
       if (angle_less(v, p, in.a) && (best_before == UINT32_MAX || angle_less(v, kept[best_before].b, p))) {
@@ -559,7 +611,7 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings) {
     for (std::size_t i = 0; i < ring.size(); ++i) {
       const std::size_t prev = (i + ring.size() - 1) % ring.size();
       if (ring.size() > 3 && !ring[i].conic && !ring[prev].conic &&
-          outgoing[{ring[i].a.x, ring[i].a.y}].size() == 1) {
+          outgoing(ring[i].a).size() == 1) {
         const Vec2 a = ring[prev].a, b = ring[i].a, c = ring_end(ring, i);
         if (orient2d(a, b, c) == 0 && dot(b - a, c - b) > 0.0) continue;
       }
