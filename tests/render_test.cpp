@@ -22,6 +22,7 @@
 #include "support/coverage.hpp"
 #include "support/fonts.hpp"
 #include "support/gpu.hpp"
+#include "support/union_coverage.hpp"
 
 namespace curvetext {
 namespace {
@@ -314,6 +315,49 @@ test::Coverage draw_circle(double radius, CurveMode mode, double cx, double cy, 
   options.curve_mode = mode;
   g.renderer.draw(batch, Placement{1.0, cx, cy}, options);
   return test::coverage_from_black_on_white(g.renderer.read_pixels());
+}
+
+// Full antialiasing grows every triangle by a pixel's reach (miters, and
+// bevels at corners sharper than about 29 degrees) so that every pixel its
+// area touches gets a fragment. Needles, slivers and sharp wedges at
+// fractional positions, in both orientations, drawn at three scales, must
+// then match exact area coverage everywhere, tips included: a pixel the
+// growth missed would keep its whole share of coverage.
+TEST(FullAntialiasingGrowth, SharpTrianglesGetEveryPixelTheyTouch) {
+  Outline shapes;
+  auto triangle = [&](Vec2 a, Vec2 b, Vec2 c) {
+    shapes.move_to(a);
+    shapes.line_to(b);
+    shapes.line_to(c);
+    shapes.close();
+  };
+  triangle({2.3, 2.6}, {40.7, 4.1}, {2.9, 3.4});     // a needle of about 1 degree
+  triangle({3.1, 9.2}, {41.4, 13.7}, {3.6, 12.8});   // about 5 degrees
+  triangle({44.2, 2.3}, {80.6, 12.9}, {47.5, 14.1}); // about 22 degrees, clockwise below
+  triangle({6.2, 18.4}, {44.9, 18.55}, {6.2, 18.7}); // a sliver 0.3 px high
+  triangle({50.3, 18.2}, {78.4, 18.2}, {50.3, 38.9}); // a right triangle
+  triangle({4.4, 24.1}, {12.5, 38.6}, {20.6, 24.3}); // an acute isosceles one
+  triangle({24.7, 38.3}, {45.1, 36.2}, {26.0, 23.4}); // a clockwise one
+  const Mesh mesh = build_mesh(shapes);
+  for (double scale : {1.0, 0.37, 2.6}) {
+    Gpu& g = gpu();
+    DrawBatch batch = DrawBatch::from_mesh(mesh);
+    const int width = static_cast<int>(std::ceil(84 * scale)) + 4, height = static_cast<int>(std::ceil(42 * scale)) + 4;
+    const Placement placement{scale, 1.3, height - 1.7};
+    g.renderer.begin(width, height, Color{1, 1, 1, 1});
+    g.renderer.draw(batch, placement, DrawOptions(Color{0, 0, 0, 1}, AntiAliasing::Full));
+    const test::Coverage got = test::coverage_from_black_on_white(g.renderer.read_pixels());
+    const test::Coverage want = test::union_coverage(test::place_outline(shapes, placement), width, height);
+    const test::CoverageStats s = test::compare(got, want);
+    std::printf("sharp triangles at scale %.2f: max %.4f, edge %.4f, ink %.4f\n", scale, s.max_abs, s.edge_mean_abs,
+                s.ink_ratio);
+    // 8-bit steps of the coverage buffer where a few triangles add up, and
+    // the output's own rounding: a few 1/255.
+    const double limit = 3.0 / 255.0;
+    if (s.max_abs > limit) test::write_comparison("sharp-triangles-" + std::to_string(scale), got, want);
+    EXPECT_LE(s.max_abs, limit) << "scale " << scale;
+    EXPECT_NEAR(s.ink_ratio, 1.0, 0.005) << "scale " << scale;
+  }
 }
 
 TEST(Circle, ExactModeWithinAnEighthPixelAtRadius400) {
