@@ -4,8 +4,8 @@
 // lib/gpu/vertex_format.hpp.
 precision highp float;
 
-attribute vec4 a_pos;   // (x, y, ox, oy): outline units, growth per unit of dilation
-attribute vec4 a_info;  // (corner + 3 side, w, dtau1, dtau2)
+attribute vec4 a_pos;   // (x, y, ax, ay): the corner, the edge to the next corner (outline units)
+attribute vec4 a_info;  // (alpha, beta, code, w): the edge to the previous corner in a's frame, what the point is, the weight
 
 uniform mat3 u_transform;     // outline units -> framebuffer pixels, y down (projective)
 uniform vec2 u_viewport;      // framebuffer size in pixels
@@ -26,16 +26,52 @@ void main() {
   float det = abs(jac[0].x * jac[1].y - jac[1].x * jac[0].y);
   float hi = sqrt(0.5 * (ss + sqrt(max(ss * ss - 4.0 * det * det, 0.0))));
   float t = u_fringe_px > 0.0 ? u_fringe_px * hi / max(det, 1e-30) : 0.0;
-  vec2 p = a_pos.xy + a_pos.zw * t;
-  // Decode (corner, side); code is a small exact integer, so +0.5 keeps the
-  // division off the rounding boundaries.
-  float side = floor((a_info.x + 0.5) / 3.0);
-  float corner = a_info.x - 3.0 * side;
+  // Decode code = corner + 3 side + 9 point (a small whole number: +0.5
+  // keeps floor and mod off the rounding boundaries).
+  float code = a_info.z + 0.5;
+  float point = floor(code / 9.0);
+  code = mod(code, 9.0);
+  float side = floor(code / 3.0);
+  float corner = floor(code - 3.0 * side);
+  vec2 a = a_pos.zw;  // to the next corner
+  vec2 b = a_info.x * a + a_info.y * vec2(-a.y, a.x);  // to the previous corner
+  float area2 = a_info.y * dot(a, a);  // doubled signed area of the triangle (p0, p1, p2)
+  float ccw = area2 > 0.0 ? 1.0 : -1.0;
+  vec2 offset = vec2(0.0);
+  vec2 dtau = vec2(0.0);
+  if (t > 0.0) {
+    // Each edge moves out by t: outward normals of the arriving and leaving
+    // edges, meeting at the miter, or at a bevel (two points at distance t
+    // along the corner's bisector, one on each moved edge; lib/gpu/pack.cpp).
+    vec2 e_in = normalize(-b);  // along the arriving edge, onward
+    vec2 e_out = normalize(a);  // along the leaving edge
+    vec2 n_in = vec2(e_in.y, -e_in.x) * ccw;
+    vec2 n_out = vec2(e_out.y, -e_out.x) * ccw;
+    float denom = 1.0 + dot(n_in, n_out);
+    if (point < 0.5) {
+      offset = (n_in + n_out) / denom;
+    } else {
+      // With c the cosine of the corner's angle (1 + c = 2 - denom) the
+      // unit vectors along the edges away from the corner sum to a bisector
+      // of length sqrt(2 (1 + c)), and the point on a moved edge at distance 1
+      // along it is as below (pack.cpp's file comment).
+      float one_plus_c = 2.0 - denom;
+      float bisector = sqrt(2.0 * one_plus_c);
+      offset = point < 1.5 ? n_in + e_in * ((bisector + dot(e_out, n_in)) / one_plus_c)
+                           : n_out - e_out * ((bisector - dot(e_in, n_out)) / one_plus_c);
+    }
+    // The barycentrics' gradients from the triangle's edges p1 - p0 and
+    // p2 - p0, written with this corner's two edges.
+    vec2 e1 = corner < 0.5 ? a : (corner < 1.5 ? -b : b - a);
+    vec2 e2 = corner < 0.5 ? b : (corner < 1.5 ? a - b : -a);
+    dtau = vec2(dot(vec2(e2.y, -e2.x), offset), dot(vec2(-e1.y, e1.x), offset)) / area2;
+  }
+  vec2 p = a_pos.xy + offset * t;
   vec2 tau = vec2(corner > 0.5 && corner < 1.5 ? 1.0 : 0.0, corner > 1.5 ? 1.0 : 0.0);
   float s = side < 0.5 ? 0.0 : (side < 1.5 ? 1.0 : -1.0);
   // The barycentrics are affine: their values at the moved vertex.
-  v_coef = vec4(tau + a_info.zw * t, s, 0.0);
-  v_info = vec4(side < 0.5 ? 0.0 : 2.0, a_info.y, 0.0, 0.0);
+  v_coef = vec4(tau + dtau * t, s, 0.0);
+  v_info = vec4(side < 0.5 ? 0.0 : 2.0, a_info.w, 0.0, 0.0);
   vec3 q = u_transform * vec3(p, 1.0);
   // Homogeneous clip coordinates: the GPU divides by q.z after clipping and
   // interpolates the varyings perspective-correctly (affine in outline units).

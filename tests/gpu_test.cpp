@@ -3,6 +3,7 @@
 // Meshes are built by hand so these tests do not depend on the tessellator.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -450,93 +451,92 @@ TEST(Renderer, SizeAboveGlMaximumIsInvalidArgument) {
   EXPECT_NEAR(img.pixel(3, 3)[3], 128, 1);
 }
 
-// Packing grows every triangle (offsets per unit of the dilation t) so that
-// its grown polygon holds every point within t of it: the shader computes
-// exact areas only in the pixels it gets fragments for. At t = 0 the
-// vertices are the triangle's own; the miter limit keeps sharp corners from
-// reaching far (a bevel there).
-TEST(Packing, GrownTrianglesHoldEveryPointWithinTheGrowth) {
+// Packing writes one point per corner of each triangle, two at a corner
+// sharp enough for a bevel (the vertex shader grows them; the growth itself
+// is checked end to end by render_test's FullAntialiasingGrowth): each point
+// starts at its corner and carries the edge to the next corner, the edge to
+// the previous one in that edge's frame (whose second coordinate times |a|^2
+// is the doubled signed area), the corner, side and point kind in its code,
+// and the curve's weight; the fan's indices are numbered past what `out`
+// holds.
+TEST(Packing, CornersEdgesAndCodes) {
   Mesh m;
-  // A right triangle (miters) and a needle of about 6 degrees at (10, 20) (a bevel there).
-  m.points = {{0, 0}, {4, 0}, {0, 4}, {10, 20}, {40, 20}, {40, 23}};
+  // A right triangle (three miters), a needle of about 6 degrees at (10, 20)
+  // (its sharp corner bevelled: two points), clockwise.
+  m.points = {{0, 0}, {4, 0}, {0, 4}, {10, 20}, {40, 23}, {40, 20}};
   m.triangles = {{0, 1, 2}, {3, 4, 5}};
+  m.curves = {CurvedTriangle{0, 2, 1, 0.7, false}};
   const gpu::PackedMesh packed = gpu::pack_mesh(m);
-  // 3 points for the first; the needle's sharp corner adds one polygon point
-  // (4 points, 2 fan triangles).
-  ASSERT_EQ(packed.vertices.size(), 3u + 4u);
-  ASSERT_EQ(packed.indices.size(), 3u * (1 + 2));
-  for (std::uint32_t i : packed.indices) ASSERT_LT(i, packed.vertices.size());
-  const double t = 1.0;
-  auto grown = [&](std::uint32_t i) {
-    const auto& v = packed.vertices[i];
-    return Vec2{v.pos[0] + t * v.pos[2], v.pos[1] + t * v.pos[3]};
+  ASSERT_EQ(packed.vertices.size(), 3u + 4u + 3u);
+  ASSERT_EQ(packed.indices.size(), 3u * (1 + 2 + 1));
+  struct Expected {
+    std::array<std::uint32_t, 3> corners;
+    int side;
+    float weight;
+    std::size_t first;
   };
-  // Index triangles [begin, end) of the fan.
-  auto in_fan = [&](std::size_t begin, std::size_t end, Vec2 x) {
-    for (std::size_t i = begin; i < end; i += 3) {
-      const Vec2 a = grown(packed.indices[i]), b = grown(packed.indices[i + 1]), c = grown(packed.indices[i + 2]);
-      const double d1 = cross(b - a, x - a), d2 = cross(c - b, x - b), d3 = cross(a - c, x - c);
-      if ((d1 >= -1e-9 && d2 >= -1e-9 && d3 >= -1e-9) || (d1 <= 1e-9 && d2 <= 1e-9 && d3 <= 1e-9)) return true;
-    }
-    return false;
-  };
-  for (std::size_t tri = 0; tri < 2; ++tri) {
-    const std::size_t vbegin = tri == 0 ? 0 : 3, vend = tri == 0 ? 3 : 7;
-    const std::size_t begin = tri == 0 ? 0 : 3, end = tri == 0 ? 3 : 9;
-    for (std::size_t i = vbegin; i < vend; ++i) {
+  const Expected expected[] = {{m.triangles[0], gpu::kInterior, 0.0f, 0},
+                               {m.triangles[1], gpu::kInterior, 0.0f, 3},
+                               {{0, 2, 1}, gpu::kConcaveCurve, 0.7f, 7}};
+  for (const Expected& t : expected) {
+    const std::size_t count = t.first == 3 ? 4 : 3;
+    int previous_corner = -1;
+    for (std::size_t i = t.first; i < t.first + count; ++i) {
       const gpu::Vertex& v = packed.vertices[i];
-      // The code names the corner the point moves from (interior: side 0).
-      const int corner = static_cast<int>(v.info[0]);
-      ASSERT_TRUE(corner >= 0 && corner < 3 && v.info[0] == static_cast<float>(corner)) << "vertex " << i;
-      const Vec2 own = m.points[m.triangles[tri][static_cast<std::size_t>(corner)]];
-      EXPECT_EQ(v.pos[0], static_cast<float>(own.x)) << "vertex " << i << " does not start at its corner";
-      EXPECT_EQ(v.pos[1], static_cast<float>(own.y)) << "vertex " << i << " does not start at its corner";
-      EXPECT_LE(length(Vec2{v.pos[2], v.pos[3]}), 4.0 + 1e-6) << "miter limit";
+      const int code = static_cast<int>(v.info[2]);
+      ASSERT_EQ(v.info[2], static_cast<float>(code)) << "vertex " << i;
+      const int point = code / gpu::kPointStride, side = code % gpu::kPointStride / gpu::kSideStride;
+      const int corner = code % gpu::kSideStride;
+      EXPECT_EQ(side, t.side) << "vertex " << i;
+      EXPECT_GE(corner, previous_corner) << "points in corner order";
+      // The needle's corner at (10, 20) (corner 0) is bevelled, the others not.
+      const bool bevel = t.first == 3 && corner == 0;
+      EXPECT_EQ(point, bevel ? (i == 3 ? gpu::kBevelArriving : gpu::kBevelLeaving) : gpu::kMiter) << "vertex " << i;
+      previous_corner = corner;
+      const Vec2 own = m.points[t.corners[static_cast<std::size_t>(corner)]];
+      const Vec2 next = m.points[t.corners[static_cast<std::size_t>((corner + 1) % 3)]];
+      const Vec2 prev = m.points[t.corners[static_cast<std::size_t>((corner + 2) % 3)]];
+      EXPECT_EQ(v.pos[0], static_cast<float>(own.x)) << "vertex " << i;
+      EXPECT_EQ(v.pos[1], static_cast<float>(own.y)) << "vertex " << i;
+      EXPECT_EQ(v.pos[2], static_cast<float>(next.x - own.x)) << "vertex " << i;
+      EXPECT_EQ(v.pos[3], static_cast<float>(next.y - own.y)) << "vertex " << i;
+      const Vec2 a = next - own, b = prev - own;
+      EXPECT_EQ(v.info[0], static_cast<float>(dot(a, b) / dot(a, a))) << "vertex " << i;
+      EXPECT_EQ(v.info[1], static_cast<float>(cross(a, b) / dot(a, a))) << "vertex " << i;
+      // Rebuilt as the shader does, b is the edge to the previous corner.
+      const Vec2 rebuilt = a * v.info[0] + Vec2{-a.y, a.x} * v.info[1];
+      EXPECT_NEAR(rebuilt.x, b.x, 1e-5 * length(b)) << "vertex " << i;
+      EXPECT_NEAR(rebuilt.y, b.y, 1e-5 * length(b)) << "vertex " << i;
+      EXPECT_EQ(v.info[3], t.weight) << "vertex " << i;
     }
-    // Points at distance 0.999 t from the triangle: around each vertex and
-    // along each edge's outside.
-    const auto& tv = m.triangles[tri];
-    for (int k = 0; k < 3; ++k) {
-      const Vec2 p = m.points[tv[static_cast<std::size_t>(k)]], q = m.points[tv[static_cast<std::size_t>((k + 1) % 3)]];
-      for (int j = 0; j < 64; ++j) {
-        const double angle = 2.0 * 3.141592653589793 * j / 64.0;
-        const Vec2 x = p + Vec2{std::cos(angle), std::sin(angle)} * (0.999 * t);
-        EXPECT_TRUE(in_fan(begin, end, x)) << "triangle " << tri << " vertex " << k << " angle " << angle;
-        const Vec2 mid = p + (q - p) * (j / 64.0);
-        const Vec2 side = Vec2{(q - p).y, -(q - p).x} / length(q - p);
-        for (double sign : {-1.0, 1.0}) EXPECT_TRUE(in_fan(begin, end, mid + side * (sign * 0.999 * t)));
-      }
-    }
+  }
+  // Fans: (first, first + 1, first + 2), (first, first + 2, first + 3), ...
+  const std::uint32_t fans[] = {0, 1, 2, 3, 4, 5, 3, 5, 6, 7, 8, 9};
+  for (std::size_t i = 0; i < packed.indices.size(); ++i) EXPECT_EQ(packed.indices[i], fans[i]) << i;
+
+  gpu::PackedMesh both = packed;
+  gpu::append_translated(packed, Vec2{100, 0}, both);
+  ASSERT_EQ(both.vertices.size(), 2 * packed.vertices.size());
+  ASSERT_EQ(both.indices.size(), 2 * packed.indices.size());
+  for (std::size_t i = 0; i < packed.indices.size(); ++i) {
+    EXPECT_EQ(both.indices[packed.indices.size() + i], packed.indices[i] + packed.vertices.size());
+    const gpu::Vertex& a = packed.vertices[packed.indices[i]];
+    const gpu::Vertex& b = both.vertices[both.indices[packed.indices.size() + i]];
+    EXPECT_EQ(b.pos[0], a.pos[0] + 100.0f);  // the corner moves; its edges do not
+    EXPECT_EQ(b.pos[2], a.pos[2]);
+    EXPECT_EQ(b.info[0], a.info[0]);
+    EXPECT_EQ(b.info[2], a.info[2]);
   }
 }
 
-// A curved triangle's vertices carry its side (convex +1 -> side 1, concave
-// -> side 2) and weight; the fan indices are numbered past what `out`
-// already holds when appending.
-TEST(Packing, CurveCodesAndAppendedIndices) {
+// A flat triangle covers nothing and packs to nothing.
+TEST(Packing, FlatTrianglesAreLeftOut) {
   Mesh m;
-  m.points = {{0, 0}, {5, 8}, {10, 0}};
-  m.curves = {CurvedTriangle{0, 1, 2, 0.7, true}, CurvedTriangle{2, 1, 0, 1.0, false}};
+  m.points = {{0, 0}, {4, 0}, {8, 0}, {2, 3}};
+  m.triangles = {{0, 1, 2}, {0, 1, 3}};
   const gpu::PackedMesh packed = gpu::pack_mesh(m);
-  ASSERT_EQ(packed.vertices.size(), 6u);
-  for (std::size_t i = 0; i < 6; ++i) {
-    const int side = i < 3 ? gpu::kConvexCurve : gpu::kConcaveCurve;
-    const float code = packed.vertices[i].info[0];
-    EXPECT_GE(code, static_cast<float>(gpu::kSideStride * side)) << i;
-    EXPECT_LT(code, static_cast<float>(gpu::kSideStride * (side + 1))) << i;
-    EXPECT_EQ(packed.vertices[i].info[1], i < 3 ? 0.7f : 1.0f) << i;
-  }
-  gpu::PackedMesh both = packed;
-  gpu::append_translated(packed, Vec2{100, 0}, both);
-  ASSERT_EQ(both.vertices.size(), 12u);
-  ASSERT_EQ(both.indices.size(), 2 * packed.indices.size());
-  for (std::size_t i = 0; i < packed.indices.size(); ++i) {
-    EXPECT_EQ(both.indices[packed.indices.size() + i], packed.indices[i] + 6u);
-    const gpu::Vertex& a = packed.vertices[packed.indices[i]];
-    const gpu::Vertex& b = both.vertices[both.indices[packed.indices.size() + i]];
-    EXPECT_EQ(b.pos[0], a.pos[0] + 100.0f);
-    EXPECT_EQ(b.info[0], a.info[0]);
-  }
+  EXPECT_EQ(packed.vertices.size(), 3u);
+  EXPECT_EQ(packed.indices.size(), 3u);
 }
 
 // The three ways a batch's indices reach the GPU (16-bit, 32-bit, expanded

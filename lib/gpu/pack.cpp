@@ -14,8 +14,9 @@
 // Growing a triangle moves each edge outward by the dilation t; at a vertex
 // the two moved edges meet at a miter, which at an acute corner runs far
 // past the vertex, so there the corner is cut square (a bevel: two vertices,
-// one more triangle) at the same reach along the corner's bisector.
-#include <algorithm>
+// one more triangle) at the same reach along the corner's bisector. Packing
+// only decides which corners are bevelled and writes each point's corner
+// and edges; shaders/curve.vert.glsl computes where the point moves.
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -24,87 +25,63 @@
 #include "curvetext/tolerances.hpp"
 #include "gpu/vertex_format.hpp"
 
-#if defined(__SSE2__)
-#include <emmintrin.h>  // part of every x86-64 CPU
-#endif
-
 namespace curvetext::gpu {
 namespace {
 
-// Writes triangle p grown as above: its polygon's points at dst (room for 6
-// vertices), numbered from `base`, and the fan's triangles (0, i, i + 1) at
-// idx (room for 12 indices). `side` is a VertexSide, w a curve's weight (0
-// for interior triangles). Returns the number of points (0 for a flat
-// triangle, which covers nothing).
+// Whether the corner between edges d_in (arriving) and d_out (leaving) is
+// bevelled: when the moved edges' unit normals have 1 + n_in . n_out =
+// 1 + d_in . d_out / (|d_in| |d_out|) <= tolerance::kMinMiterDenominator,
+// tested without square roots as d_in . d_out <= -m |d_in| |d_out| with
+// m = 1 - kMinMiterDenominator > 0, squared. The vertex shader moves the
+// points as told (a miter or a bevel is right either way near the limit).
+bool bevelled(Vec2 d_in, Vec2 d_out, double len2_in, double len2_out) {
+  constexpr double m = 1.0 - tolerance::kMinMiterDenominator;
+  const double d = dot(d_in, d_out);
+  return d <= 0.0 && d * d >= m * m * len2_in * len2_out;
+}
+
+// Writes triangle p's polygon: one point per corner, two at a bevelled one,
+// at dst (room for 6 vertices), numbered from `base`, and the fan's triangles
+// (0, i, i + 1) at idx (room for 12 indices; all four possible triangles are
+// written, the caller keeps the first n - 2). `side` is a VertexSide, w a
+// curve's weight (0 for interior triangles). Returns the number of points
+// (0 for a flat triangle, which covers nothing and whose barycentrics would
+// be noise).
 std::size_t emit(const std::array<Vec2, 3>& p, int side, float w, std::uint32_t base, Vertex* dst, std::uint32_t* idx) {
   const Vec2 e[3] = {p[1] - p[0], p[2] - p[1], p[0] - p[2]};  // edge k: p[k] -> p[k + 1]
   const double area2 = cross(e[0], p[2] - p[0]);
   const double len2[3] = {dot(e[0], e[0]), dot(e[1], e[1]), dot(e[2], e[2])};
-  // A flat triangle covers nothing, and its barycentrics would be noise.
   if (!(std::isfinite(area2) && std::fabs(area2) > 1e-12 * (len2[0] + len2[2]))) return 0;
-  // Gradients of the affine barycentrics (tau1, tau2): p[1]'s weight and
-  // p[2]'s (p[0] -> (0, 0), p[1] -> (1, 0), p[2] -> (0, 1)).
-  const double inv = 1.0 / area2;
-  const Vec2 grad1 = Vec2{-e[2].y, e[2].x} * inv;
-  const Vec2 grad2 = Vec2{-e[0].y, e[0].x} * inv;
-#if defined(__SSE2__)
-  const __m128d g1 = _mm_setr_pd(grad1.x, grad1.y), g2 = _mm_setr_pd(grad2.x, grad2.y);
-#endif
-  const double orientation = area2 > 0 ? 1.0 : -1.0;
-  Vec2 along[3], normal[3];  // unit direction of edge k and its outward normal
-  for (int k = 0; k < 3; ++k) {
-    along[k] = e[k] * (1.0 / std::sqrt(len2[k]));
-    normal[k] = Vec2{along[k].y, -along[k].x} * orientation;
-  }
-  std::size_t n = 0;
   const float code_base = static_cast<float>(kSideStride * side);
-  auto put = [&](int k, Vec2 offset) {
-    Vertex& v = dst[n++];
-#if defined(__SSE2__)
-    // Pairs of doubles to pairs of floats in one step each: the same
-    // products, sums and roundings as the scalar code below, fewer steps.
-    const __m128d o = _mm_setr_pd(offset.x, offset.y);
-    const __m128d position = _mm_setr_pd(p[static_cast<std::size_t>(k)].x, p[static_cast<std::size_t>(k)].y);
-    _mm_storeu_ps(v.pos, _mm_movelh_ps(_mm_cvtpd_ps(position), _mm_cvtpd_ps(o)));
-    const __m128d m1 = _mm_mul_pd(g1, o), m2 = _mm_mul_pd(g2, o);
-    const __m128d dtau = _mm_add_pd(_mm_unpacklo_pd(m1, m2), _mm_unpackhi_pd(m1, m2));
-    _mm_storeu_ps(v.info, _mm_movelh_ps(_mm_setr_ps(code_base + static_cast<float>(k), w, 0.0f, 0.0f), _mm_cvtpd_ps(dtau)));
-#else
-    v.pos[0] = static_cast<float>(p[static_cast<std::size_t>(k)].x);
-    v.pos[1] = static_cast<float>(p[static_cast<std::size_t>(k)].y);
-    v.pos[2] = static_cast<float>(offset.x);
-    v.pos[3] = static_cast<float>(offset.y);
-    v.info[0] = code_base + static_cast<float>(k);
-    v.info[1] = w;
-    v.info[2] = static_cast<float>(grad1.x * offset.x + grad1.y * offset.y);
-    v.info[3] = static_cast<float>(grad2.x * offset.x + grad2.y * offset.y);
-#endif
-  };
+  std::size_t n = 0;
 #pragma GCC unroll 3
   for (int k = 0; k < 3; ++k) {
     const int arriving = (k + 2) % 3;
-    const Vec2 na = normal[arriving], nb = normal[k];  // of the edges arriving at and leaving p[k]
-    const double denom = 1.0 + dot(na, nb);
-    if (denom > tolerance::kMinMiterDenominator) {
-      put(k, (na + nb) * (1.0 / denom));  // the miter
+    // The edge back to the previous corner in the frame of the edge to the
+    // next one: b = alpha a + beta perp(a). beta |a|^2 is the triangle's
+    // doubled signed area, taken here in double: rebuilt in float from two
+    // nearly parallel edges (a flat curved triangle) it would lose most of
+    // its digits to cancellation, and the barycentrics' gradients with it.
+    const Vec2 a = e[k], b = e[arriving] * -1.0;
+    const double inv_len2 = 1.0 / len2[k];
+    Vertex v;
+    v.pos[0] = static_cast<float>(p[static_cast<std::size_t>(k)].x);
+    v.pos[1] = static_cast<float>(p[static_cast<std::size_t>(k)].y);
+    v.pos[2] = static_cast<float>(a.x);
+    v.pos[3] = static_cast<float>(a.y);
+    v.info[0] = static_cast<float>(dot(a, b) * inv_len2);
+    v.info[1] = static_cast<float>(area2 * inv_len2);  // cross(a, b) = area2 at every corner
+    v.info[2] = code_base + static_cast<float>(k);
+    v.info[3] = w;
+    if (!bevelled(e[arriving], e[k], len2[arriving], len2[k])) {
+      dst[n++] = v;
       continue;
     }
-    // Bevel: the points of both moved edges at distance 1 from p[k] along
-    // the outward bisector u = (ea + eb) / |ea + eb| of the unit vectors ea
-    // (along the arriving edge, onward) and eb (along the leaving edge,
-    // backward). With c = ea . eb = -na . nb, |ea + eb| = sqrt(2 (1 + c)) and
-    // u . ea = u . eb = (1 + c) / |ea + eb|; a point na + ea s on the moved
-    // arriving edge is at distance 1 along u when s = (|ea + eb| - eb . na) /
-    // (1 + c), and likewise on the leaving edge. 1 + c = 2 - denom >= 1.875 here.
-    const Vec2 ea = along[arriving], eb = along[k] * -1.0;
-    const double one_plus_c = 2.0 - denom;
-    const double bisector_length = std::sqrt(2.0 * one_plus_c);
-    const double inv_one_plus_c = 1.0 / one_plus_c;
-    put(k, na + ea * ((bisector_length - dot(eb, na)) * inv_one_plus_c));
-    put(k, nb + eb * ((bisector_length - dot(ea, nb)) * inv_one_plus_c));
+    v.info[2] += static_cast<float>(kPointStride * kBevelArriving);
+    dst[n++] = v;
+    v.info[2] += static_cast<float>(kPointStride * (kBevelLeaving - kBevelArriving));
+    dst[n++] = v;
   }
-  // The fan (0, 1, 2), (0, 2, 3), ...: all four possible triangles are
-  // written (idx has room), the caller keeps the first n - 2.
   static constexpr std::uint32_t kFan[12] = {0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 5};
   for (int j = 0; j < 12; ++j) idx[j] = base + kFan[j];
   return n;

@@ -4,22 +4,32 @@
 //
 // Indexed triangles, 2 vec4 per vertex (32 bytes). Every interior triangle
 // and every curved triangle's control triangle of the mesh is one polygon of
-// 3 to 6 vertices (its grown outline, lib/gpu/pack.cpp), each vertex stored
-// once and the polygon drawn as a fan of indexed triangles:
-//   a_pos  = (x, y, ox, oy)   position in outline units of one of the
-//            triangle's own vertices; (ox, oy) the direction it moves per
-//            outline unit of dilation t (edges move out by t).
-//   a_info = (code, w, dtau1, dtau2): code = corner + 3 * side, with corner
-//            0, 1, 2 the triangle vertex the point moves from (affine
-//            barycentrics (tau1, tau2) there: (0, 0), (1, 0), (0, 1); for a
-//            curved triangle p0, control, p2) and side 0 interior, 1 a curve
-//            filled on its chord's side (convex, s = +1), 2 a curve filled
-//            beyond its arc (concave, s = -1); w the conic weight; (dtau1,
-//            dtau2) the barycentrics' change per unit of t along (ox, oy).
-// The vertex shader decodes code, computes pos = xy + (ox, oy) t and
-// tau = tau + dtau t with t = u_fringe_px / (pixels per outline unit): 0 for
-// the single-pass modes (the triangles as they are; a bevel's extra vertices
-// coincide), a pixel's reach for full antialiasing.
+// 3 to 6 vertices (its outline grown by the dilation t, lib/gpu/pack.cpp),
+// each vertex stored once and the polygon drawn as a fan of indexed triangles.
+// A vertex carries its corner of the triangle and that corner's two edges,
+// from which the vertex shader grows it:
+//   a_pos  = (x, y, ax, ay): position in outline units of the triangle's
+//            corner k; (ax, ay) = corner k + 1 - corner k (the edge leaving it).
+//   a_info = (alpha, beta, code, w): the edge back to the previous corner,
+//            b = corner k - 1 - corner k, in the frame of a: b = alpha a +
+//            beta perp(a) with perp(a) = (-ay, ax), so beta |a|^2 is the
+//            triangle's doubled signed area (taken in double: from two float
+//            edges of a flat triangle it would cancel to noise); w the conic
+//            weight (0 interior); code = k + 3 side + 9 point (a small whole
+//            number): k 0, 1, 2 the corner (p0, p1, p2 of the triangle; for a
+//            curved triangle p0, control, p2), with affine barycentrics
+//            (tau1, tau2) (0, 0), (1, 0), (0, 1) there; side 0 interior, 1 a
+//            curve filled on its chord's side (convex, s = +1), 2 filled beyond
+//            its arc (concave, s = -1); point 0 the corner's miter, 1 and 2 the
+//            points of a bevel on the arriving and on the leaving edge (a
+//            corner sharper than about 29 degrees, see pack.cpp).
+// The vertex shader decodes code, moves the point by t along its miter or
+// bevel direction (computed from the two edges) and its barycentrics with it,
+// with t = u_fringe_px / (pixels per outline unit): 0 for the single-pass
+// modes (the triangles as they are; a bevel's two points coincide), a pixel's
+// reach for full antialiasing. The edges are differences taken in double
+// before rounding, so they are exact to float precision wherever the block
+// sits; the positions are shared bit for bit by neighbouring triangles.
 //
 // Indices are 32-bit here; a batch uploads them as 16-bit when it has at most
 // 65,536 vertices (the GLES2 floor), else as 32-bit where the context has
@@ -44,9 +54,11 @@ struct Vertex {
 static_assert(sizeof(Vertex) == 32, "the shaders' attribute layout assumes 32-byte vertices");
 inline constexpr unsigned kVertexAttributes = 2;  // vec4 each
 
-// a_info.x: corner + kSideStride * side.
+// a_info.z = corner + kSideStride * side + kPointStride * point.
 enum VertexSide : int { kInterior = 0, kConvexCurve = 1, kConcaveCurve = 2 };
+enum VertexPoint : int { kMiter = 0, kBevelArriving = 1, kBevelLeaving = 2 };
 inline constexpr int kSideStride = 3;
+inline constexpr int kPointStride = 9;
 
 // Vertices and the triangles over them (3 indices each, counter-clockwise or
 // not: the shaders do not cull).
