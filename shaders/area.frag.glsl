@@ -153,6 +153,13 @@ void main() {
     if (L[i].z <= -0.5 * (abs(L[i].x) + abs(L[i].y))) discard;
   }
   float area;
+  // The triangle's smallest altitude in pixels is 1 / its largest barycentric
+  // gradient. Thinner than CURVETEXT_THIN_TRIANGLE_PX, it counts as empty: it
+  // lies within that distance of a line, so it holds at most sqrt(2) times
+  // that of any pixel, while the clipping and the inversion below lose their
+  // digits on it (tolerances.hpp, kThinTrianglePx).
+  float steepest = max(max(dot(g0, g0), dot(g1, g1)), dot(g2, g2));
+  if (steepest * CURVETEXT_THIN_TRIANGLE_PX * CURVETEXT_THIN_TRIANGLE_PX > 1.0) discard;
   if (v_info.x < 1.5) {
     area = convex_area(L, 3);
   } else {

@@ -105,9 +105,9 @@ void compile(const Shader& shader, GLenum type, const char* source, bool gles) {
   std::string text = preamble(type, gles);
   // Tolerances the shaders share with the library (tolerances.hpp), named
   // there only; preprocessor lines may precede #extension.
-  char defines[96];
-  std::snprintf(defines, sizeof defines, "#define CURVETEXT_PIXEL_REACH_PX %.7f\n",
-                static_cast<double>(tolerance::kFringeWidthPx));
+  char defines[160];
+  std::snprintf(defines, sizeof defines, "#define CURVETEXT_PIXEL_REACH_PX %.7f\n#define CURVETEXT_THIN_TRIANGLE_PX %.9f\n",
+                static_cast<double>(tolerance::kFringeWidthPx), static_cast<double>(tolerance::kThinTrianglePx));
   text += defines;
   // #extension must precede other statements but follow #version; on desktop
   // core the derivatives are built in and the directive only warns.

@@ -45,6 +45,16 @@ inline constexpr float kFringeWidthPx = 0.7072f;
 // than about 29 degrees), and the corner is bevelled instead. Dimensionless.
 inline constexpr double kMinMiterDenominator = 0.125;
 
+// Full antialiasing (shaders/area.frag.glsl) finds a triangle's part of a
+// pixel from its barycentrics' screen gradients, and a curved triangle's
+// control points by inverting them. For a triangle thinner than this (its
+// smallest altitude, in pixels) the gradients are huge and nearly parallel,
+// and both lose their digits (seen: 0.2-0.3 of coverage in empty pixels next
+// to a flat piece of a cubic), so it counts as empty instead: it lies within
+// this distance of a line, so it held at most sqrt(2) times this of any pixel
+// (0.0055). Also the shaders' CURVETEXT_THIN_TRIANGLE_PX.
+inline constexpr float kThinTrianglePx = 1.0f / 256.0f;
+
 // Border around a block's projected bounding box in the vbaa / msaa offscreen
 // pass, in pixels: the triangles' growth (kFringeWidthPx) plus the filter's ring
 // of one texel, rounded up.
