@@ -169,7 +169,10 @@ void main() {
     // tangents spread over the pixel bound it to within the slivers between
     // them (a circle of radius R with tangents 0.75 px apart: 0.018 / R of a
     // pixel per gap): at the arc's point nearest the pixel centre and 0.75 px
-    // of arc to either side (at t = 0 and 1 the tangents are the legs).
+    // of arc to either side, but at most a quarter of the arc's parameter
+    // range (an arc a few pixels long turns a lot over 0.75 px: with its legs,
+    // the tangents at t = 0 and 1, the tangents then split it in quarters;
+    // spread by arc length alone they left up to 0.2 of a pixel out at 32 px).
     // s = +1: filled on the chord's side; -1: beyond the arc, the control
     // triangle minus that region.
     // The control points in pixels from the centre: solving g1 . x = dtau1,
@@ -195,7 +198,7 @@ void main() {
       t = clamp(t - dot(b, db) / max(dot(db, db), 1e-30), 0.0, 1.0);
     }
     arc_at(p0, c, p2, w, t, b, db);
-    float dt = 0.75 / max(length(db), 1e-6);
+    float dt = min(0.75 / max(length(db), 1e-6), 0.25);
     L[3] = tangent_through(b, db, chord, m);
     L[4] = tangent_plane(p0, c, p2, w, max(t - dt, 0.0), m);
     L[5] = tangent_plane(p0, c, p2, w, min(t + dt, 1.0), m);
