@@ -179,31 +179,41 @@ void main() {
     // g2 . x = dtau2, whose inverse has the columns e1 and e2 (a unit step
     // of tau1 or tau2).
     float det = g1.x * g2.y - g1.y * g2.x;
-    vec2 e1 = vec2(g2.y, -g2.x) / det;
-    vec2 e2 = vec2(-g1.y, g1.x) / det;
-    vec2 p0 = -t1 * e1 - t2 * e2;
-    vec2 c = p0 + e1;
-    vec2 p2 = p0 + e2;
-    vec2 m = 0.5 * (p0 + p2);
-    float s = v_coef.z;
-    float w = v_info.y;
-    // The arc's point nearest the pixel centre: Gauss-Newton on
-    // dot(B(t), B'(t)) = 0 from the centre's projection on the chord.
-    vec2 chord = p2 - p0;
-    float t = clamp(-dot(p0, chord) / max(dot(chord, chord), 1e-30), 0.0, 1.0);
-    vec2 b;
-    vec2 db;
-    for (int i = 0; i < 3; ++i) {
+    // That inversion has the condition number k = longest edge / smallest
+    // altitude = steepest / |det| (steepest the largest squared gradient),
+    // and puts the control points off by about 1e-7 k^2 px (float rounding
+    // of tau, amplified twice). Where that exceeds the altitude, the whole
+    // region (within the altitude of a line) is the smaller error: it counts
+    // as empty (a long, flat piece of a curve at a small size).
+    if (1e-7 * steepest * steepest * sqrt(steepest) > det * det) {
+      area = 0.0;
+    } else {
+      vec2 e1 = vec2(g2.y, -g2.x) / det;
+      vec2 e2 = vec2(-g1.y, g1.x) / det;
+      vec2 p0 = -t1 * e1 - t2 * e2;
+      vec2 c = p0 + e1;
+      vec2 p2 = p0 + e2;
+      vec2 m = 0.5 * (p0 + p2);
+      float s = v_coef.z;
+      float w = v_info.y;
+      // The arc's point nearest the pixel centre: Gauss-Newton on
+      // dot(B(t), B'(t)) = 0 from the centre's projection on the chord.
+      vec2 chord = p2 - p0;
+      float t = clamp(-dot(p0, chord) / max(dot(chord, chord), 1e-30), 0.0, 1.0);
+      vec2 b;
+      vec2 db;
+      for (int i = 0; i < 3; ++i) {
+        arc_at(p0, c, p2, w, t, b, db);
+        t = clamp(t - dot(b, db) / max(dot(db, db), 1e-30), 0.0, 1.0);
+      }
       arc_at(p0, c, p2, w, t, b, db);
-      t = clamp(t - dot(b, db) / max(dot(db, db), 1e-30), 0.0, 1.0);
+      float dt = min(0.75 / max(length(db), 1e-6), 0.25);
+      L[3] = tangent_through(b, db, chord, m);
+      L[4] = tangent_plane(p0, c, p2, w, max(t - dt, 0.0), m);
+      L[5] = tangent_plane(p0, c, p2, w, min(t + dt, 1.0), m);
+      float inside = convex_area(L, 6);
+      area = s > 0.0 ? inside : convex_area(L, 3) - inside;
     }
-    arc_at(p0, c, p2, w, t, b, db);
-    float dt = min(0.75 / max(length(db), 1e-6), 0.25);
-    L[3] = tangent_through(b, db, chord, m);
-    L[4] = tangent_plane(p0, c, p2, w, max(t - dt, 0.0), m);
-    L[5] = tangent_plane(p0, c, p2, w, min(t + dt, 1.0), m);
-    float inside = convex_area(L, 6);
-    area = s > 0.0 ? inside : convex_area(L, 3) - inside;
   }
   area = clamp(area, 0.0, 1.0);
   if (area <= 0.0) discard;
