@@ -362,6 +362,42 @@ TEST(FullAntialiasingGrowth, SharpTrianglesGetEveryPixelTheyTouch) {
   }
 }
 
+// The largest pixel error of `mesh` drawn with full antialiasing against the
+// exact coverage of `regions`, over 8 x 8 sub-pixel phases at each scale, the
+// outline point `anchor` placed near pixel (margin, margin) of a width x 16
+// image (width from `span`, the mesh's extent in font units). Writes the
+// worst comparison over 3/255 as `name`.
+double worst_sliver_error(const Mesh& mesh, const Outline& regions, std::initializer_list<double> scales, Vec2 anchor,
+                          double span, const std::string& name) {
+  Gpu& g = gpu();
+  DrawBatch batch = DrawBatch::from_mesh(mesh);
+  double worst = 0.0;
+  for (double scale : scales) {
+    const int width = static_cast<int>(std::ceil(span * scale)) + 16, height = 16;
+    for (int i = 0; i < 8; ++i)
+      for (int j = 0; j < 8; ++j) {
+        const Placement placement{scale, 8.0 + i / 8.0 - anchor.x * scale, 8.0 + j / 8.0 + anchor.y * scale};
+        g.renderer.begin(width, height, Color{1, 1, 1, 1});
+        g.renderer.draw(batch, placement, DrawOptions(Color{0, 0, 0, 1}, AntiAliasing::Full));
+        const test::Coverage got = test::coverage_from_black_on_white(g.renderer.read_pixels());
+        const test::Coverage want = test::union_coverage(test::place_outline(regions, placement), width, height);
+        const double e = test::compare(got, want).max_abs;
+        if (e > 3.0 / 255.0 && e > worst) test::write_comparison(name, got, want);
+        worst = std::max(worst, e);
+      }
+  }
+  return worst;
+}
+
+Outline triangle_outline(const std::vector<Vec2>& p) {
+  Outline t;
+  t.move_to(p[0]);
+  t.line_to(p[1]);
+  t.line_to(p[2]);
+  t.close();
+  return t;
+}
+
 // Full antialiasing finds a triangle's part of each pixel from its
 // barycentrics' screen gradients (and a curved triangle's control points by
 // inverting them). For a triangle almost flat (here 6e-6 font units high and
@@ -379,41 +415,15 @@ TEST(FullAntialiasingSlivers, NearlyFlatTrianglesAddNoStrayCoverage) {
   Mesh curves;
   curves.points = points;
   curves.curves = {CurvedTriangle{0, 1, 2, 1.0, false}, CurvedTriangle{2, 1, 0, 1.0, true}};
-  Outline curve_regions;  // concave: control triangle minus the cap; convex: the cap
-  curve_regions.move_to(points[0]);
-  curve_regions.line_to(points[1]);
-  curve_regions.line_to(points[2]);
-  curve_regions.conic_to(points[1], points[0], 1.0);
-  curve_regions.close();
-  curve_regions.move_to(points[2]);
-  curve_regions.conic_to(points[1], points[0], 1.0);
-  curve_regions.close();
+  // The concave curve's region and the convex one's cap tile the control
+  // triangle.
   Mesh interior;
   interior.points = points;
   interior.triangles = {{0, 1, 2}};
-  Outline triangle;
-  triangle.move_to(points[0]);
-  triangle.line_to(points[1]);
-  triangle.line_to(points[2]);
-  triangle.close();
-  Gpu& g = gpu();
-  for (const auto& [mesh, regions, name] :
-       {std::tuple{&curves, &curve_regions, "curved"}, std::tuple{&interior, &triangle, "interior"}}) {
-    DrawBatch batch = DrawBatch::from_mesh(*mesh);
-    double worst = 0.0;
-    for (double scale : {0.032, 0.4, 3.0}) {
-      for (int i = 0; i < 8; ++i)
-        for (int j = 0; j < 8; ++j) {
-          const Placement placement{scale, 8.0 + i / 8.0 - 575.0 * scale, 8.0 + j / 8.0 + 267.0 * scale};
-          g.renderer.begin(16, 16, Color{1, 1, 1, 1});
-          g.renderer.draw(batch, placement, DrawOptions(Color{0, 0, 0, 1}, AntiAliasing::Full));
-          const test::Coverage got = test::coverage_from_black_on_white(g.renderer.read_pixels());
-          const test::Coverage want = test::union_coverage(test::place_outline(*regions, placement), 16, 16);
-          const double e = test::compare(got, want).max_abs;
-          if (e > 3.0 / 255.0 && e > worst) test::write_comparison(std::string("sliver-") + name, got, want);
-          worst = std::max(worst, e);
-        }
-    }
+  const Outline triangle = triangle_outline(points);
+  for (const auto& [mesh, name] : {std::pair{&curves, "curved"}, std::pair{&interior, "interior"}}) {
+    const double worst = worst_sliver_error(*mesh, triangle, {0.032, 0.4, 3.0}, {575.0, 267.0}, 0.0,
+                                            std::string("sliver-") + name);
     std::printf("nearly flat %s triangles: largest pixel error %.4f\n", name, worst);
     EXPECT_LE(worst, 3.0 / 255.0) << name;
   }
@@ -433,30 +443,8 @@ TEST(FullAntialiasingSlivers, LongFlatCurvesAddNoStrayCoverage) {
   Mesh mesh;
   mesh.points = points;
   mesh.curves = {CurvedTriangle{0, 1, 2, 1.0, true}, CurvedTriangle{2, 1, 0, 1.0, false}};
-  // The convex cap and the concave rest of the control triangle: together
-  // the control triangle, drawn once.
-  Outline triangle;
-  triangle.move_to(points[0]);
-  triangle.line_to(points[1]);
-  triangle.line_to(points[2]);
-  triangle.close();
-  Gpu& g = gpu();
-  DrawBatch batch = DrawBatch::from_mesh(mesh);
-  double worst = 0.0;
-  for (double scale : {0.032, 0.048}) {
-    const int width = static_cast<int>(std::ceil(362 * scale)) + 6, height = 8;
-    for (int i = 0; i < 8; ++i)
-      for (int j = 0; j < 8; ++j) {
-        const Placement placement{scale, 3.0 + i / 8.0 - 392.0 * scale, 4.0 + j / 8.0 + 12.0 * scale};
-        g.renderer.begin(width, height, Color{1, 1, 1, 1});
-        g.renderer.draw(batch, placement, DrawOptions(Color{0, 0, 0, 1}, AntiAliasing::Full));
-        const test::Coverage got = test::coverage_from_black_on_white(g.renderer.read_pixels());
-        const test::Coverage want = test::union_coverage(test::place_outline(triangle, placement), width, height);
-        const double e = test::compare(got, want).max_abs;
-        if (e > 3.0 / 255.0 && e > worst) test::write_comparison("long-flat-curve", got, want);
-        worst = std::max(worst, e);
-      }
-  }
+  const double worst =
+      worst_sliver_error(mesh, triangle_outline(points), {0.032, 0.048}, {392.0, 12.0}, 362.0, "long-flat-curve");
   std::printf("long flat curved triangles: largest pixel error %.4f\n", worst);
   EXPECT_LE(worst, 3.0 / 255.0);
 }
