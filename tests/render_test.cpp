@@ -430,11 +430,12 @@ TEST(FullAntialiasingSlivers, NearlyFlatTrianglesAddNoStrayCoverage) {
 }
 
 // A long, flat curved triangle (Noto Sans CJK glyph 1666: 362 font units long,
-// its control point 0.19 off the chord, 11.6 px by 0.006 px at 32 px/em):
-// rebuilding its control points inverts gradients whose condition number is
-// about 2,000, which cost 0.17 of coverage in an empty pixel next to it. Where
-// that inversion's error would exceed the triangle's altitude, the region now
-// counts as empty (shaders/area.frag.glsl). Pixels must match the exact
+// its control point 0.19 off the chord, 11.6 px by 0.006 px at 32 px/em; its
+// longest edge is about 2,000 times its altitude): the shader's gradient
+// inversion and tangent clipping lost their digits on it and put 0.17 of
+// coverage into an empty pixel next to it. Where that loss (about 1e-7 k^2 px)
+// would exceed the triangle's altitude, the region now counts as empty
+// (shaders/area.frag.glsl). Pixels must match the exact
 // coverage within 3/255 at 32 and 48 px/em, convex and concave.
 TEST(FullAntialiasingSlivers, LongFlatCurvesAddNoStrayCoverage) {
   const std::vector<Vec2> points = {{391.99999999999994, 7.9629629629629628},
