@@ -9,7 +9,7 @@ uniform vec4 u_color;       // premultiplied
 uniform int u_aa;           // 0 none, 1 curves
 uniform int u_curve_mode;   // 0 exact, 1 paper
 uniform float u_coverage_exponent;  // 1 / gamma (DrawOptions::gamma)
-uniform int u_debug;        // 0 off, 1 discarded curve pixels shown, 2 triangle edges (flat)
+uniform int u_debug;        // 0 off, 1 discarded curve pixels shown, 2 triangle edges only (flat)
 
 varying vec4 v_coef;
 varying vec4 v_info;
@@ -29,6 +29,15 @@ float conic_distance(float t1, float t2, vec2 g1, vec2 g2, float w, float s) {
 
 void main() {
   if (u_debug == 2) {
+    // Within a pixel of an edge: a barycentric over its screen gradient is
+    // the distance to the edge where it is 0.
+    float t1 = v_coef.x;
+    float t2 = v_coef.y;
+    float t0 = 1.0 - t1 - t2;
+    float d = min(min(t0 / max(length(vec2(dFdx(t0), dFdy(t0))), 1e-20),
+                      t1 / max(length(vec2(dFdx(t1), dFdy(t1))), 1e-20)),
+                  t2 / max(length(vec2(dFdx(t2), dFdy(t2))), 1e-20));
+    if (d > 1.0) discard;
     gl_FragColor = vec4(0.05, 0.35, 0.95, 1.0);
     return;
   }

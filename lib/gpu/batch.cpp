@@ -110,11 +110,10 @@ std::unique_ptr<DrawBatch::Impl> upload(PackedMesh packed, IndexUpload how) {
   impl->serial = ++next_serial;
   for (const Vertex& v : packed.vertices) impl->bounds.add({v.pos[0], v.pos[1]});
   if (packed.indices.empty()) return impl;
-  constexpr std::size_t kShortLimit = 65536;  // vertices a 16-bit index reaches
-  if (how == IndexUpload::Bits16 && packed.vertices.size() > kShortLimit)
+  if (how == IndexUpload::Bits16 && packed.vertices.size() > kMaxShortIndexedVertices)
     throw Error(ErrorCode::InvalidArgument, "16-bit indices cannot reach past 65,536 vertices");
   if (how == IndexUpload::Auto)
-    how = packed.vertices.size() <= kShortLimit ? IndexUpload::Bits16
+    how = packed.vertices.size() <= kMaxShortIndexedVertices ? IndexUpload::Bits16
           : has_32bit_indices()                 ? IndexUpload::Bits32
                                                 : IndexUpload::Arrays;
   if (how == IndexUpload::Arrays) {
@@ -122,7 +121,6 @@ std::unique_ptr<DrawBatch::Impl> upload(PackedMesh packed, IndexUpload how) {
     expanded.reserve(packed.indices.size());
     for (std::uint32_t i : packed.indices) expanded.push_back(packed.vertices[i]);
     packed.vertices = std::move(expanded);
-    for (std::uint32_t i = 0; i < packed.indices.size(); ++i) packed.indices[i] = i;
   }
   impl->vertex_count = packed.vertices.size();
   impl->index_count = packed.indices.size();
@@ -135,7 +133,6 @@ std::unique_ptr<DrawBatch::Impl> upload(PackedMesh packed, IndexUpload how) {
     upload_buffer(GL_ELEMENT_ARRAY_BUFFER, impl->ibo, packed.indices);
     impl->index_type = GL_UNSIGNED_INT;
   }
-  impl->indices = std::move(packed.indices);
   if (GLenum err = glGetError(); err != GL_NO_ERROR)
     throw Error(ErrorCode::Gl, "vertex buffer upload failed (GL error 0x" + gl_error_text(err) + ")");
   return impl;

@@ -203,9 +203,6 @@ struct Renderer::Impl {
   ProgramUniforms area_u;
   Blending blending = Blending::Srgb;  // of the target begin() made
   bool gles = true;
-  GLuint debug_ibo = 0;  // --debug: GL_LINES indices over the triangles
-  std::uint64_t debug_ibo_batch = 0;  // the serial of the batch they were made for
-  std::size_t debug_ibo_lines = 0;    // indices in debug_ibo
   GLuint framebuffer = 0;
   GLuint texture = 0;
   int width = 0, height = 0;
@@ -284,7 +281,6 @@ struct Renderer::Impl {
     if (area_program != 0) glDeleteProgram(area_program);
     if (resolve_program != 0) glDeleteProgram(resolve_program);
     if (quad_vbo != 0) glDeleteBuffers(1, &quad_vbo);
-    if (debug_ibo != 0) glDeleteBuffers(1, &debug_ibo);
     if (off_fbo != 0) glDeleteFramebuffers(1, &off_fbo);
     if (off_tex != 0) glDeleteTextures(1, &off_tex);
     if (ms_fbo != 0) glDeleteFramebuffers(1, &ms_fbo);
@@ -672,35 +668,18 @@ bool Renderer::draw_offscreen(const DrawBatch::Impl& b, const Transform& full, f
   return true;
 }
 
-// --debug: every triangle's three edges as GL_LINES in a flat colour (the
-// curve program with u_debug = 2), over what draw_curves drew.
+// --debug: every triangle's edges in a flat colour (the curve program with
+// u_debug = 2 draws the triangles themselves and keeps only the pixels within
+// a pixel of an edge), over what draw_curves drew.
 void Renderer::draw_debug_edges(const DrawBatch::Impl& b, const Transform& full, float vw, float vh) {
   Impl& r = *impl_;
-  if (r.debug_ibo == 0 || r.debug_ibo_batch != b.serial) {
-    std::vector<GLuint> indices;
-    indices.reserve(b.indices.size() * 2);
-    for (std::size_t t = 0; t + 2 < b.indices.size(); t += 3)
-      for (std::size_t e = 0; e < 3; ++e) {
-        indices.push_back(b.indices[t + e]);
-        indices.push_back(b.indices[t + (e + 1) % 3]);
-      }
-    if (r.debug_ibo == 0) glGenBuffers(1, &r.debug_ibo);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, r.debug_ibo);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(GLuint)), indices.data(),
-                 GL_STATIC_DRAW);
-    r.debug_ibo_batch = b.serial;
-    r.debug_ibo_lines = indices.size();
-  }
   glUseProgram(r.program);
   set_view(r.curve_u.transform, r.curve_u.viewport, full, vw, vh);
   glUniform1f(r.curve_u.fringe_px, 0.0f);  // the triangles themselves, not grown
   glUniform1i(r.u_debug, 2);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  bind_vertices(b);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, r.debug_ibo);
-  glDrawElements(GL_LINES, static_cast<GLsizei>(r.debug_ibo_lines), GL_UNSIGNED_INT, nullptr);
-  unbind_vertices();
+  draw_triangles(b);
   glUniform1i(r.u_debug, 0);
   if (GLenum err = glGetError(); err != GL_NO_ERROR)
     throw Error(ErrorCode::Gl, "drawing debug edges failed (GL error " + hex(err) + ")");

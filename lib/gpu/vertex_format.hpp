@@ -60,6 +60,9 @@ enum VertexPoint : int { kMiter = 0, kBevelArriving = 1, kBevelLeaving = 2 };
 inline constexpr int kSideStride = 3;
 inline constexpr int kPointStride = 9;
 
+// Vertices a 16-bit index reaches (a batch's index width; see above).
+inline constexpr std::size_t kMaxShortIndexedVertices = 65536;
+
 // Vertices and the triangles over them (3 indices each, counter-clockwise or
 // not: the shaders do not cull).
 struct PackedMesh {
@@ -67,14 +70,10 @@ struct PackedMesh {
   std::vector<std::uint32_t> indices;
 
   bool empty() const { return indices.empty(); }
-  void clear() {
-    vertices.clear();
-    indices.clear();
-  }
   // Bytes in a vertex buffer and an index buffer of the width a batch of
   // this many vertices uploads (16-bit up to 65,536 vertices, else 32-bit).
   std::size_t gpu_bytes() const {
-    return vertices.size() * sizeof(Vertex) + indices.size() * (vertices.size() <= 65536 ? 2 : 4);
+    return vertices.size() * sizeof(Vertex) + indices.size() * (vertices.size() <= kMaxShortIndexedVertices ? 2 : 4);
   }
   // Bytes this object holds in CPU memory (the glyph cache's budget).
   std::size_t memory_bytes() const {
