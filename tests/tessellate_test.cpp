@@ -858,12 +858,16 @@ TEST(Sweep, GivesUpOnTouchingAndDegenerateLoops) {
 // Flips on the sweep's triangulation: the manifold version gives the same
 // triangles as the general one (no four points cocircular with random real
 // coordinates, so the constrained Delaunay triangulation is unique), and the
-// result is locally Delaunay at every inner edge.
+// result is locally Delaunay at every inner edge. The last trials have more
+// than 256 points, where the twins of half-edges are hashed instead of looked
+// up in a direct table.
 TEST(DelaunayFlipsManifold, AgreesWithTheGeneralFlips) {
   std::mt19937 rng(77);
-  for (int trial = 0; trial < 200; ++trial) {
+  int large_compared = 0;  // trials over 256 points that reached the comparison
+  for (int trial = 0; trial < 220; ++trial) {
     Loops loops;
-    loops.add(random_star(rng, {0, 0}, 12 + trial % 60, 100, 150, false), false);
+    const int corners = trial < 200 ? 12 + trial % 60 : 260 + 13 * (trial - 200);
+    loops.add(random_star(rng, {0, 0}, corners, 100, 150, false), false);
     if (trial % 2) {
       std::vector<Vec2> hole = random_star(rng, {0, 0}, 4 + trial % 9, 20, 60, false);
       std::reverse(hole.begin(), hole.end());
@@ -890,6 +894,7 @@ TEST(DelaunayFlipsManifold, AgreesWithTheGeneralFlips) {
       return ts;
     };
     EXPECT_EQ(canonical(general), canonical(manifold));
+    large_compared += loops.points.size() > 256 ? 1 : 0;
     // Locally Delaunay: across every inner edge, the opposite vertex is not
     // strictly inside the circumcircle.
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> opposite;
@@ -905,6 +910,7 @@ TEST(DelaunayFlipsManifold, AgreesWithTheGeneralFlips) {
                 0);
     }
   }
+  EXPECT_GE(large_compared, 15);
 }
 
 }  // namespace

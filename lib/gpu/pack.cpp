@@ -37,7 +37,7 @@ namespace {
 bool bevelled(Vec2 d_in, Vec2 d_out, double len2_in, double len2_out) {
   constexpr double m = 1.0 - tolerance::kMinMiterDenominator;
   const double d = dot(d_in, d_out);
-  return d <= 0.0 && d * d >= m * m * len2_in * len2_out;
+  return (d <= 0.0) & (d * d >= m * m * len2_in * len2_out);  // no branch: bevels come unpredictably
 }
 
 // Writes triangle p's polygon: one point per corner, two at a bevelled one,

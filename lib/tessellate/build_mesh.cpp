@@ -166,8 +166,10 @@ namespace {
 template <class PointAt>
 bool has_repeated_position(std::size_t count, PointAt at) {
   thread_local std::vector<std::uint32_t> slots;  // scratch: index + 1 of the point there, 0 empty
+  // At most a quarter full: a probe then rarely goes past its first slot
+  // (a probe loop of unpredictable length costs a misprediction).
   int bits = 4;
-  while ((std::size_t{1} << bits) < 2 * count) ++bits;
+  while ((std::size_t{1} << bits) < 4 * count) ++bits;
   slots.assign(std::size_t{1} << bits, 0);
   const std::size_t mask = slots.size() - 1;
   for (std::size_t i = 0; i < count; ++i) {
@@ -936,7 +938,7 @@ class PointIndex {
   PointIndex(std::vector<Vec2>& points_out, std::size_t expected) : points(points_out) {
     std::size_t capacity = 16;
     bits_ = 4;
-    while (capacity < 2 * expected + 16) {
+    while (capacity < 4 * expected + 16) {  // at most a quarter full, as in has_repeated_position
       capacity *= 2;
       ++bits_;
     }
@@ -945,7 +947,7 @@ class PointIndex {
   }
 
   std::uint32_t operator()(Vec2 p) {
-    if (2 * (points.size() + 1) > slots_.size()) grow();
+    if (4 * (points.size() + 1) > slots_.size()) grow();
     std::size_t slot = this->slot(p);
     while (slots_[slot] != kEmpty) {
       if (points[slots_[slot]] == p) return slots_[slot];

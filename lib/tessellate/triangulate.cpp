@@ -1,6 +1,7 @@
 #include "tessellate/triangulate.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -703,6 +704,10 @@ void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std:
   }
 }
 
+// Meshes of up to this many points find twins in a direct table of n^2
+// 16-bit entries (128 KiB at most); larger ones hash.
+constexpr std::size_t kDirectVertices = 256;
+
 void delaunay_flips_manifold(const std::vector<Vec2>& points, std::vector<std::array<std::uint32_t, 3>>& triangles) {
   // Half-edge h = 4 t + k (k < 3: a shift and a mask instead of a division)
   // runs from triangles[t][k] to triangles[t][k + 1]; twin[h] is the
@@ -710,28 +715,63 @@ void delaunay_flips_manifold(const std::vector<Vec2>& points, std::vector<std::a
   const std::size_t m = triangles.size();
   if (m < 2) return;
   static constexpr std::uint32_t kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};
-  auto to = [&](std::uint32_t h) { return triangles[h >> 2][kNext[h & 3]]; };
-  thread_local std::vector<std::int32_t> twin, out_next, out_head;
+  thread_local std::vector<std::int32_t> twin;
   twin.assign(4 * m, -1);
-  out_next.resize(4 * m);
-  out_head.assign(points.size(), -1);
-  // Each vertex keeps a list of the half-edges leaving it (a vertex has a
-  // few); a half-edge a -> b looks for b -> a among those leaving b. In a
-  // manifold triangulation each is found once; an edge met a third time is
-  // left without a twin (never flipped).
-  for (std::uint32_t t = 0; t < m; ++t) {
-    for (std::uint32_t k = 0; k < 3; ++k) {
-      const std::uint32_t h = 4 * t + k, a = triangles[t][k], b = triangles[t][kNext[k]];
-      for (std::int32_t g = out_head[b]; g >= 0; g = out_next[static_cast<std::size_t>(g)]) {
-        if (to(static_cast<std::uint32_t>(g)) != a) continue;
-        if (twin[static_cast<std::size_t>(g)] < 0) {
-          twin[static_cast<std::size_t>(g)] = static_cast<std::int32_t>(h);
-          twin[h] = g;
-        }
-        break;
+  // twin[h] for h = a -> b is the half-edge b -> a, found by a table lookup
+  // without branches (whether an edge has a twin, inner or boundary, comes in
+  // no predictable order; mispredicted branches cost more here than the
+  // arithmetic). Up to kDirectVertices points the table is indexed directly by
+  // the pair; larger meshes hash it.
+  const std::size_t n = points.size();
+  if (n <= kDirectVertices && 4 * m < 0xffff) {  // (h + 1 fits in 16 bits)
+    // Entry a * n + b holds h + 1 for h = a -> b, 0 for none. Every entry
+    // written is reset before returning, so the table is all zero between
+    // calls and is never cleared as a whole.
+    thread_local std::vector<std::uint16_t> direct;
+    if (direct.size() < n * n) direct.assign(n * n, 0);
+    for (std::uint32_t t = 0; t < m; ++t)
+      for (std::uint32_t k = 0; k < 3; ++k)
+        direct[triangles[t][k] * n + triangles[t][kNext[k]]] = static_cast<std::uint16_t>(4 * t + k + 1);
+    for (std::uint32_t t = 0; t < m; ++t)
+      for (std::uint32_t k = 0; k < 3; ++k)
+        twin[4 * t + k] = static_cast<std::int32_t>(direct[triangles[t][kNext[k]] * n + triangles[t][k]]) - 1;
+    for (std::uint32_t t = 0; t < m; ++t)
+      for (std::uint32_t k = 0; k < 3; ++k) direct[triangles[t][k] * n + triangles[t][kNext[k]]] = 0;
+  } else {
+    // Open addressing on the directed pair, at most a quarter full, so that a
+    // probe rarely goes past its first slot.
+    constexpr std::uint64_t kEmptyKey = ~std::uint64_t{0};  // all bits set: filled by memset
+    thread_local std::vector<std::uint64_t> keys;           // a << 32 | b, or kEmptyKey
+    thread_local std::vector<std::int32_t> half_edges;      // the half-edge of each key
+    int bits = 4;
+    while ((std::size_t{1} << bits) < 12 * m) ++bits;
+    const std::size_t mask = (std::size_t{1} << bits) - 1;
+    keys.resize(mask + 1);
+    half_edges.resize(mask + 1);
+    std::memset(keys.data(), 0xff, keys.size() * sizeof(std::uint64_t));
+    // Each end multiplied by its own odd constant (one product of the packed
+    // key would put keys with nearby ends in nearby slots).
+    auto slot_of = [&](std::uint32_t a, std::uint32_t b) {
+      return static_cast<std::size_t>((a * 0x9e3779b97f4a7c15ull ^ b * 0xc2b2ae3d27d4eb4full) >> (64 - bits));
+    };
+    for (std::uint32_t t = 0; t < m; ++t) {
+      for (std::uint32_t k = 0; k < 3; ++k) {
+        const std::uint32_t a = triangles[t][k], b = triangles[t][kNext[k]];
+        std::size_t slot = slot_of(a, b);
+        while (keys[slot] != kEmptyKey) slot = (slot + 1) & mask;
+        keys[slot] = std::uint64_t{a} << 32 | b;
+        half_edges[slot] = static_cast<std::int32_t>(4 * t + k);
       }
-      out_next[h] = out_head[a];
-      out_head[a] = static_cast<std::int32_t>(h);
+    }
+    for (std::uint32_t t = 0; t < m; ++t) {
+      for (std::uint32_t k = 0; k < 3; ++k) {
+        const std::uint32_t a = triangles[t][kNext[k]], b = triangles[t][k];
+        const std::uint64_t key = std::uint64_t{a} << 32 | b;
+        std::size_t slot = slot_of(a, b);
+        while ((keys[slot] != key) & (keys[slot] != kEmptyKey)) slot = (slot + 1) & mask;
+        const std::int32_t found = -static_cast<std::int32_t>(keys[slot] == key);  // all ones or zero
+        twin[4 * t + k] = (half_edges[slot] & found) | ~found;                    // the twin or -1
+      }
     }
   }
   thread_local std::vector<std::uint32_t> stack;
@@ -752,7 +792,10 @@ void delaunay_flips_manifold(const std::vector<Vec2>& points, std::vector<std::a
     const std::uint32_t h = stack.back();
     stack.pop_back();
     const std::int32_t g = twin[h];
-    if (g < 0) continue;
+    // Every twin found runs between the same two points; a half-edge that
+    // occurs twice (a non-manifold input: never from the sweep) can leave
+    // the pairs one-sided, and those are never flipped.
+    if (g < 0 || twin[static_cast<std::size_t>(g)] != static_cast<std::int32_t>(h)) continue;
     const std::uint32_t t1 = h >> 2, k1 = h & 3, t2 = static_cast<std::uint32_t>(g) >> 2, k2 = static_cast<std::uint32_t>(g) & 3;
     const std::uint32_t a = triangles[t1][k1], b = triangles[t1][kNext[k1]], c = triangles[t1][kPrev[k1]];
     const std::uint32_t d = triangles[t2][kPrev[k2]];

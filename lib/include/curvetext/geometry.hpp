@@ -15,7 +15,9 @@ struct Vec2 {
   friend constexpr Vec2 operator*(Vec2 a, double s) { return {a.x * s, a.y * s}; }
   friend constexpr Vec2 operator*(double s, Vec2 a) { return {a.x * s, a.y * s}; }
   friend constexpr Vec2 operator/(Vec2 a, double s) { return {a.x / s, a.y / s}; }
-  friend constexpr bool operator==(Vec2 a, Vec2 b) { return a.x == b.x && a.y == b.y; }
+  // Both comparisons, combined without a branch (whether points coincide is
+  // data-dependent; a short-circuit && is mispredicted often in mesh building).
+  friend constexpr bool operator==(Vec2 a, Vec2 b) { return (a.x == b.x) & (a.y == b.y); }
 };
 
 constexpr double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
