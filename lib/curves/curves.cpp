@@ -82,7 +82,11 @@ int cubic_to_quadratics(const Segment& cubic, double tolerance, std::vector<Segm
   // by (d - 3c + 3b - a) * t(1-t)(1-2t) / 2 at every parameter t, whose
   // largest size is sqrt(3)/36 * |d - 3c + 3b - a|. A piece of 1/n of the
   // parameter range has its third difference scaled by 1/n^3.
-  const double third = length(d - c * 3.0 + b * 3.0 - a);
+  const Vec2 difference = d - c * 3.0 + b * 3.0 - a;
+  // sqrt of the squared length, not hypot (several times slower, and run for
+  // every cubic of every CFF glyph); hypot only where the square overflows.
+  double third = std::sqrt(dot(difference, difference));
+  if (!std::isfinite(third)) third = length(difference);
   const double single_error = std::sqrt(3.0) / 36.0 * third;
   int pieces = 1;
   if (tolerance > 0.0 && single_error > tolerance)

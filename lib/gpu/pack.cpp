@@ -52,7 +52,6 @@ std::size_t emit(const std::array<Vec2, 3>& p, int side, float w, std::uint32_t 
   const double area2 = cross(e[0], p[2] - p[0]);
   const double len2[3] = {dot(e[0], e[0]), dot(e[1], e[1]), dot(e[2], e[2])};
   if (!(std::isfinite(area2) && std::fabs(area2) > 1e-12 * (len2[0] + len2[2]))) return 0;
-  const float code_base = static_cast<float>(kSideStride * side);
   std::size_t n = 0;
 #pragma GCC unroll 3
   for (int k = 0; k < 3; ++k) {
@@ -71,16 +70,19 @@ std::size_t emit(const std::array<Vec2, 3>& p, int side, float w, std::uint32_t 
     v.pos[3] = static_cast<float>(a.y);
     v.info[0] = static_cast<float>(dot(a, b) * inv_len2);
     v.info[1] = static_cast<float>(area2 * inv_len2);  // cross(a, b) = area2 at every corner
-    v.info[2] = code_base + static_cast<float>(k);
     v.info[3] = w;
-    if (!bevelled(e[arriving], e[k], len2[arriving], len2[k])) {
-      dst[n++] = v;
-      continue;
-    }
-    v.info[2] += static_cast<float>(kPointStride * kBevelArriving);
-    dst[n++] = v;
-    v.info[2] += static_cast<float>(kPointStride * (kBevelLeaving - kBevelArriving));
-    dst[n++] = v;
+    // Both points of a bevel are written, and the second kept only at a
+    // bevel: which corners are bevelled follows the data, and a branch on it
+    // is mispredicted often enough to cost more than the extra store. (The
+    // code is computed in integers: a select between floats may be compiled
+    // to a branch.)
+    const int bevel = static_cast<int>(bevelled(e[arriving], e[k], len2[arriving], len2[k]));
+    const int code = kSideStride * side + k + kPointStride * kBevelArriving * bevel;  // the miter, or a bevel's first
+    v.info[2] = static_cast<float>(code);
+    dst[n] = v;
+    v.info[2] = static_cast<float>(code + kPointStride * (kBevelLeaving - kBevelArriving));
+    dst[n + 1] = v;
+    n += 1 + static_cast<std::size_t>(bevel);
   }
   static constexpr std::uint32_t kFan[12] = {0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 5};
   for (int j = 0; j < 12; ++j) idx[j] = base + kFan[j];
