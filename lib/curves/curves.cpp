@@ -94,17 +94,30 @@ int cubic_to_quadratics(const Segment& cubic, double tolerance, std::vector<Segm
   if (!(tolerance > 0.0) && single_error > 0.0) pieces = tolerance::kMaxQuadraticsPerCubic;
   pieces = std::clamp(pieces, 1, tolerance::kMaxQuadraticsPerCubic);
 
-  Segment rest = cubic;
+  // De Casteljau on plain points, as split() does for a cubic (the same
+  // arithmetic, so the same results), without copying Segments around.
+  Vec2 rest[4] = {a, b, c, d};
   for (int i = 0; i < pieces; ++i) {
-    Segment piece = rest;
+    Vec2 piece[4] = {rest[0], rest[1], rest[2], rest[3]};
     const int remaining = pieces - i;
     if (remaining > 1) {
-      auto halves = split(rest, 1.0 / remaining);
-      piece = halves.first;
-      rest = halves.second;
+      const double t = 1.0 / remaining;
+      const Vec2 ab = lerp(rest[0], rest[1], t), bc = lerp(rest[1], rest[2], t), cd = lerp(rest[2], rest[3], t);
+      const Vec2 abc = lerp(ab, bc, t), bcd = lerp(bc, cd, t);
+      const Vec2 m = lerp(abc, bcd, t);
+      piece[1] = ab;
+      piece[2] = abc;
+      piece[3] = m;
+      rest[0] = m;
+      rest[1] = bcd;
+      rest[2] = cd;
     }
-    const Vec2 control = ((piece.p[1] + piece.p[2]) * 3.0 - (piece.p[0] + piece.p[3])) * 0.25;
-    out.push_back(Segment::conic(piece.p[0], control, piece.p[3], 1.0));
+    // Written in place (see Outline::line_to for why not a copied temporary).
+    Segment& quadratic = out.emplace_back();
+    quadratic.kind = Segment::Kind::Conic;
+    quadratic.p[0] = piece[0];
+    quadratic.p[1] = ((piece[1] + piece[2]) * 3.0 - (piece[0] + piece[3])) * 0.25;
+    quadratic.p[2] = piece[3];
   }
   // Make the chain end exactly where the cubic ends (splitting rounds).
   out.back().p[2] = cubic.p[3];

@@ -268,14 +268,15 @@ void clean_rings(const Outline& outline, double cubic_tolerance, std::vector<Rin
   recycle_rings(rings);
   thread_local std::vector<Segment> quadratics;  // scratch: one cubic's replacement
   auto add_piece = [](Ring& ring, const Segment& s) {
-    Piece p;
+    // Written in place (a temporary's copy would reload its bool and int
+    // fields in wider loads, which stall; see Outline::line_to).
+    Piece& p = ring.emplace_back();
     p.a = canonical(s.p[0]);
     if (s.kind == Segment::Kind::Conic) {
       p.conic = true;
       p.control = canonical(s.p[1]);
       p.weight = s.weight;
     }
-    ring.push_back(p);
   };
   for (const Contour& contour : outline.contours()) {
     Ring ring = take_ring();
