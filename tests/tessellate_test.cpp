@@ -286,6 +286,33 @@ TEST(BuildMesh, ConicHullOverlappingAnEdgeIsSubdivided) {
   EXPECT_GT(mesh.curves.size(), 1u);
 }
 
+// A line running back along a conic's leg, and two conics meeting in a cusp
+// with their legs on one ray: the hulls touch along that line however often
+// they are split, and separate_hulls aligns the legs (after a pass has found
+// the overlap) instead of subdividing.
+TEST(BuildMesh, TangentLegsAreAligned) {
+  {
+    Outline o;
+    o.move_to({0, 0});
+    o.line_to({100, 0});
+    o.conic_to({50, 0}, {0, 50});  // leaves (100, 0) back along the line
+    o.close();
+    // The triangle minus the parabolic segment: 2500 - (2/3) * 1250.
+    const Mesh mesh = build_and_check(o, 2500.0 - 2.0 / 3.0 * 1250.0);
+    EXPECT_EQ(mesh.curves.size(), 1u);  // the line split at the control; without: 10 pieces of subdivision
+  }
+  {
+    Outline o;
+    o.move_to({0, 100});
+    o.conic_to({50, 0}, {100, 0});
+    o.conic_to({20, 0}, {0, -100});  // a cusp at (100, 0): both controls to its left
+    o.close();
+    // The triangle minus the two parabolic segments.
+    const Mesh mesh = build_and_check(o, 10000.0 - 2.0 / 3.0 * 2500.0 - 2.0 / 3.0 * 4000.0);
+    EXPECT_LE(mesh.curves.size(), 3u);  // the longer-legged conic split once; without: 20 pieces
+  }
+}
+
 TEST(BuildMesh, FlatConicsBecomeLines) {
   Outline o;
   o.move_to({0, 0});

@@ -544,202 +544,221 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
   for (Ring& ring : rings)
     for (Piece& piece : ring) piece.fresh = true;
   for (int pass = 0; pass <= tolerance::kMaxHullSubdivisionDepth; ++pass) {
-    for (Ring& ring : rings) {
-      // Each call fixes one tangency; a ring has at most one per vertex.
-      for (std::size_t fixes = 0, limit = 2 * ring.size() + 2; fixes < limit && align_tangent_legs(ring); ++fixes) {
-      }
-    }
-    // Scratch reused across passes and calls (no allocation once warm).
-    thread_local std::vector<HullRef> refs;
-    thread_local std::vector<std::size_t> mark_base;  // ring r's marks start at mark_base[r]
-    thread_local std::vector<char> split_marks;
-    thread_local std::vector<std::uint32_t> fresh_refs;
-    mark_base.assign(rings.size() + 1, 0);
-    for (std::size_t r = 0; r < rings.size(); ++r) mark_base[r + 1] = mark_base[r] + rings[r].size();
-    const std::size_t count = mark_base.back();
-    split_marks.assign(count, 0);
-    fresh_refs.clear();
-    // Grown, never shrunk: resize() would construct every record again.
-    if (refs.size() < count) refs.resize(count);
-    HullRef* const unsorted = refs.data();
-    for (std::size_t r = 0; r < rings.size(); ++r) {
-      const Ring& ring = rings[r];
-      for (std::size_t i = 0; i < ring.size(); ++i) {
-        const Piece& piece = ring[i];
-        HullRef& ref = unsorted[mark_base[r] + i];
-        ref.hull[0] = piece.a;
-        ref.n = piece.conic ? 3 : 2;
-        if (piece.conic) ref.hull[1] = piece.control;
-        ref.hull[ref.n - 1] = i + 1 < ring.size() ? ring[i + 1].a : ring[0].a;
-        ref.box = Box{};
-        for (int k = 0; k < ref.n; ++k) ref.box.add(ref.hull[k]);
-        ref.depth = piece.depth;
-        ref.weight = piece.weight;
-        ref.mark = mark_base[r] + i;
-        if (piece.fresh) fresh_refs.push_back(static_cast<std::uint32_t>(ref.mark));
-      }
-    }
     bool any = false;
     bool overlap_left = false;  // an overlap seen in this pass
     bool unsplit_overlap = false;  // one where neither piece could be split
     // rings_cross(rings, true) over the same pairs; it stands when this pass
     // is the last (no conic split). Once true, nothing more to look for.
     bool cross_seen = crossing == nullptr;
-    // (Raw pointers: the stores into the char marks may alias anything,
-    // which would make every access through the thread-local vectors reload
-    // them.)
-    char* const marks = split_marks.data();
-    auto test_pair = [&](const HullRef& ri, const HullRef& rj) {
-      const bool ci = ri.n == 3, cj = rj.n == 3;
-      if (!ci && !cj) {
-        if (!cross_seen) cross_seen = lines_cross(ri.hull[0], ri.hull[1], rj.hull[0], rj.hull[1]);
-        return;
-      }
-      const Vec2 ai = ri.hull[0], ei = ri.end(), aj = rj.hull[0], ej = rj.end();
-      const bool same_ends = (ai == aj && ei == ej) || (ai == ej && ei == aj);
-      // A conic and a piece with the same end points: their chords would
-      // coincide, rings_cross's answer is true.
-      cross_seen = cross_seen || same_ends;
-      // Identical curves (duplicated contours) overlap at every depth;
-      // splitting them is useless, the crossing resolver merges them.
-      if (same_ends && ci && cj && ri.hull[1] == rj.hull[1] && ri.weight == rj.weight) return;
-      if (!hulls_overlap(ri.hull, ri.n, rj.hull, rj.n)) return;
-      // Subdividing a conic shrinks its hull towards the arc; lines stay.
-      bool split_one = false;
-      if (ci && ri.depth < tolerance::kMaxHullSubdivisionDepth) {
-        marks[ri.mark] = 1;
-        split_one = true;
-      }
-      if (cj && rj.depth < tolerance::kMaxHullSubdivisionDepth) {
-        marks[rj.mark] = 1;
-        split_one = true;
-      }
-      any = any || split_one;
-      unsplit_overlap = unsplit_overlap || !split_one;
-      overlap_left = true;
-    };
-    // The boxes in one array per side, for tests written without branches
-    // (their outcomes are unpredictable; most pairs are rejected by their
-    // boxes alone).
-    thread_local std::vector<double> box_sides;
-    box_sides.resize(4 * count);
-    double* const min_x = box_sides.data();
-    double* const max_x = min_x + count;
-    double* const min_y = max_x + count;
-    double* const max_y = min_y + count;
-    for (std::size_t k = 0; k < count; ++k) {
-      const Box& b = unsorted[k].box;
-      min_x[k] = b.min.x;
-      max_x[k] = b.max.x;
-      min_y[k] = b.min.y;
-      max_y[k] = b.max.y;
-    }
-    // One bit per piece j of the block [base, base + 64) (base a multiple
-    // of 64) whose box meets box i, tested from piece `from` on (the bits
-    // below may be set or not); two boxes per step with SSE2 (part of every
-    // x86-64 CPU). Hits are then read with countr_zero.
-    auto meets_block = [&](std::size_t i, std::size_t base, std::size_t from) {
-      const double left = min_x[i], right = max_x[i], bottom = min_y[i], top = max_y[i];
-      const std::size_t end = std::min(count, base + 64);
-      std::uint64_t hits = 0;
-      std::size_t j = std::max(base, from & ~std::size_t{1});
-#if defined(__SSE2__)
-      const __m128d vl = _mm_set1_pd(left), vr = _mm_set1_pd(right), vb = _mm_set1_pd(bottom), vt = _mm_set1_pd(top);
-      for (; j + 2 <= end; j += 2) {
-        const __m128d in_x = _mm_and_pd(_mm_cmple_pd(_mm_loadu_pd(min_x + j), vr), _mm_cmple_pd(vl, _mm_loadu_pd(max_x + j)));
-        const __m128d in_y = _mm_and_pd(_mm_cmple_pd(_mm_loadu_pd(min_y + j), vt), _mm_cmple_pd(vb, _mm_loadu_pd(max_y + j)));
-        hits |= static_cast<std::uint64_t>(_mm_movemask_pd(_mm_and_pd(in_x, in_y))) << (j - base);
-      }
-#endif
-      for (; j < end; ++j) {
-        const bool meets = (min_x[j] <= right) & (left <= max_x[j]) & (min_y[j] <= top) & (bottom <= max_y[j]);
-        hits |= static_cast<std::uint64_t>(meets) << (j - base);
-      }
-      return hits;
-    };
-    // The bits of the block at base for the pieces after (before) piece i.
-    auto after = [](std::size_t i, std::size_t base) -> std::uint64_t {
-      if (i < base) return ~std::uint64_t{0};
-      return i - base >= 63 ? 0 : ~std::uint64_t{0} << (i - base + 1);
-    };
-    auto before = [](std::size_t i, std::size_t base) -> std::uint64_t {
-      if (i <= base) return 0;
-      return i - base >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << (i - base)) - 1;
-    };
-    auto test_hits = [&](std::size_t i, std::size_t base, std::uint64_t hits) {
-      for (; hits != 0; hits &= hits - 1) test_pair(unsorted[i], unsorted[base + static_cast<std::size_t>(std::countr_zero(hits))]);
-    };
-    if (!test_all) {
-      // Each fresh piece against every piece whose box meets its own (a
-      // fresh pair once, from its first piece).
-      thread_local std::vector<std::uint64_t> fresh_words;
-      fresh_words.assign((count + 63) / 64, 0);
-      for (const std::uint32_t i : fresh_refs) fresh_words[i / 64] |= std::uint64_t{1} << (i % 64);
-      for (const std::uint32_t i : fresh_refs) {
-        for (std::size_t base = 0; base < count; base += 64) {
-          const std::uint64_t others = after(i, base) | (before(i, base) & ~fresh_words[base / 64]);
-          test_hits(i, base, meets_block(i, base, base) & others);
+    // Scratch reused across passes and calls (no allocation once warm).
+    thread_local std::vector<std::size_t> mark_base;  // ring r's marks start at mark_base[r]
+    thread_local std::vector<char> split_marks;
+    // Tangent legs are aligned (align_tangent_legs) only when the pass has
+    // found an overlap, and then the pass is run again on the aligned rings:
+    // every tangency align_tangent_legs fixes is a hull corner on another
+    // hull's edge, which the pair tests report as an overlap, so a pass
+    // without one has nothing to align. The result is that of aligning
+    // first; the usual glyph skips the alignment scan.
+    for (bool aligned = false;;) {
+      any = false;
+      overlap_left = false;
+      unsplit_overlap = false;
+      cross_seen = crossing == nullptr;
+      thread_local std::vector<HullRef> refs;
+      thread_local std::vector<std::uint32_t> fresh_refs;
+      mark_base.assign(rings.size() + 1, 0);
+      for (std::size_t r = 0; r < rings.size(); ++r) mark_base[r + 1] = mark_base[r] + rings[r].size();
+      const std::size_t count = mark_base.back();
+      split_marks.assign(count, 0);
+      fresh_refs.clear();
+      // Grown, never shrunk: resize() would construct every record again.
+      if (refs.size() < count) refs.resize(count);
+      HullRef* const unsorted = refs.data();
+      for (std::size_t r = 0; r < rings.size(); ++r) {
+        const Ring& ring = rings[r];
+        for (std::size_t i = 0; i < ring.size(); ++i) {
+          const Piece& piece = ring[i];
+          HullRef& ref = unsorted[mark_base[r] + i];
+          ref.hull[0] = piece.a;
+          ref.n = piece.conic ? 3 : 2;
+          if (piece.conic) ref.hull[1] = piece.control;
+          ref.hull[ref.n - 1] = i + 1 < ring.size() ? ring[i + 1].a : ring[0].a;
+          ref.box = Box{};
+          for (int k = 0; k < ref.n; ++k) ref.box.add(ref.hull[k]);
+          ref.depth = piece.depth;
+          ref.weight = piece.weight;
+          ref.mark = mark_base[r] + i;
+          if (piece.fresh) fresh_refs.push_back(static_cast<std::uint32_t>(ref.mark));
         }
       }
-    } else if (count <= kAllPairsLimit) {
-      // A glyph's few dozen pieces: every pair's boxes, which costs less
-      // than sorting them (a sort's branches are unpredictable too).
-      for (std::size_t i = 0; i < count; ++i) test_hits(i, 0, meets_block(i, 0, i + 1) & after(i, 0));  // one block
-    } else {
-      // Sweep and prune: sorted by the boxes' lower sides along the glyph's
-      // longer axis, where the boxes overlap less (a tall glyph's pieces
-      // share x ranges); "a" below is that axis, "b" the other. Which pairs
-      // are met does not depend on the order among equal keys, and the
-      // answers are combined order-independently.
-      Box all;
-      for (std::size_t k = 0; k < count; ++k) {
-        all.add(unsorted[k].box.min);
-        all.add(unsorted[k].box.max);
-      }
-      const bool along_y = all.max.y - all.min.y > all.max.x - all.min.x;
-      const double* const min_a = along_y ? min_y : min_x;
-      const double* const max_a = along_y ? max_y : max_x;
-      const double* const min_b = along_y ? min_x : min_y;
-      const double* const max_b = along_y ? max_x : max_y;
-      struct SortKey {
-        double min_a;
-        std::uint32_t ref;
+      // (Raw pointers: the stores into the char marks may alias anything,
+      // which would make every access through the thread-local vectors reload
+      // them.)
+      char* const marks = split_marks.data();
+      auto test_pair = [&](const HullRef& ri, const HullRef& rj) {
+        const bool ci = ri.n == 3, cj = rj.n == 3;
+        if (!ci && !cj) {
+          if (!cross_seen) cross_seen = lines_cross(ri.hull[0], ri.hull[1], rj.hull[0], rj.hull[1]);
+          return;
+        }
+        const Vec2 ai = ri.hull[0], ei = ri.end(), aj = rj.hull[0], ej = rj.end();
+        const bool same_ends = (ai == aj && ei == ej) || (ai == ej && ei == aj);
+        // A conic and a piece with the same end points: their chords would
+        // coincide, rings_cross's answer is true.
+        cross_seen = cross_seen || same_ends;
+        // Identical curves (duplicated contours) overlap at every depth;
+        // splitting them is useless, the crossing resolver merges them.
+        if (same_ends && ci && cj && ri.hull[1] == rj.hull[1] && ri.weight == rj.weight) return;
+        if (!hulls_overlap(ri.hull, ri.n, rj.hull, rj.n)) return;
+        // Subdividing a conic shrinks its hull towards the arc; lines stay.
+        bool split_one = false;
+        if (ci && ri.depth < tolerance::kMaxHullSubdivisionDepth) {
+          marks[ri.mark] = 1;
+          split_one = true;
+        }
+        if (cj && rj.depth < tolerance::kMaxHullSubdivisionDepth) {
+          marks[rj.mark] = 1;
+          split_one = true;
+        }
+        any = any || split_one;
+        unsplit_overlap = unsplit_overlap || !split_one;
+        overlap_left = true;
       };
-      thread_local std::vector<SortKey> keys;
-      keys.resize(count);
-      for (std::size_t k = 0; k < count; ++k) keys[k] = {min_a[k], static_cast<std::uint32_t>(k)};
-      std::sort(keys.begin(), keys.end(), [](const SortKey& a, const SortKey& b) { return a.min_a < b.min_a; });
-      // The sides again in sorted order (the scan reads them in a row).
-      thread_local std::vector<double> sorted_sides;
-      thread_local std::vector<std::uint32_t> candidates;
-      candidates.resize(count);
-      std::uint32_t* const candidate = candidates.data();
-      sorted_sides.resize(4 * count);
-      double* const s_min_a = sorted_sides.data();
-      double* const s_max_a = s_min_a + count;
-      double* const s_min_b = s_max_a + count;
-      double* const s_max_b = s_min_b + count;
+      // The boxes in one array per side, for tests written without branches
+      // (their outcomes are unpredictable; most pairs are rejected by their
+      // boxes alone).
+      thread_local std::vector<double> box_sides;
+      box_sides.resize(4 * count);
+      double* const min_x = box_sides.data();
+      double* const max_x = min_x + count;
+      double* const min_y = max_x + count;
+      double* const max_y = min_y + count;
       for (std::size_t k = 0; k < count; ++k) {
-        const std::uint32_t r = keys[k].ref;
-        s_min_a[k] = min_a[r];
-        s_max_a[k] = max_a[r];
-        s_min_b[k] = min_b[r];
-        s_max_b[k] = max_b[r];
+        const Box& b = unsorted[k].box;
+        min_x[k] = b.min.x;
+        max_x[k] = b.max.x;
+        min_y[k] = b.min.y;
+        max_y[k] = b.max.y;
       }
-      for (std::size_t i = 0; i < count; ++i) {
-        // Boxes after box i in the order start at or after its lower side
-        // along a: they overlap it along a while they start before its upper
-        // side, and then in both when their b ranges meet. (Pieces with the
-        // same end points have overlapping boxes.)
-        const double upper = s_max_a[i], low_b = s_min_b[i], high_b = s_max_b[i];
-        std::size_t found = 0;
-        for (std::size_t j = i + 1; j < count && s_min_a[j] <= upper; ++j) {
-          candidate[found] = keys[j].ref;
-          found += static_cast<std::size_t>((s_min_b[j] <= high_b) & (low_b <= s_max_b[j]));
+      // One bit per piece j of the block [base, base + 64) (base a multiple
+      // of 64) whose box meets box i, tested from piece `from` on (the bits
+      // below may be set or not); two boxes per step with SSE2 (part of every
+      // x86-64 CPU). Hits are then read with countr_zero.
+      auto meets_block = [&](std::size_t i, std::size_t base, std::size_t from) {
+        const double left = min_x[i], right = max_x[i], bottom = min_y[i], top = max_y[i];
+        const std::size_t end = std::min(count, base + 64);
+        std::uint64_t hits = 0;
+        std::size_t j = std::max(base, from & ~std::size_t{1});
+  #if defined(__SSE2__)
+        const __m128d vl = _mm_set1_pd(left), vr = _mm_set1_pd(right), vb = _mm_set1_pd(bottom), vt = _mm_set1_pd(top);
+        for (; j + 2 <= end; j += 2) {
+          const __m128d in_x =
+              _mm_and_pd(_mm_cmple_pd(_mm_loadu_pd(min_x + j), vr), _mm_cmple_pd(vl, _mm_loadu_pd(max_x + j)));
+          const __m128d in_y =
+              _mm_and_pd(_mm_cmple_pd(_mm_loadu_pd(min_y + j), vt), _mm_cmple_pd(vb, _mm_loadu_pd(max_y + j)));
+          hits |= static_cast<std::uint64_t>(_mm_movemask_pd(_mm_and_pd(in_x, in_y))) << (j - base);
         }
-        for (std::size_t f = 0; f < found; ++f) test_pair(unsorted[keys[i].ref], unsorted[candidate[f]]);
+  #endif
+        for (; j < end; ++j) {
+          const bool meets = (min_x[j] <= right) & (left <= max_x[j]) & (min_y[j] <= top) & (bottom <= max_y[j]);
+          hits |= static_cast<std::uint64_t>(meets) << (j - base);
+        }
+        return hits;
+      };
+      // The bits of the block at base for the pieces after (before) piece i.
+      auto after = [](std::size_t i, std::size_t base) -> std::uint64_t {
+        if (i < base) return ~std::uint64_t{0};
+        return i - base >= 63 ? 0 : ~std::uint64_t{0} << (i - base + 1);
+      };
+      auto before = [](std::size_t i, std::size_t base) -> std::uint64_t {
+        if (i <= base) return 0;
+        return i - base >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << (i - base)) - 1;
+      };
+      auto test_hits = [&](std::size_t i, std::size_t base, std::uint64_t hits) {
+        for (; hits != 0; hits &= hits - 1)
+          test_pair(unsorted[i], unsorted[base + static_cast<std::size_t>(std::countr_zero(hits))]);
+      };
+      if (!test_all) {
+        // Each fresh piece against every piece whose box meets its own (a
+        // fresh pair once, from its first piece).
+        thread_local std::vector<std::uint64_t> fresh_words;
+        fresh_words.assign((count + 63) / 64, 0);
+        for (const std::uint32_t i : fresh_refs) fresh_words[i / 64] |= std::uint64_t{1} << (i % 64);
+        for (const std::uint32_t i : fresh_refs) {
+          for (std::size_t base = 0; base < count; base += 64) {
+            const std::uint64_t others = after(i, base) | (before(i, base) & ~fresh_words[base / 64]);
+            test_hits(i, base, meets_block(i, base, base) & others);
+          }
+        }
+      } else if (count <= kAllPairsLimit) {
+        // A glyph's few dozen pieces: every pair's boxes, which costs less
+        // than sorting them (a sort's branches are unpredictable too).
+        for (std::size_t i = 0; i < count; ++i) test_hits(i, 0, meets_block(i, 0, i + 1) & after(i, 0));  // one block
+      } else {
+        // Sweep and prune: sorted by the boxes' lower sides along the glyph's
+        // longer axis, where the boxes overlap less (a tall glyph's pieces
+        // share x ranges); "a" below is that axis, "b" the other. Which pairs
+        // are met does not depend on the order among equal keys, and the
+        // answers are combined order-independently.
+        Box all;
+        for (std::size_t k = 0; k < count; ++k) {
+          all.add(unsorted[k].box.min);
+          all.add(unsorted[k].box.max);
+        }
+        const bool along_y = all.max.y - all.min.y > all.max.x - all.min.x;
+        const double* const min_a = along_y ? min_y : min_x;
+        const double* const max_a = along_y ? max_y : max_x;
+        const double* const min_b = along_y ? min_x : min_y;
+        const double* const max_b = along_y ? max_x : max_y;
+        struct SortKey {
+          double min_a;
+          std::uint32_t ref;
+        };
+        thread_local std::vector<SortKey> keys;
+        keys.resize(count);
+        for (std::size_t k = 0; k < count; ++k) keys[k] = {min_a[k], static_cast<std::uint32_t>(k)};
+        std::sort(keys.begin(), keys.end(), [](const SortKey& a, const SortKey& b) { return a.min_a < b.min_a; });
+        // The sides again in sorted order (the scan reads them in a row).
+        thread_local std::vector<double> sorted_sides;
+        thread_local std::vector<std::uint32_t> candidates;
+        candidates.resize(count);
+        std::uint32_t* const candidate = candidates.data();
+        sorted_sides.resize(4 * count);
+        double* const s_min_a = sorted_sides.data();
+        double* const s_max_a = s_min_a + count;
+        double* const s_min_b = s_max_a + count;
+        double* const s_max_b = s_min_b + count;
+        for (std::size_t k = 0; k < count; ++k) {
+          const std::uint32_t r = keys[k].ref;
+          s_min_a[k] = min_a[r];
+          s_max_a[k] = max_a[r];
+          s_min_b[k] = min_b[r];
+          s_max_b[k] = max_b[r];
+        }
+        for (std::size_t i = 0; i < count; ++i) {
+          // Boxes after box i in the order start at or after its lower side
+          // along a: they overlap it along a while they start before its upper
+          // side, and then in both when their b ranges meet. (Pieces with the
+          // same end points have overlapping boxes.)
+          const double upper = s_max_a[i], low_b = s_min_b[i], high_b = s_max_b[i];
+          std::size_t found = 0;
+          for (std::size_t j = i + 1; j < count && s_min_a[j] <= upper; ++j) {
+            candidate[found] = keys[j].ref;
+            found += static_cast<std::size_t>((s_min_b[j] <= high_b) & (low_b <= s_max_b[j]));
+          }
+          for (std::size_t f = 0; f < found; ++f) test_pair(unsorted[keys[i].ref], unsorted[candidate[f]]);
+        }
       }
-    }
+      if (!overlap_left || aligned) break;
+      aligned = true;
+      bool changed = false;
+      for (Ring& ring : rings) {
+        // Each call fixes one tangency; a ring has at most one per vertex.
+        for (std::size_t fixes = 0, limit = 2 * ring.size() + 2; fixes < limit && align_tangent_legs(ring); ++fixes)
+          changed = true;
+      }
+      if (!changed) break;
+    }  // (the pass again, on the aligned rings)
     if (!any) {
       if (!overlap_left && crossing) *crossing = cross_seen;
       return !overlap_left;
