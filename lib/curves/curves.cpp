@@ -23,6 +23,27 @@ Vec2 evaluate(const Segment& s, double t) {
   return s.p[0];
 }
 
+namespace {
+
+// One de Casteljau step on a cubic's control points: head gets [0, t], tail
+// [t, 1] (split() and cubic_to_quadratics share it, so both give the same
+// points).
+void split_cubic(const Vec2 (&p)[4], double t, Vec2 (&head)[4], Vec2 (&tail)[4]) {
+  const Vec2 ab = lerp(p[0], p[1], t), bc = lerp(p[1], p[2], t), cd = lerp(p[2], p[3], t);
+  const Vec2 abc = lerp(ab, bc, t), bcd = lerp(bc, cd, t);
+  const Vec2 m = lerp(abc, bcd, t);
+  head[0] = p[0];
+  head[1] = ab;
+  head[2] = abc;
+  head[3] = m;
+  tail[0] = m;
+  tail[1] = bcd;
+  tail[2] = cd;
+  tail[3] = p[3];
+}
+
+}  // namespace
+
 std::pair<Segment, Segment> split(const Segment& s, double t) {
   switch (s.kind) {
     case Segment::Kind::Line: {
@@ -47,10 +68,9 @@ std::pair<Segment, Segment> split(const Segment& s, double t) {
               Segment::conic(mid, q1 / q1w, s.p[2], q1w / root)};
     }
     case Segment::Kind::Cubic: {
-      const Vec2 ab = lerp(s.p[0], s.p[1], t), bc = lerp(s.p[1], s.p[2], t), cd = lerp(s.p[2], s.p[3], t);
-      const Vec2 abc = lerp(ab, bc, t), bcd = lerp(bc, cd, t);
-      const Vec2 m = lerp(abc, bcd, t);
-      return {Segment::cubic(s.p[0], ab, abc, m), Segment::cubic(m, bcd, cd, s.p[3])};
+      Vec2 head[4], tail[4];
+      split_cubic(s.p, t, head, tail);
+      return {Segment::cubic(head[0], head[1], head[2], head[3]), Segment::cubic(tail[0], tail[1], tail[2], tail[3])};
     }
   }
   return {s, s};
@@ -94,23 +114,15 @@ int cubic_to_quadratics(const Segment& cubic, double tolerance, std::vector<Segm
   if (!(tolerance > 0.0) && single_error > 0.0) pieces = tolerance::kMaxQuadraticsPerCubic;
   pieces = std::clamp(pieces, 1, tolerance::kMaxQuadraticsPerCubic);
 
-  // De Casteljau on plain points, as split() does for a cubic (the same
-  // arithmetic, so the same results), without copying Segments around.
+  // De Casteljau on plain points (no Segments copied around).
   Vec2 rest[4] = {a, b, c, d};
   for (int i = 0; i < pieces; ++i) {
     Vec2 piece[4] = {rest[0], rest[1], rest[2], rest[3]};
     const int remaining = pieces - i;
     if (remaining > 1) {
-      const double t = 1.0 / remaining;
-      const Vec2 ab = lerp(rest[0], rest[1], t), bc = lerp(rest[1], rest[2], t), cd = lerp(rest[2], rest[3], t);
-      const Vec2 abc = lerp(ab, bc, t), bcd = lerp(bc, cd, t);
-      const Vec2 m = lerp(abc, bcd, t);
-      piece[1] = ab;
-      piece[2] = abc;
-      piece[3] = m;
-      rest[0] = m;
-      rest[1] = bcd;
-      rest[2] = cd;
+      Vec2 tail[4];
+      split_cubic(rest, 1.0 / remaining, piece, tail);
+      std::copy(tail, tail + 4, rest);
     }
     // Written in place (see Outline::line_to for why not a copied temporary).
     Segment& quadratic = out.emplace_back();

@@ -68,26 +68,34 @@ void Outline::clear() {
   open_ = false;
 }
 
-// The segments are written field by field where they are stored, not built
-// in a temporary and copied: the copy reads the temporary back in 16-byte
-// loads over the 1-byte store of its kind, which the CPU cannot forward from
-// its store buffer (a stall of a dozen cycles or more per load; measured:
-// these three functions were 40% of loading a glyph's outline).
+namespace {
+
+// Appends a segment of `kind` starting at `start` and returns it for its
+// other points. Segments are written field by field where they are stored,
+// not built in a temporary and copied: the copy reads the temporary back in
+// 16-byte loads over the 1-byte store of its kind, which the CPU cannot
+// forward from its store buffer (a stall of a dozen cycles or more per load;
+// measured: line_to, conic_to and cubic_to were 40% of loading a glyph's
+// outline when they copied).
+Segment& append(std::vector<Segment>& segments, Segment::Kind kind, Vec2 start) {
+  Segment& s = segments.emplace_back();
+  s.kind = kind;
+  s.p[0] = start;
+  return s;
+}
+
+}  // namespace
+
 void Outline::line_to(Vec2 p) {
   if (!open_) move_to(pen_);
   if (p == pen_) return;  // a zero-length line adds nothing to the fill
-  Segment& s = contours_.back().segments.emplace_back();
-  s.kind = Segment::Kind::Line;
-  s.p[0] = pen_;
-  s.p[1] = p;
+  append(contours_.back().segments, Segment::Kind::Line, pen_).p[1] = p;
   pen_ = p;
 }
 
 void Outline::conic_to(Vec2 control, Vec2 p, double weight) {
   if (!open_) move_to(pen_);
-  Segment& s = contours_.back().segments.emplace_back();
-  s.kind = Segment::Kind::Conic;
-  s.p[0] = pen_;
+  Segment& s = append(contours_.back().segments, Segment::Kind::Conic, pen_);
   s.p[1] = control;
   s.p[2] = p;
   s.weight = weight;
@@ -96,9 +104,7 @@ void Outline::conic_to(Vec2 control, Vec2 p, double weight) {
 
 void Outline::cubic_to(Vec2 c1, Vec2 c2, Vec2 p) {
   if (!open_) move_to(pen_);
-  Segment& s = contours_.back().segments.emplace_back();
-  s.kind = Segment::Kind::Cubic;
-  s.p[0] = pen_;
+  Segment& s = append(contours_.back().segments, Segment::Kind::Cubic, pen_);
   s.p[1] = c1;
   s.p[2] = c2;
   s.p[3] = p;
@@ -107,11 +113,7 @@ void Outline::cubic_to(Vec2 c1, Vec2 c2, Vec2 p) {
 
 void Outline::close() {
   if (!open_) return;
-  if (!(pen_ == start_)) {
-    Segment& s = contours_.back().segments.emplace_back();  // (in place, as in line_to)
-    s.p[0] = pen_;
-    s.p[1] = start_;
-  }
+  if (!(pen_ == start_)) append(contours_.back().segments, Segment::Kind::Line, pen_).p[1] = start_;
   if (contours_.back().segments.empty()) {
     spare_.push_back(std::move(contours_.back()));
     contours_.pop_back();

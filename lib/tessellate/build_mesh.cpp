@@ -649,7 +649,7 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
         const std::size_t end = std::min(count, base + 64);
         std::uint64_t hits = 0;
         std::size_t j = std::max(base, from & ~std::size_t{1});
-  #if defined(__SSE2__)
+#if defined(__SSE2__)
         const __m128d vl = _mm_set1_pd(left), vr = _mm_set1_pd(right), vb = _mm_set1_pd(bottom), vt = _mm_set1_pd(top);
         for (; j + 2 <= end; j += 2) {
           const __m128d in_x =
@@ -658,7 +658,7 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
               _mm_and_pd(_mm_cmple_pd(_mm_loadu_pd(min_y + j), vt), _mm_cmple_pd(vb, _mm_loadu_pd(max_y + j)));
           hits |= static_cast<std::uint64_t>(_mm_movemask_pd(_mm_and_pd(in_x, in_y))) << (j - base);
         }
-  #endif
+#endif
         for (; j < end; ++j) {
           const bool meets = (min_x[j] <= right) & (left <= max_x[j]) & (min_y[j] <= top) & (bottom <= max_y[j]);
           hits |= static_cast<std::uint64_t>(meets) << (j - base);

@@ -66,9 +66,10 @@ inline int incircle_sign(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   const double blift = bdx * bdx + bdy * bdy;
   const double clift = cdx * cdx + cdy * cdy;
   const double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
-  auto abs = [](double v) { return std::fabs(v); };  // branch-free, as in orient2d
-  const double permanent = (abs(bdxcdy) + abs(cdxbdy)) * alift + (abs(cdxady) + abs(adxcdy)) * blift +
-                           (abs(adxbdy) + abs(bdxady)) * clift;
+  // (fabs, not a branch on the sign, as in orient2d.)
+  const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
+                           (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
+                           (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
   constexpr double kEps = 0x1p-53;
   constexpr double kIccErrBoundA = (10.0 + 96.0 * kEps) * kEps;
   const double errbound = kIccErrBoundA * permanent;
