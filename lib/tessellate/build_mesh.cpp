@@ -518,6 +518,46 @@ bool hulls_overlap(const Vec2* p, int np, const Vec2* q, int nq) {
   return np == 3 && nq == 3 && triangle_interiors_intersect(p, q);
 }
 
+namespace {
+
+// Certain sign of cross(x, y) for x and y differences from a common point v:
+// that is orient2d(x + v, y + v, v), with orient2d's filter (Shewchuk's bound
+// covers the rounding of the differences too); 0 when the filter cannot
+// decide (or an overflow made the products infinite). Written without
+// branches.
+int certain_cross_sign(Vec2 x, Vec2 y) {
+  constexpr double kEps = 0x1p-53;
+  constexpr double kCcwErrBoundA = (3.0 + 16.0 * kEps) * kEps;
+  const double left = x.x * y.y, right = x.y * y.x, det = left - right;
+  const double errbound = kCcwErrBoundA * (std::fabs(left) + std::fabs(right));
+  return static_cast<int>(det > errbound) - static_cast<int>(-det > errbound);
+}
+
+// Consecutive pieces of a ring, p (a -> v, control c when a conic) and q
+// (v -> b, control d): true when their hulls certainly meet only at v, so
+// that their pair test would find nothing (no overlap, and for two lines no
+// run along each other). A line through v separates them: p's chord (v, a)
+// with b and d strictly on one side and c strictly on the other, or q's
+// chord (v, b) likewise. At a glyph's smooth joins (legs on one line through
+// v) and corners one of the two chords does. Decided in straight-line code
+// from five signs: a ring's consecutive pairs are most of the pairs whose
+// boxes meet, and the branches of the general test, taken in a data-dependent
+// order, cost more than these few products.
+bool joint_apart(Vec2 a, Vec2 c, bool p_conic, Vec2 v, Vec2 d, bool q_conic, Vec2 b) {
+  const Vec2 va = a - v, vb = b - v;
+  // A line's missing control stands in as its other end: the conditions on
+  // it then hold by themselves.
+  const Vec2 vc = p_conic ? c - v : va, vd = q_conic ? d - v : vb;
+  const int ab = certain_cross_sign(va, vb);
+  const int ad = certain_cross_sign(va, vd), ac = certain_cross_sign(va, vc);
+  const int bc = certain_cross_sign(vb, vc), bd = certain_cross_sign(vb, vd);
+  const bool by_p_chord = (ad == ab) & ((!p_conic) | (ac == -ab));
+  const bool by_q_chord = (bc == -ab) & ((!q_conic) | (bd == ab));
+  return (ab != 0) & (by_p_chord | by_q_chord);
+}
+
+}  // namespace
+
 // Up to this many pieces hull separation tests every pair's boxes instead
 // of sorting them first (measured: as fast up to about 96 pieces, faster
 // below).
@@ -595,6 +635,34 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
       // which would make every access through the thread-local vectors reload
       // them.)
       char* const marks = split_marks.data();
+      // Consecutive pieces whose hulls certainly meet only at their common
+      // vertex (joint_apart): their pair is left out of the tests below.
+      thread_local std::vector<std::uint32_t> next_piece, previous_piece;
+      thread_local std::vector<char> apart_from_next;
+      next_piece.resize(count);
+      previous_piece.resize(count);
+      apart_from_next.resize(count);
+      for (std::size_t r = 0; r < rings.size(); ++r) {
+        const std::size_t first = mark_base[r], end = mark_base[r + 1];
+        for (std::size_t k = first; k < end; ++k) {
+          const std::size_t next = k + 1 < end ? k + 1 : first;
+          const HullRef &p = unsorted[k], &q = unsorted[next];
+          next_piece[k] = static_cast<std::uint32_t>(next);
+          previous_piece[next] = static_cast<std::uint32_t>(k);
+          apart_from_next[k] = static_cast<char>(
+              joint_apart(p.hull[0], p.hull[1], p.n == 3, q.hull[0], q.hull[1], q.n == 3, q.end()));
+        }
+      }
+      // The bits of the block at base for the pieces consecutive to piece i
+      // and apart from it (no branch: an index outside the block wraps to a
+      // large unsigned difference).
+      auto joints_apart = [&](std::size_t i, std::size_t base) -> std::uint64_t {
+        const std::size_t next = next_piece[i] - base, previous = previous_piece[i] - base;
+        const std::uint64_t next_bit = static_cast<std::uint64_t>((apart_from_next[i] != 0) & (next < 64)) << (next & 63);
+        const std::uint64_t previous_bit = static_cast<std::uint64_t>((apart_from_next[previous_piece[i]] != 0) & (previous < 64))
+                                           << (previous & 63);
+        return next_bit | previous_bit;
+      };
       auto test_pair = [&](const HullRef& ri, const HullRef& rj) {
         const bool ci = ri.n == 3, cj = rj.n == 3;
         if (!ci && !cj) {
@@ -687,13 +755,14 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
         for (const std::uint32_t i : fresh_refs) {
           for (std::size_t base = 0; base < count; base += 64) {
             const std::uint64_t others = after(i, base) | (before(i, base) & ~fresh_words[base / 64]);
-            test_hits(i, base, meets_block(i, base, base) & others);
+            test_hits(i, base, meets_block(i, base, base) & others & ~joints_apart(i, base));
           }
         }
       } else if (count <= kAllPairsLimit) {
         // A glyph's few dozen pieces: every pair's boxes, which costs less
         // than sorting them (a sort's branches are unpredictable too).
-        for (std::size_t i = 0; i < count; ++i) test_hits(i, 0, meets_block(i, 0, i + 1) & after(i, 0));  // one block
+        for (std::size_t i = 0; i < count; ++i)
+          test_hits(i, 0, meets_block(i, 0, i + 1) & after(i, 0) & ~joints_apart(i, 0));  // one block
       } else {
         // Sweep and prune: sorted by the boxes' lower sides along the glyph's
         // longer axis, where the boxes overlap less (a tall glyph's pieces
