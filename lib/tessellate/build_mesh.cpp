@@ -581,6 +581,16 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
   // "no overlap, no crossing" when that pass found no crossing and no overlap
   // it could not split (otherwise the pass tests every pair again).
   bool test_all = true;
+  // The overlapping pairs of the pass (ref indices: first piece << 32 |
+  // second), and those of the pass before with where each of its pieces went
+  // (piece k became pieces child_first[k], plus child_first[k] + 1 when it
+  // was split). A pass that tests only fresh pieces tests just the children
+  // of the pairs that overlapped before: a child's hull lies in its parent's,
+  // so a child can only overlap what its parent overlapped (its sibling and
+  // its ring neighbours it meets only at their common vertex), and a piece
+  // that is not split and overlapped nothing before has not changed.
+  thread_local std::vector<std::uint64_t> overlaps, partners;
+  thread_local std::vector<std::uint32_t> child_first;
   for (Ring& ring : rings)
     for (Piece& piece : ring) piece.fresh = true;
   for (int pass = 0; pass <= tolerance::kMaxHullSubdivisionDepth; ++pass) {
@@ -600,6 +610,10 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
     // without one has nothing to align. The result is that of aligning
     // first; the usual glyph skips the alignment scan.
     for (bool aligned = false;;) {
+      // (After aligning, pieces may have been inserted and the pairs of the
+      // pass before no longer name them: the pass then scans the boxes.)
+      const bool by_partners = !test_all && !aligned;
+      overlaps.clear();
       any = false;
       overlap_left = false;
       unsplit_overlap = false;
@@ -642,7 +656,7 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
       next_piece.resize(count);
       previous_piece.resize(count);
       apart_from_next.resize(count);
-      for (std::size_t r = 0; r < rings.size(); ++r) {
+      for (std::size_t r = 0; r < rings.size() && !by_partners; ++r) {
         const std::size_t first = mark_base[r], end = mark_base[r + 1];
         for (std::size_t k = first; k < end; ++k) {
           const std::size_t next = k + 1 < end ? k + 1 : first;
@@ -678,6 +692,7 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
         // splitting them is useless, the crossing resolver merges them.
         if (same_ends && ci && cj && ri.hull[1] == rj.hull[1] && ri.weight == rj.weight) return;
         if (!hulls_overlap(ri.hull, ri.n, rj.hull, rj.n)) return;
+        overlaps.push_back(static_cast<std::uint64_t>(ri.mark) << 32 | rj.mark);
         // Subdividing a conic shrinks its hull towards the arc; lines stay.
         bool split_one = false;
         if (ci && ri.depth < tolerance::kMaxHullSubdivisionDepth) {
@@ -701,7 +716,7 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
       double* const max_x = min_x + count;
       double* const min_y = max_x + count;
       double* const max_y = min_y + count;
-      for (std::size_t k = 0; k < count; ++k) {
+      for (std::size_t k = 0; k < count && !by_partners; ++k) {
         const Box& b = unsorted[k].box;
         min_x[k] = b.min.x;
         max_x[k] = b.max.x;
@@ -746,7 +761,13 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
         for (; hits != 0; hits &= hits - 1)
           test_pair(unsorted[i], unsorted[base + static_cast<std::size_t>(std::countr_zero(hits))]);
       };
-      if (!test_all) {
+      if (by_partners) {
+        for (const std::uint64_t pair : partners) {
+          const std::size_t p = pair >> 32, q = pair & 0xffffffffu;
+          for (std::size_t cp = child_first[p]; cp < child_first[p + 1]; ++cp)
+            for (std::size_t cq = child_first[q]; cq < child_first[q + 1]; ++cq) test_pair(unsorted[cp], unsorted[cq]);
+        }
+      } else if (!test_all) {
         // Each fresh piece against every piece whose box meets its own (a
         // fresh pair once, from its first piece).
         thread_local std::vector<std::uint64_t> fresh_words;
@@ -833,6 +854,11 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
       return !overlap_left;
     }
     test_all = unsplit_overlap || (crossing != nullptr && cross_seen);
+    child_first.resize(split_marks.size() + 1);
+    child_first[0] = 0;
+    for (std::size_t k = 0; k < split_marks.size(); ++k)
+      child_first[k + 1] = child_first[k] + 1 + static_cast<std::uint32_t>(split_marks[k]);
+    partners.swap(overlaps);
     for (std::size_t r = 0; r < rings.size(); ++r) {
       const char* ring_marks = split_marks.data() + mark_base[r];
       for (Piece& piece : rings[r]) piece.fresh = false;

@@ -74,9 +74,10 @@ void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std:
 // makes: planar and manifold, every edge of a loop on exactly one triangle
 // and every other edge on two. The constrained edges are then exactly the
 // edges with one triangle, which are never flipped, so no list is needed;
-// triangle adjacency comes from short per-vertex lists of outgoing
-// half-edges instead of a hash table, and a flip never checks whether the new diagonal exists (in a
-// planar triangulation the diagonal of a convex quad cannot).
+// triangle adjacency comes from a table indexed by an edge's two vertices (a
+// hash of them for large meshes), and a flip never checks whether the new
+// diagonal exists (in a planar triangulation the diagonal of a convex quad
+// cannot).
 void delaunay_flips_manifold(const std::vector<Vec2>& points, std::vector<std::array<std::uint32_t, 3>>& triangles);
 
 }  // namespace curvetext::detail
