@@ -331,6 +331,38 @@ TEST(BuildMesh, HoleTouchingOuterAtAVertex) {
   build_and_check(o, 100.0 - 10.0);
 }
 
+// The sweep's path numbers positions as they come; where loops touch it gives
+// up, and the loops are made again with one index per position. A contour
+// with a bulging curve touching a square at the curve's end point: the
+// shared corner must be one vertex of the mesh (watertight across it).
+TEST(BuildMesh, TouchingContoursWithACurveShareTheirVertex) {
+  Outline o;
+  o.move_to({0, 0});
+  o.line_to({10, 0});
+  o.conic_to({15, 5}, {10, 10});  // bulges right: cap 2/3 of the 25 of its control triangle
+  o.line_to({0, 10});
+  o.close();
+  add_polygon(o, square(10, 10, 10, true));  // touches the first contour at (10, 10) only
+  const Mesh mesh = build_and_check(o, 100.0 + 50.0 / 3.0 + 100.0);
+  EXPECT_EQ(std::count(mesh.points.begin(), mesh.points.end(), Vec2{10, 10}), 1);
+  EXPECT_EQ(mesh.curves.size(), 1u);
+}
+
+// A convex curve's control point on another contour's vertex (their hulls
+// share just that point): the mesh is valid whether or not the two positions
+// share an index (the control point is in no triangle).
+TEST(BuildMesh, ConvexControlPointOnAnotherContoursVertex) {
+  Outline o;
+  o.move_to({0, 0});
+  o.line_to({10, 0});
+  o.conic_to({15, 5}, {10, 10});
+  o.line_to({0, 10});
+  o.close();
+  add_polygon(o, square(15, 5, 10, true));  // its corner (15, 5) is the control point
+  const Mesh mesh = build_and_check(o, 100.0 + 50.0 / 3.0 + 100.0);
+  EXPECT_EQ(mesh.curves.size(), 1u);
+}
+
 // Cells (x, y) of an n x n board with x + y even (the dark squares of a
 // checkerboard), size `cell`, drawn as ONE contour: each square is walked
 // counter-clockwise, and at a corner shared with a dark square not yet drawn

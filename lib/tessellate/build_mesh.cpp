@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <cstring>
 #include <map>
+#include <optional>
 #include <set>
 #include <span>
 #include <utility>
@@ -1130,53 +1131,77 @@ void build_mesh(const Outline& outline, const MeshOptions& options, Mesh& mesh) 
   thread_local std::vector<std::uint32_t> region_rings, region_start;
   nest_rings(rings, region_rings, region_start);
 
-  mesh.points.clear();
   mesh.triangles.clear();
-  mesh.curves.clear();
-  mesh.boundary_lines.clear();
   std::size_t piece_count = 0;
   for (const std::uint32_t r : region_rings) piece_count += rings[r].size();
-  PointIndex index(mesh.points, 2 * piece_count);
-  mesh.boundary_lines.reserve(piece_count);
-  mesh.curves.reserve(piece_count);
   // Every region's polygon loops as vertex indices (outer first, then its
   // holes): loop l is loop_vertices[loop_start[l] .. loop_start[l + 1]).
   // Scratch reused across calls (no allocation per glyph once warm).
   thread_local std::vector<std::uint32_t> loop_vertices, loop_start;
-  loop_vertices.clear();
-  loop_vertices.reserve(2 * piece_count);
-  loop_start.assign(1, 0);
-  auto polygonise = [&](const Ring& ring) {
-    // Piece i starts where piece i - 1 ends: its index is carried over
-    // (the same lookups in the same order, minus the repeats).
-    std::uint32_t next_ia = ring.empty() ? 0 : index(ring[0].a);
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-      const Piece& p = ring[i];
-      const std::uint32_t ia = next_ia, ib = index(ring_end(ring, i));
-      next_ia = ib;
-      loop_vertices.push_back(ia);
-      if (!p.conic) {
-        mesh.boundary_lines.push_back({ia, ib});
-        continue;
-      }
-      // Filled side is on the left: a control point on the right of the
-      // chord bulges out (convex, the polygon keeps the chord), on the left
-      // it bulges in (concave, the polygon goes through the control point).
-      const bool convex = orient2d(p.a, ring_end(ring, i), p.control) <= 0;
-      const std::uint32_t ic = index(p.control);
-      mesh.curves.push_back({ia, ic, ib, p.weight, convex});
-      if (!convex) loop_vertices.push_back(ic);
-    }
-    loop_start.push_back(static_cast<std::uint32_t>(loop_vertices.size()));
-  };
   thread_local std::vector<std::size_t> region_first_loop;
-  region_first_loop.clear();
-  for (std::size_t r = 0; r + 1 < region_start.size(); ++r) {
+  // Positions get vertex indices in order of first use. `index` gives a
+  // position its index: a PointIndex (one index per distinct position), or,
+  // where the loops go to the sweep, simply the next one: a ring passes
+  // through each of its vertices once (clean_rings), and the sweep gives up
+  // where a position repeats among the loops (rings that touch), so the
+  // table is only needed when it does, and the loops are then made again
+  // with it. (A convex curve's control point, which no loop holds, may then
+  // keep an index of its own where it coincides with another point; nothing
+  // joins the two.)
+  auto make_loops = [&](auto&& index) {
+    mesh.points.clear();
+    mesh.curves.clear();
+    mesh.boundary_lines.clear();
+    mesh.points.reserve(2 * piece_count);
+    mesh.boundary_lines.reserve(piece_count);
+    mesh.curves.reserve(piece_count);
+    loop_vertices.clear();
+    loop_vertices.reserve(2 * piece_count);
+    loop_start.assign(1, 0);
+    auto polygonise = [&](const Ring& ring) {
+      // Piece i starts where piece i - 1 ends: its index is carried over,
+      // and the last piece ends where the first starts.
+      const std::uint32_t first_index = ring.empty() ? 0 : index(ring[0].a);
+      std::uint32_t next_ia = first_index;
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        const Piece& p = ring[i];
+        const std::uint32_t ia = next_ia, ib = i + 1 < ring.size() ? index(ring[i + 1].a) : first_index;
+        next_ia = ib;
+        loop_vertices.push_back(ia);
+        if (!p.conic) {
+          mesh.boundary_lines.push_back({ia, ib});
+          continue;
+        }
+        // Filled side is on the left: a control point on the right of the
+        // chord bulges out (convex, the polygon keeps the chord), on the left
+        // it bulges in (concave, the polygon goes through the control point).
+        const bool convex = orient2d(p.a, ring_end(ring, i), p.control) <= 0;
+        const std::uint32_t ic = index(p.control);
+        mesh.curves.push_back({ia, ic, ib, p.weight, convex});
+        if (!convex) loop_vertices.push_back(ic);
+      }
+      loop_start.push_back(static_cast<std::uint32_t>(loop_vertices.size()));
+    };
+    region_first_loop.clear();
+    for (std::size_t r = 0; r + 1 < region_start.size(); ++r) {
+      region_first_loop.push_back(loop_start.size() - 1);
+      for (std::uint32_t k = region_start[r]; k < region_start[r + 1]; ++k) polygonise(rings[region_rings[k]]);
+    }
     region_first_loop.push_back(loop_start.size() - 1);
-    for (std::uint32_t k = region_start[r]; k < region_start[r + 1]; ++k) polygonise(rings[region_rings[k]]);
+  };
+  std::optional<PointIndex> index;  // made when the general path needs it
+  auto make_indexed_loops = [&] {
+    index.emplace(mesh.points, 2 * piece_count);
+    make_loops(*index);
+  };
+  if (simple_edges) {
+    make_loops([&](Vec2 p) {
+      mesh.points.push_back(p);
+      return static_cast<std::uint32_t>(mesh.points.size() - 1);
+    });
+  } else {
+    make_indexed_loops();
   }
-  region_first_loop.push_back(loop_start.size() - 1);
-  recycle_rings(rings);
 
   // Fast path: loops that neither cross nor touch are triangulated by one
   // sweep (which gives up where a position repeats: touching loops). Loops
@@ -1207,6 +1232,8 @@ void build_mesh(const Outline& outline, const MeshOptions& options, Mesh& mesh) 
       mesh.triangles.clear();
     }
   }
+  if (!swept && !index) make_indexed_loops();
+  recycle_rings(rings);
   if (!swept) {
     thread_local std::vector<std::array<Vec2, 3>> triangle_points;
     triangle_points.clear();
@@ -1228,7 +1255,7 @@ void build_mesh(const Outline& outline, const MeshOptions& options, Mesh& mesh) 
       }
     }
     mesh.triangles.reserve(triangle_points.size());
-    for (const auto& t : triangle_points) mesh.triangles.push_back({index(t[0]), index(t[1]), index(t[2])});
+    for (const auto& t : triangle_points) mesh.triangles.push_back({(*index)(t[0]), (*index)(t[1]), (*index)(t[2])});
   }
   if (swept) {
     delaunay_flips_manifold(mesh.points, mesh.triangles);
