@@ -914,6 +914,64 @@ TEST(Sweep, GivesUpOnTouchingAndDegenerateLoops) {
   EXPECT_TRUE(gives_up(two_points));
 }
 
+// build_mesh hands the sweep the rings oriented by the ring through the
+// lowest vertex alone, before any nesting; loops whose orientation does not
+// fit that must make it give up (then nest_rings orients them).
+TEST(Sweep, GivesUpOnLoopsOrientedAgainstTheirNesting) {
+  auto gives_up = [](const Loops& loops) {
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    bool repeated = true;
+    const bool ok = detail::sweep_triangulate(loops.points, loops.vertices, loops.start, triangles, &repeated);
+    EXPECT_FALSE(repeated);
+    EXPECT_TRUE(triangles.empty());
+    return !ok;
+  };
+  Loops nested_same_way;  // a counter-clockwise square inside another: winding 2 inside
+  nested_same_way.add(square(0, 0, 10, true), false);
+  nested_same_way.add(square(3, 3, 4, true), false);
+  EXPECT_TRUE(gives_up(nested_same_way));
+  Loops hole_outside;  // a clockwise square beside a counter-clockwise one: fill outside it
+  hole_outside.add(square(0, 0, 10, true), false);
+  hole_outside.add(square(20, 0, 10, false), true);
+  EXPECT_TRUE(gives_up(hole_outside));
+  Loops hole_in_hole;  // a clockwise square inside a hole
+  hole_in_hole.add(square(0, 0, 10, true), false);
+  hole_in_hole.add(square(2, 2, 6, false), true);
+  hole_in_hole.add(square(4, 4, 2, false), true);
+  EXPECT_TRUE(gives_up(hole_in_hole));
+  Loops island;  // and what is right: an island in a hole, fill on every loop's left
+  island.add(square(0, 0, 10, true), false);
+  island.add(square(2, 2, 6, false), true);
+  island.add(square(4, 4, 2, true), false);
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  ASSERT_TRUE(detail::sweep_triangulate(island.points, island.vertices, island.start, triangles));
+  expect_triangulation(island, triangles);
+}
+
+// The same outlines through build_mesh: the nonzero fill, whatever the
+// orientation of the ring through the lowest vertex.
+TEST(BuildMesh, RingsOrientedAgainstTheLowestRing) {
+  for (const bool ccw : {true, false}) {
+    Outline nested;  // winding 2 inside the inner square: the outer square only
+    add_polygon(nested, square(0, 0, 10, ccw));
+    add_polygon(nested, square(3, 3, 4, ccw));
+    build_and_check(nested, 100.0);
+    Outline apart;  // two squares apart, drawn in opposite directions: both filled
+    add_polygon(apart, square(0, 0, 10, ccw));
+    add_polygon(apart, square(20, 0, 10, !ccw));
+    build_and_check(apart, 200.0);
+    Outline hole_in_hole;  // winding 1, 0, -1: the inner square is filled again
+    add_polygon(hole_in_hole, square(0, 0, 10, ccw));
+    add_polygon(hole_in_hole, square(2, 2, 6, !ccw));
+    add_polygon(hole_in_hole, square(4, 4, 2, !ccw));
+    build_and_check(hole_in_hole, 100.0 - 36.0 + 4.0);
+    Outline with_hole;  // the usual glyph: a hole in the other direction
+    add_polygon(with_hole, square(0, 0, 10, ccw));
+    add_polygon(with_hole, square(2, 2, 6, !ccw));
+    build_and_check(with_hole, 100.0 - 36.0);
+  }
+}
+
 // Flips on the sweep's triangulation: the manifold version gives the same
 // triangles as the general one (no four points cocircular with random real
 // coordinates, so the constrained Delaunay triangulation is unique), and the

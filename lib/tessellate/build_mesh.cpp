@@ -1126,19 +1126,18 @@ void build_mesh(const Outline& outline, const MeshOptions& options, Mesh& mesh) 
     bool still_crossing = true;
     simple_edges = separate_hulls(rings, &still_crossing) && !still_crossing;
   }
+  mesh.triangles.clear();
+  // Polygon loops as vertex indices, grouped by region when nest_rings has
+  // made regions (outer loop first, then its holes): loop l is
+  // loop_vertices[loop_start[l] .. loop_start[l + 1]), region r's loops are
+  // region_first_loop[r] .. region_first_loop[r + 1]. Scratch reused across
+  // calls (no allocation per glyph once warm).
+  thread_local std::vector<std::uint32_t> loop_vertices, loop_start;
+  thread_local std::vector<std::size_t> region_first_loop;
   // Region r is rings region_rings[region_start[r] .. region_start[r + 1]):
   // its outer ring, then its holes.
   thread_local std::vector<std::uint32_t> region_rings, region_start;
-  nest_rings(rings, region_rings, region_start);
-
-  mesh.triangles.clear();
   std::size_t piece_count = 0;
-  for (const std::uint32_t r : region_rings) piece_count += rings[r].size();
-  // Every region's polygon loops as vertex indices (outer first, then its
-  // holes): loop l is loop_vertices[loop_start[l] .. loop_start[l + 1]).
-  // Scratch reused across calls (no allocation per glyph once warm).
-  thread_local std::vector<std::uint32_t> loop_vertices, loop_start;
-  thread_local std::vector<std::size_t> region_first_loop;
   // Positions get vertex indices in order of first use. `index` gives a
   // position its index: a PointIndex (one index per distinct position), or,
   // where the loops go to the sweep, simply the next one: a ring passes
@@ -1147,8 +1146,9 @@ void build_mesh(const Outline& outline, const MeshOptions& options, Mesh& mesh) 
   // table is only needed when it does, and the loops are then made again
   // with it. (A convex curve's control point, which no loop holds, may then
   // keep an index of its own where it coincides with another point; nothing
-  // joins the two.)
-  auto make_loops = [&](auto&& index) {
+  // joins the two.) `reversed`: every ring is walked backwards (the fill is
+  // on its right), as nest_rings's reverse_ring would turn it.
+  auto make_loops = [&](auto&& index, bool reversed) {
     mesh.points.clear();
     mesh.curves.clear();
     mesh.boundary_lines.clear();
@@ -1159,13 +1159,18 @@ void build_mesh(const Outline& outline, const MeshOptions& options, Mesh& mesh) 
     loop_vertices.reserve(2 * piece_count);
     loop_start.assign(1, 0);
     auto polygonise = [&](const Ring& ring) {
-      // Piece i starts where piece i - 1 ends: its index is carried over,
-      // and the last piece ends where the first starts.
-      const std::uint32_t first_index = ring.empty() ? 0 : index(ring[0].a);
+      // Piece k of the walk is ring[k], or backwards ring[n - 1 - k] from its
+      // end to its start (reverse_ring's order: the walk starts at ring[0].a
+      // either way). Piece k starts where piece k - 1 ends: its index is
+      // carried over, and the last piece ends where the first starts.
+      const std::size_t n = ring.size();
+      const std::uint32_t first_index = n == 0 ? 0 : index(ring[0].a);
       std::uint32_t next_ia = first_index;
-      for (std::size_t i = 0; i < ring.size(); ++i) {
-        const Piece& p = ring[i];
-        const std::uint32_t ia = next_ia, ib = i + 1 < ring.size() ? index(ring[i + 1].a) : first_index;
+      for (std::size_t k = 0; k < n; ++k) {
+        const Piece& p = reversed ? ring[n - 1 - k] : ring[k];
+        const Vec2 start = reversed ? ring_end(ring, n - 1 - k) : p.a;
+        const Vec2 end = reversed ? p.a : ring_end(ring, k);
+        const std::uint32_t ia = next_ia, ib = k + 1 < n ? index(end) : first_index;
         next_ia = ib;
         loop_vertices.push_back(ia);
         if (!p.conic) {
@@ -1175,64 +1180,87 @@ void build_mesh(const Outline& outline, const MeshOptions& options, Mesh& mesh) 
         // Filled side is on the left: a control point on the right of the
         // chord bulges out (convex, the polygon keeps the chord), on the left
         // it bulges in (concave, the polygon goes through the control point).
-        const bool convex = orient2d(p.a, ring_end(ring, i), p.control) <= 0;
+        const bool convex = orient2d(start, end, p.control) <= 0;
         const std::uint32_t ic = index(p.control);
         mesh.curves.push_back({ia, ic, ib, p.weight, convex});
         if (!convex) loop_vertices.push_back(ic);
       }
       loop_start.push_back(static_cast<std::uint32_t>(loop_vertices.size()));
     };
-    region_first_loop.clear();
-    for (std::size_t r = 0; r + 1 < region_start.size(); ++r) {
+    region_first_loop.assign(1, 0);
+    if (region_start.empty()) {
+      // No regions (see the fast path below): every ring, as one group.
+      for (const Ring& ring : rings) polygonise(ring);
       region_first_loop.push_back(loop_start.size() - 1);
-      for (std::uint32_t k = region_start[r]; k < region_start[r + 1]; ++k) polygonise(rings[region_rings[k]]);
+      return;
     }
-    region_first_loop.push_back(loop_start.size() - 1);
+    for (std::size_t r = 0; r + 1 < region_start.size(); ++r) {
+      for (std::uint32_t k = region_start[r]; k < region_start[r + 1]; ++k) polygonise(rings[region_rings[k]]);
+      region_first_loop.push_back(loop_start.size() - 1);
+    }
+  };
+  auto next_index = [&](Vec2 p) {
+    mesh.points.push_back(p);
+    return static_cast<std::uint32_t>(mesh.points.size() - 1);
   };
   std::optional<PointIndex> index;  // made when the general path needs it
-  auto make_indexed_loops = [&] {
-    index.emplace(mesh.points, 2 * piece_count);
-    make_loops(*index);
-  };
-  if (simple_edges) {
-    make_loops([&](Vec2 p) {
-      mesh.points.push_back(p);
-      return static_cast<std::uint32_t>(mesh.points.size() - 1);
-    });
-  } else {
-    make_indexed_loops();
-  }
-
-  // Fast path: loops that neither cross nor touch are triangulated by one
-  // sweep (which gives up where a position repeats: touching loops). Loops
-  // of fewer than three vertices (a line and a convex conic, two convex
-  // conics) enclose no polygon area and are left out, as ear_clip would
-  // leave them.
-  bool swept = false;
-  if (simple_edges) {
+  // Loops that neither cross nor touch are triangulated by one sweep (which
+  // gives up where a position repeats: touching loops). Loops of fewer than
+  // three vertices (a line and a convex conic, two convex conics) enclose no
+  // polygon area and are left out, as ear_clip would leave them.
+  auto sweep_loops = [&](bool* repeated) {
     thread_local std::vector<std::uint32_t> sweep_vertices, sweep_start;
     sweep_vertices.clear();
     sweep_start.assign(1, 0);
-    std::size_t expected_triangles = 0;
-    for (std::size_t r = 0; r + 1 < region_first_loop.size(); ++r) {
-      for (std::size_t l = region_first_loop[r]; l < region_first_loop[r + 1]; ++l) {
-        const std::uint32_t first = loop_start[l], last = loop_start[l + 1];
-        if (last - first < 3) continue;
-        sweep_vertices.insert(sweep_vertices.end(), loop_vertices.begin() + first, loop_vertices.begin() + last);
-        sweep_start.push_back(static_cast<std::uint32_t>(sweep_vertices.size()));
-        // n - 2 triangles per outer loop, n + 2 per hole (its two "bridges"):
-        // anything else means the loops broke the sweep's contract.
-        expected_triangles += l == region_first_loop[r] ? last - first - 2 : last - first + 2;
+    for (std::size_t l = 0; l + 1 < loop_start.size(); ++l) {
+      const std::uint32_t first = loop_start[l], last = loop_start[l + 1];
+      if (last - first < 3) continue;
+      sweep_vertices.insert(sweep_vertices.end(), loop_vertices.begin() + first, loop_vertices.begin() + last);
+      sweep_start.push_back(static_cast<std::uint32_t>(sweep_vertices.size()));
+    }
+    mesh.triangles.reserve(sweep_vertices.size() + 4 * sweep_start.size());
+    return sweep_triangulate(mesh.points, sweep_vertices, sweep_start, mesh.triangles, repeated);
+  };
+
+  // Fast path, without nesting: under the nonzero rule the ring through the
+  // lowest vertex (least y, then least x) is outermost and bounds the fill,
+  // so its orientation tells on which side of every ring the fill lies in a
+  // glyph whose rings are oriented consistently (outer rings one way, holes
+  // the other, as fonts draw them). The sweep checks that this holds (a
+  // loop starting inside the fill or a hole outside it, and a wrong
+  // triangle count, make it give up) and then nest_rings sorts the rings out.
+  bool swept = false;
+  bool repeated = false;
+  region_start.clear();
+  if (simple_edges && !rings.empty()) {
+    std::size_t lowest_ring = 0;
+    Vec2 lowest = rings[0].empty() ? Vec2{} : rings[0][0].a;
+    for (std::size_t r = 0; r < rings.size(); ++r) {
+      piece_count += rings[r].size();
+      for (const Piece& p : rings[r]) {
+        const bool below = (p.a.y < lowest.y) | ((p.a.y == lowest.y) & (p.a.x < lowest.x));
+        lowest = below ? p.a : lowest;
+        lowest_ring = below ? r : lowest_ring;
       }
     }
-    mesh.triangles.reserve(expected_triangles);
-    swept = sweep_triangulate(mesh.points, sweep_vertices, sweep_start, mesh.triangles);
-    if (swept && mesh.triangles.size() != expected_triangles) {
-      swept = false;
-      mesh.triangles.clear();
+    make_loops(next_index, ring_area(rings[lowest_ring]) < 0.0);
+    swept = sweep_loops(&repeated);
+  }
+  if (!swept) {
+    nest_rings(rings, region_rings, region_start);
+    piece_count = 0;
+    for (const std::uint32_t r : region_rings) piece_count += rings[r].size();
+    // The sweep again on the oriented rings (unless loops touch: then no
+    // orientation helps), else the general path with one index per position.
+    if (simple_edges && !repeated) {
+      make_loops(next_index, false);
+      swept = sweep_loops(nullptr);
+    }
+    if (!swept) {
+      index.emplace(mesh.points, 2 * piece_count);
+      make_loops(*index, false);
     }
   }
-  if (!swept && !index) make_indexed_loops();
   recycle_rings(rings);
   if (!swept) {
     thread_local std::vector<std::array<Vec2, 3>> triangle_points;

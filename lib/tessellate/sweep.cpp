@@ -56,6 +56,10 @@ class Sweep {
       : points_(points), vertices_(loop_vertices), start_(loop_start), out_(triangles) {}
 
   bool run();
+  // After run(): the number of triangles a valid input gives, and whether it
+  // gave up on a repeated position.
+  std::size_t expected_triangles() const { return expected_; }
+  bool repeated_position() const { return repeated_; }
 
  private:
   const std::vector<Vec2>& points_;
@@ -63,12 +67,15 @@ class Sweep {
   const std::vector<std::uint32_t>& start_;
   std::vector<std::array<std::uint32_t, 3>>& out_;
   bool ok_ = true;
+  bool repeated_ = false;
+  std::size_t expected_ = 0;
 
   // Per loop position: the neighbours in its loop, and the rank in sweep order.
   std::vector<std::uint32_t>& prev_ = scratch_u32(0);
   std::vector<std::uint32_t>& next_ = scratch_u32(1);
   std::vector<std::uint32_t>& rank_ = scratch_u32(2);
   std::vector<std::uint32_t>& order_ = scratch_u32(3);
+  std::vector<std::uint32_t>& loop_of_ = scratch_u32(4);  // per loop position: its loop
   // Per loop position: its point (one indirection fewer than points_[vertices_[i]]).
   std::vector<Vec2>& position_ = scratch<Vec2>();
   std::vector<Interval>& status_ = scratch<Interval>();
@@ -84,7 +91,7 @@ class Sweep {
     return v;
   }
   static std::vector<std::uint32_t>& scratch_u32(int k) {
-    thread_local std::vector<std::uint32_t> v[4];
+    thread_local std::vector<std::uint32_t> v[5];
     return v[k];
   }
 
@@ -175,6 +182,10 @@ class Sweep {
 };
 
 // Both edges above v, convex: a new interval [edge u -> v, edge v -> w].
+// v must lie outside the fill: inside an interval it would start a loop
+// nested in the fill with the fill's own orientation (winding 2 under the
+// nonzero rule, where that loop bounds nothing), which the caller's
+// orientation of the loops did not foresee.
 void Sweep::start(std::uint32_t v, std::uint32_t u) {
   const Vec2 p = at(v);
   std::size_t k = 0;
@@ -183,6 +194,8 @@ void Sweep::start(std::uint32_t v, std::uint32_t u) {
     if (s == 0) ok_ = false;
     if (s < 0) break;  // v is left of this interval (and outside every interval)
   }
+  // Right of interval k - 1's left edge: v must also be right of its right edge.
+  if (k > 0 && side_of_edge(status_[k - 1].right, p) >= 0) ok_ = false;
   Interval iv;
   iv.left = u;
   iv.right = v;
@@ -326,6 +339,7 @@ bool Sweep::run() {
   if (n >= kIndexMask) return false;
   prev_.resize(n);
   next_.resize(n);
+  loop_of_.resize(n);
   rank_.resize(n);
   position_.resize(n);
   // Sorted as (y, x) keys with their positions: each coordinate mapped to
@@ -352,21 +366,35 @@ bool Sweep::run() {
       next_[i] = i + 1 == last ? first : i + 1;
       const Vec2 p = points_[vertices_[i]];
       position_[i] = p;
+      loop_of_[i] = static_cast<std::uint32_t>(l);
       keys.push_back({static_cast<Uint128>(ordered(p.y)) << 64 | ordered(p.x), i});
     }
   }
   std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) { return a.yx < b.yx; });
   order_.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
-    if (k > 0 && keys[k - 1].yx == keys[k].yx) return false;  // repeated position
+    if (k > 0 && keys[k - 1].yx == keys[k].yx) {
+      repeated_ = true;
+      return false;
+    }
     order_[k] = keys[k].position;
     rank_[keys[k].position] = static_cast<std::uint32_t>(k);
   }
   status_.clear();
   free_stacks_.clear();
   stacks_used_ = 0;
+  // A loop's lowest vertex is its first in sweep order: a start vertex for a
+  // loop around fill (n - 2 triangles), a split vertex for a hole (n + 2:
+  // its two "bridges"). Any other count means the loops broke the contract.
+  const std::size_t loops = start_.size() - 1;
+  thread_local std::vector<char> loop_seen;
+  loop_seen.assign(loops, 0);
+  expected_ = n - 2 * loops;
   for (std::size_t k = 0; k < order_.size() && ok_; ++k) {
     const std::uint32_t v = order_[k], u = prev_[v], w = next_[v];
+    const std::uint32_t loop = loop_of_[v];
+    const bool lowest = loop_seen[loop] == 0;
+    loop_seen[loop] = 1;
     const bool u_below = rank_[u] < rank_[v], w_below = rank_[w] < rank_[v];
     if (u_below != w_below) {
       if (u_below) {
@@ -382,6 +410,7 @@ bool Sweep::run() {
       if (turn > 0) {
         start(v, u);
       } else {
+        expected_ += lowest ? 4 : 0;
         split(v, u);
       }
     } else if (turn > 0) {
@@ -397,10 +426,12 @@ bool Sweep::run() {
 
 bool sweep_triangulate(const std::vector<Vec2>& points, const std::vector<std::uint32_t>& loop_vertices,
                        const std::vector<std::uint32_t>& loop_start,
-                       std::vector<std::array<std::uint32_t, 3>>& triangles) {
+                       std::vector<std::array<std::uint32_t, 3>>& triangles, bool* repeated_position) {
   const std::size_t first_triangle = triangles.size();
   Sweep sweep(points, loop_vertices, loop_start, triangles);
-  if (sweep.run()) return true;
+  const bool ok = sweep.run() && triangles.size() - first_triangle == sweep.expected_triangles();
+  if (repeated_position != nullptr) *repeated_position = sweep.repeated_position();
+  if (ok) return true;
   triangles.resize(first_triangle);
   return false;
 }

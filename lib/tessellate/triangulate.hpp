@@ -52,10 +52,15 @@ bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& t
 // loop_vertices[loop_start[l] .. loop_start[l + 1]) (indices into `points`).
 // Returns false, appending nothing, when the input breaks the contract or any
 // decision is degenerate (a zero orientation where a strict one is needed);
-// the caller then uses bridge_holes and ear_clip.
+// the caller then uses bridge_holes and ear_clip. Loops oriented without
+// nest_rings are checked too: a loop starting inside the fill (nested with
+// the fill's orientation) or a hole outside it makes it return false, and so
+// does a triangle count other than n - 2 per loop around fill and n + 2 per
+// hole. `repeated_position`, when given, tells whether it gave up because a
+// position repeats (loops that touch: no orientation makes them sweepable).
 bool sweep_triangulate(const std::vector<Vec2>& points, const std::vector<std::uint32_t>& loop_vertices,
                        const std::vector<std::uint32_t>& loop_start,
-                       std::vector<std::array<std::uint32_t, 3>>& triangles);
+                       std::vector<std::array<std::uint32_t, 3>>& triangles, bool* repeated_position = nullptr);
 
 using EdgeKey = std::pair<std::uint32_t, std::uint32_t>;  // (min index, max index)
 inline EdgeKey edge_key(std::uint32_t a, std::uint32_t b) {
