@@ -543,17 +543,17 @@ int certain_cross_sign(Vec2 x, Vec2 y) {
 // v) and corners one of the two chords does. Decided in straight-line code
 // from five signs: a ring's consecutive pairs are most of the pairs whose
 // boxes meet, and the branches of the general test, taken in a data-dependent
-// order, cost more than these few products.
+// order, cost more than these few products. For a line p, c is taken as v,
+// for a line q, d as b (their hulls' middle points: no select between points,
+// which compiles to a branch on the piece kind); the conditions on a line's
+// control are then not asked.
 bool joint_apart(Vec2 a, Vec2 c, bool p_conic, Vec2 v, Vec2 d, bool q_conic, Vec2 b) {
-  const Vec2 va = a - v, vb = b - v;
-  // A line's missing control stands in as its other end: the conditions on
-  // it then hold by themselves.
-  const Vec2 vc = p_conic ? c - v : va, vd = q_conic ? d - v : vb;
+  const Vec2 va = a - v, vb = b - v, vc = c - v, vd = d - v;
   const int ab = certain_cross_sign(va, vb);
   const int ad = certain_cross_sign(va, vd), ac = certain_cross_sign(va, vc);
   const int bc = certain_cross_sign(vb, vc), bd = certain_cross_sign(vb, vd);
   const bool by_p_chord = (ad == ab) & ((!p_conic) | (ac == -ab));
-  const bool by_q_chord = (bc == -ab) & ((!q_conic) | (bd == ab));
+  const bool by_q_chord = ((!p_conic) | (bc == -ab)) & ((!q_conic) | (bd == ab));
   return (ab != 0) & (by_p_chord | by_q_chord);
 }
 
@@ -634,12 +634,16 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
         for (std::size_t i = 0; i < ring.size(); ++i) {
           const Piece& piece = ring[i];
           HullRef& ref = unsorted[mark_base[r] + i];
+          // Without branches on the piece kind (they follow the outline's
+          // unpredictable mix): a line's hull[1] and hull[2] are both its end.
+          const Vec2 end = ring[i + 1 < ring.size() ? i + 1 : 0].a;
           ref.hull[0] = piece.a;
-          ref.n = piece.conic ? 3 : 2;
-          if (piece.conic) ref.hull[1] = piece.control;
-          ref.hull[ref.n - 1] = i + 1 < ring.size() ? ring[i + 1].a : ring[0].a;
+          ref.n = 2 + static_cast<int>(piece.conic);
+          ref.hull[1] = piece.control;
+          ref.hull[2] = end;
+          ref.hull[ref.n - 1] = end;
           ref.box = Box{};
-          for (int k = 0; k < ref.n; ++k) ref.box.add(ref.hull[k]);
+          for (int k = 0; k < 3; ++k) ref.box.add(ref.hull[k]);
           ref.depth = piece.depth;
           ref.weight = piece.weight;
           ref.mark = mark_base[r] + i;
