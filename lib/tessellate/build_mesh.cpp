@@ -1,10 +1,12 @@
 // build_mesh: outline -> cleaned rings -> separated hulls -> (crossing,
 // overlapping or edge-sharing contours only: resolve.cpp's non-crossing rings
-// of the nonzero fill, hulls separated again) -> nesting and
-// orientation -> polygon loops + curved triangles -> triangles -> Lawson
-// flips -> indexed mesh (DESIGN.md section 4, paper 3.1). Loops that neither
-// cross nor touch (the usual glyph) are triangulated by one plane sweep
-// (sweep.cpp); the others are bridged and ear-clipped (triangulate.cpp).
+// of the nonzero fill, hulls separated again) -> orientation -> polygon
+// loops + curved triangles -> triangles -> Lawson flips -> indexed mesh
+// (DESIGN.md section 4, paper 3.1). Loops that neither cross nor touch (the
+// usual glyph) are triangulated by one plane sweep (sweep.cpp), first with
+// every ring oriented by the outermost one, which the sweep checks; where it
+// gives up, the rings are nested and oriented one by one (nest_rings) and
+// swept again, or bridged and ear-clipped (triangulate.cpp).
 #include <algorithm>
 #include <bit>
 #include <cmath>
