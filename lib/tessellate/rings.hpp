@@ -32,11 +32,12 @@ double ring_area(const Ring& ring);
 // Rings of the outline (cubics replaced by quadratics within
 // `cubic_tolerance`, as to_quadratic_outline does) with zero-length pieces,
 // flat conics, exact collinear runs and spikes removed, each split at its
-// repeated vertices into sub-rings that pass through every vertex once;
-// rings without area dropped. Replaces the contents of `rings`, whose old
-// rings go to a per-thread pool that the new ones draw from (their storage
-// is reused: no allocation per glyph once warm).
-void clean_rings(const Outline& outline, double cubic_tolerance, std::vector<Ring>& rings);
+// repeated vertices into sub-rings that pass through every vertex once
+// (unless split_repeated is false: build_mesh looks for such rings only where
+// they matter); rings without area dropped. Replaces the contents of `rings`,
+// whose old rings go to a per-thread pool that the new ones draw from (their
+// storage is reused: no allocation per glyph once warm).
+void clean_rings(const Outline& outline, double cubic_tolerance, std::vector<Ring>& rings, bool split_repeated = true);
 
 // True when two hulls (2 points: a segment; 3: a control triangle) share any
 // point other than a common vertex.
