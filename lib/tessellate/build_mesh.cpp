@@ -1253,17 +1253,28 @@ bool build_mesh_once(const Outline& outline, const MeshOptions& options, Mesh& m
   bool repeated = false;
   region_start.clear();
   if (simple_edges && !rings.empty()) {
-    std::size_t lowest_ring = 0;
+    std::size_t lowest_ring = 0, lowest_piece = 0;
     Vec2 lowest = rings[0].empty() ? Vec2{} : rings[0][0].a;
     for (std::size_t r = 0; r < rings.size(); ++r) {
       piece_count += rings[r].size();
-      for (const Piece& p : rings[r]) {
-        const bool below = (p.a.y < lowest.y) | ((p.a.y == lowest.y) & (p.a.x < lowest.x));
-        lowest = below ? p.a : lowest;
+      for (std::size_t i = 0; i < rings[r].size(); ++i) {
+        const Vec2 a = rings[r][i].a;
+        const bool below = (a.y < lowest.y) | ((a.y == lowest.y) & (a.x < lowest.x));
+        lowest = below ? a : lowest;
         lowest_ring = below ? r : lowest_ring;
+        lowest_piece = below ? i : lowest_piece;
       }
     }
-    make_loops(next_index, ring_area(rings[lowest_ring]) < 0.0);
+    // The ring's orientation is its chord polygon's (its caps cannot turn the
+    // sign: a concave cap lies inside the polygon, hull separation keeping
+    // it off the other pieces), read off the turn at the polygon's lowest
+    // vertex, which is convex; its area decides where the turn is flat (a
+    // ring of two pieces). A wrong answer would only make the sweep give up.
+    const Ring& ring = rings[lowest_ring];
+    const std::size_t n = ring.size();
+    const int turn = orient2d(ring[lowest_piece == 0 ? n - 1 : lowest_piece - 1].a, lowest,
+                              ring_end(ring, lowest_piece));
+    make_loops(next_index, turn != 0 ? turn < 0 : ring_area(ring) < 0.0);
     swept = sweep_loops(&repeated);
   }
   if (!swept) {
