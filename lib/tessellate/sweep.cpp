@@ -15,10 +15,12 @@
 // strict answer (a vertex on another loop's edge, a spike, a flat corner at a
 // start or end) makes it give up and return false; so do a repeated position
 // and a fan triangle that is not strictly counter-clockwise (the triangles
-// popped off a chain are strictly so by the test that pops them). build_mesh
-// also compares the triangle count with the polygon's (vertices - 2 per outer
-// loop + 2 per hole), and on any failure takes the general path (bridges and
-// ear clipping).
+// popped off a chain are strictly so by the test that pops them), a start
+// vertex inside the fill or a split vertex outside it (loops whose
+// orientation does not fit their nesting), and a triangle count other than
+// the polygon's (vertices - 2 per loop around fill, + 2 per hole). On any
+// failure build_mesh nests and orients the rings itself and then takes this
+// sweep again or the general path (bridges and ear clipping).
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
