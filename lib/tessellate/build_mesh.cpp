@@ -622,12 +622,10 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
       unsplit_overlap = false;
       cross_seen = crossing == nullptr;
       thread_local std::vector<HullRef> refs;
-      thread_local std::vector<std::uint32_t> fresh_refs;
       mark_base.assign(rings.size() + 1, 0);
       for (std::size_t r = 0; r < rings.size(); ++r) mark_base[r + 1] = mark_base[r] + rings[r].size();
       const std::size_t count = mark_base.back();
       split_marks.assign(count, 0);
-      fresh_refs.clear();
       // Grown, never shrunk: resize() would construct every record again.
       if (refs.size() < count) refs.resize(count);
       HullRef* const unsorted = refs.data();
@@ -649,7 +647,6 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
           ref.depth = piece.depth;
           ref.weight = piece.weight;
           ref.mark = mark_base[r] + i;
-          if (piece.fresh) fresh_refs.push_back(static_cast<std::uint32_t>(ref.mark));
         }
       }
       // (Raw pointers: the stores into the char marks may alias anything,
@@ -775,8 +772,14 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
             for (std::size_t cq = child_first[q]; cq < child_first[q + 1]; ++cq) test_pair(unsorted[cp], unsorted[cq]);
         }
       } else if (!test_all) {
-        // Each fresh piece against every piece whose box meets its own (a
-        // fresh pair once, from its first piece).
+        // (After aligning tangent legs in a pass that tests only fresh
+        // pieces.) Each fresh piece against every piece whose box meets its
+        // own (a fresh pair once, from its first piece).
+        thread_local std::vector<std::uint32_t> fresh_refs;
+        fresh_refs.clear();
+        for (std::size_t r = 0; r < rings.size(); ++r)
+          for (std::size_t i = 0; i < rings[r].size(); ++i)
+            if (rings[r][i].fresh) fresh_refs.push_back(static_cast<std::uint32_t>(mark_base[r] + i));
         thread_local std::vector<std::uint64_t> fresh_words;
         fresh_words.assign((count + 63) / 64, 0);
         for (const std::uint32_t i : fresh_refs) fresh_words[i / 64] |= std::uint64_t{1} << (i % 64);
