@@ -891,6 +891,37 @@ TEST(Sweep, AxisAlignedShapesWithEqualHeights) {
   }
 }
 
+// The sweep orders its events through buckets by height and keeps a
+// comparison sort where heights cluster: one far vertex or island puts all
+// others in one bucket. Both orders must triangulate alike.
+TEST(Sweep, HeightsClusteredByAFarVertexOrIsland) {
+  std::mt19937 rng(17);
+  for (int trial = 0; trial < 40; ++trial) {
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    const bool integer = trial % 2 == 1;
+    Loops spike;  // a star with one vertex pulled far up (a long thin spike)
+    std::vector<Vec2> star = random_star(rng, {0, 0}, 12 + trial, 100, 150, integer);
+    std::size_t top = 0;
+    for (std::size_t k = 0; k < star.size(); ++k)
+      if (star[k].y > star[top].y) top = k;
+    star[top].y = 1e6;
+    spike.add(star, false);
+    Loops island;  // a star and a small triangle far above it
+    island.add(random_star(rng, {0, 0}, 12 + trial, 100, 150, integer), false);
+    island.add({{0, 1e6}, {10, 1e6}, {5, 1e6 + 10}}, false);
+    Loops spread;  // the same star alone: its heights spread over the buckets
+    spread.add(random_star(rng, {0, 0}, 12 + trial, 100, 150, integer), false);
+    for (const Loops* loops : {&spike, &island, &spread}) {
+      std::vector<std::array<std::uint32_t, 3>> triangles;
+      if (!detail::sweep_triangulate(loops->points, loops->vertices, loops->start, triangles)) {
+        EXPECT_TRUE(integer);  // (three rounded vertices on a line through an extreme one)
+        continue;
+      }
+      expect_triangulation(*loops, triangles);
+    }
+  }
+}
+
 TEST(Sweep, GivesUpOnTouchingAndDegenerateLoops) {
   auto gives_up = [](const Loops& loops) {
     std::vector<std::array<std::uint32_t, 3>> triangles{{7, 8, 9}};
