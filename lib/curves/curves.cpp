@@ -109,8 +109,15 @@ int cubic_to_quadratics(const Segment& cubic, double tolerance, std::vector<Segm
   if (!std::isfinite(third)) third = length(difference);
   const double single_error = std::sqrt(3.0) / 36.0 * third;
   int pieces = 1;
-  if (tolerance > 0.0 && single_error > tolerance)
-    pieces = static_cast<int>(std::ceil(std::cbrt(single_error / tolerance) - 1e-12));
+  if (tolerance > 0.0 && single_error > tolerance) {
+    // The fewest pieces n with n^3 >= single_error / tolerance (up to a
+    // relative 1e-12, so that an exact cube gives its root): counted up, as
+    // n is small (cbrt costs more than the two or three steps).
+    const double ratio = single_error / tolerance;
+    pieces = 2;
+    while (pieces < tolerance::kMaxQuadraticsPerCubic && (pieces + 1e-12) * (pieces + 1e-12) * (pieces + 1e-12) < ratio)
+      ++pieces;
+  }
   if (!(tolerance > 0.0) && single_error > 0.0) pieces = tolerance::kMaxQuadraticsPerCubic;
   pieces = std::clamp(pieces, 1, tolerance::kMaxQuadraticsPerCubic);
 
