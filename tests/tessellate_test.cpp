@@ -270,6 +270,31 @@ TEST(BuildMesh, NonFiniteInputThrows) {
   inf.move_to({0, 0});
   inf.conic_to({1, 1}, {2, 0}, std::numeric_limits<double>::infinity());
   EXPECT_THROW(build_mesh(inf), Error);
+  // Every place a value can hide (the check is made while cleaning, on the
+  // points as they are read): a conic's control and weight, each of a
+  // cubic's controls, a last segment's end.
+  const double nan = std::nan(""), huge = std::numeric_limits<double>::infinity();
+  std::vector<Outline> bad(6);
+  bad[0].move_to({0, 0});
+  bad[0].conic_to({nan, 1}, {2, 0});
+  bad[1].move_to({0, 0});
+  bad[1].conic_to({1, 1}, {2, 0}, 0.0);
+  bad[2].move_to({0, 0});
+  bad[2].cubic_to({1, huge}, {2, 1}, {3, 0});
+  bad[3].move_to({0, 0});
+  bad[3].cubic_to({1, 1}, {-huge, 1}, {3, 0});
+  add_polygon(bad[4], {{0, 0}, {4, 0}, {4, 4}});
+  bad[4].contours()[0].segments.back().p[1] = {nan, nan};
+  bad[5].move_to({0, 0});
+  bad[5].conic_to({1, 1}, {2, 0}, -1.0);
+  for (std::size_t k = 0; k < bad.size(); ++k) {
+    EXPECT_FALSE(bad[k].is_finite()) << "outline " << k;
+    EXPECT_THROW(build_mesh(bad[k]), Error) << "outline " << k;
+  }
+  // A build after a refused one is whole.
+  Outline square_outline;
+  add_polygon(square_outline, {{0, 0}, {4, 0}, {4, 4}, {0, 4}});
+  EXPECT_NEAR(mesh_area(build_mesh(square_outline)), 16.0, 1e-12);
 }
 
 TEST(BuildMesh, ConicHullOverlappingAnEdgeIsSubdivided) {

@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -267,18 +268,28 @@ void recycle_rings(std::vector<Ring>& rings) {
 
 }  // namespace
 
-void clean_rings(const Outline& outline, double cubic_tolerance, std::vector<Ring>& rings, bool split_repeated) {
+bool clean_rings(const Outline& outline, double cubic_tolerance, std::vector<Ring>& rings, bool split_repeated) {
   recycle_rings(rings);
   thread_local std::vector<Segment> quadratics;  // scratch: one cubic's replacement
-  auto add_piece = [](Ring& ring, const Segment& s) {
+  // Outline::is_finite's test, made here on the points as they are read
+  // (a pass of its own over the outline cost more): x * 0 is 0 for finite x
+  // and NaN for an infinity or a NaN, and a NaN stays in the sum. Every
+  // segment's start and end, controls and weight are taken.
+  double zero = 0.0;
+  bool weights_ok = true;
+  auto finite_term = [](Vec2 p) { return p.x * 0.0 + p.y * 0.0; };
+  auto add_piece = [&](Ring& ring, const Segment& s) {
     // Written in place (a temporary's copy would reload its bool and int
     // fields in wider loads, which stall; see Outline::line_to).
     Piece& p = ring.emplace_back();
     p.a = canonical(s.p[0]);
+    zero += finite_term(s.p[0]) + finite_term(s.p[1]);  // a line's start and end, a conic's start and control
     if (s.kind == Segment::Kind::Conic) {
       p.conic = true;
       p.control = canonical(s.p[1]);
       p.weight = s.weight;
+      zero += finite_term(s.p[2]);
+      weights_ok = weights_ok && s.weight > 0.0 && s.weight <= std::numeric_limits<double>::max();
     }
   };
   for (const Contour& contour : outline.contours()) {
@@ -289,6 +300,7 @@ void clean_rings(const Outline& outline, double cubic_tolerance, std::vector<Rin
         add_piece(ring, s);
         continue;
       }
+      zero += (finite_term(s.p[0]) + finite_term(s.p[1])) + (finite_term(s.p[2]) + finite_term(s.p[3]));
       // What to_quadratic_outline would give, without copying the outline.
       quadratics.clear();
       cubic_to_quadratics(s, cubic_tolerance, quadratics);
@@ -322,6 +334,7 @@ void clean_rings(const Outline& outline, double cubic_tolerance, std::vector<Rin
     }
     recycle_ring(std::move(ring));  // (when not kept)
   }
+  return zero == 0.0 && weights_ok;
 }
 
 // --- Hull separation --------------------------------------------------------------
@@ -1130,7 +1143,8 @@ bool build_mesh_once(const Outline& outline, const MeshOptions& options, Mesh& m
   using namespace detail;
   // The rings (and their storage) are reused from glyph to glyph.
   thread_local std::vector<Ring> rings;
-  clean_rings(outline, options.cubic_tolerance, rings, split_repeated);
+  if (!clean_rings(outline, options.cubic_tolerance, rings, split_repeated))
+    throw Error(ErrorCode::Geometry, "build_mesh: outline has non-finite coordinates or weights");
   bool crossing = false;
   const bool separated = separate_hulls(rings, &crossing);
   // Crossing, overlapping or edge-sharing contours: resolve them into
@@ -1346,7 +1360,7 @@ bool build_mesh_once(const Outline& outline, const MeshOptions& options, Mesh& m
 }  // namespace
 
 void build_mesh(const Outline& outline, const MeshOptions& options, Mesh& mesh) {
-  if (!outline.is_finite()) throw Error(ErrorCode::Geometry, "build_mesh: outline has non-finite coordinates or weights");
+  // (Non-finite coordinates and weights are found while cleaning: clean_rings.)
   if (!(options.cubic_tolerance > 0.0) || !std::isfinite(options.cubic_tolerance)) {
     throw Error(ErrorCode::Geometry, "build_mesh: cubic_tolerance must be positive and finite");
   }

@@ -36,8 +36,10 @@ double ring_area(const Ring& ring);
 // (unless split_repeated is false: build_mesh looks for such rings only where
 // they matter); rings without area dropped. Replaces the contents of `rings`,
 // whose old rings go to a per-thread pool that the new ones draw from (their
-// storage is reused: no allocation per glyph once warm).
-void clean_rings(const Outline& outline, double cubic_tolerance, std::vector<Ring>& rings, bool split_repeated = true);
+// storage is reused: no allocation per glyph once warm). Returns false when
+// a coordinate or weight is not finite or a weight is not positive
+// (Outline::is_finite): the rings are then not to be used.
+bool clean_rings(const Outline& outline, double cubic_tolerance, std::vector<Ring>& rings, bool split_repeated = true);
 
 // True when two hulls (2 points: a segment; 3: a control triangle) share any
 // point other than a common vertex.
