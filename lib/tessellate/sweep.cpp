@@ -343,20 +343,15 @@ void Sweep::regular_right(std::uint32_t v, std::uint32_t u) {
 // takes about log2 n data-dependent branches per event, half of them
 // mispredicted on a glyph seen once; this takes about one per bucket that
 // holds more than one event (equal y, mostly: a horizontal edge's ends).
+// Key k is that of position k, whose y lies in [low, high].
 template <class Key>
-void sort_by_key(std::vector<Key>& keys, const std::vector<Vec2>& position) {
+void sort_by_key(std::vector<Key>& keys, const std::vector<Vec2>& position, double low, double high) {
   const std::size_t n = keys.size();
   auto by_key = [](const Key& a, const Key& b) { return a.yx < b.yx; };
   // (Too few events to gain: the comparison sort.)
   if (n < 8) {
     std::sort(keys.begin(), keys.end(), by_key);
     return;
-  }
-  double low = position[keys[0].position].y, high = low;
-  for (const Key& k : keys) {
-    const double y = position[k.position].y;
-    low = std::min(low, y);
-    high = std::max(high, y);
   }
   const double scale = static_cast<double>(2 * n) / (high - low);
   // (All at one height, or a range or scale that overflows: the comparison
@@ -373,7 +368,7 @@ void sort_by_key(std::vector<Key>& keys, const std::vector<Vec2>& position) {
   for (std::size_t i = 0; i < n; ++i) {
     // (y - low) * scale lies in [0, buckets] up to rounding, which keeps the
     // map monotone; the top end goes to the last bucket.
-    const auto b = static_cast<std::uint32_t>((position[keys[i].position].y - low) * scale);
+    const auto b = static_cast<std::uint32_t>((position[i].y - low) * scale);
     bucket_of[i] = std::min<std::uint32_t>(b, static_cast<std::uint32_t>(buckets - 1));
     ++first[bucket_of[i] + 1];
   }
@@ -423,6 +418,7 @@ bool Sweep::run() {
   };
   thread_local std::vector<Key> keys;
   keys.clear();
+  double low = n == 0 ? 0.0 : points_[vertices_[0]].y, high = low;
   for (std::size_t l = 0; l + 1 < start_.size(); ++l) {
     const std::uint32_t first = start_[l], last = start_[l + 1];
     if (last - first < 3) return false;
@@ -433,9 +429,11 @@ bool Sweep::run() {
       position_[i] = p;
       loop_of_[i] = static_cast<std::uint32_t>(l);
       keys.push_back({static_cast<Uint128>(ordered(p.y)) << 64 | ordered(p.x), i});
+      low = std::min(low, p.y);
+      high = std::max(high, p.y);
     }
   }
-  sort_by_key(keys, position_);
+  sort_by_key(keys, position_, low, high);
   order_.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
     if (k > 0 && keys[k - 1].yx == keys[k].yx) {
