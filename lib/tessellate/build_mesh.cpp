@@ -62,6 +62,31 @@ bool nearly_flat(Vec2 a, Vec2 control, Vec2 b) {
          orient2d(a, control, b) == 0;
 }
 
+// Whether simplify_pass would change the ring: its three tests (a
+// zero-length piece, a flat conic, two lines in a row on one line or folding
+// back) in one loop, for the usual ring, which needs none of them.
+bool needs_simplifying(const Ring& ring) {
+  const double merge2 = tolerance::kMergeDistanceFontUnits * tolerance::kMergeDistanceFontUnits;
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t j = i + 1 == n ? 0 : i + 1;
+    const Vec2 a = ring[i].a, b = ring[j].a;
+    const Vec2 ab = b - a;
+    if (dot(ab, ab) <= merge2) return true;
+    if (ring[i].conic) {
+      if (nearly_flat(a, ring[i].control, b)) return true;
+      continue;
+    }
+    if (ring[j].conic) continue;
+    const Vec2 c = ring_end(ring, j), bc = c - b;
+    if (orient2d(a, b, c) == 0) return true;
+    if (dot(ab, bc) < 0.0 &&
+        std::fabs(cross(ab, bc)) <= tolerance::kConicFlatnessRelative * std::max(dot(ab, ab), dot(bc, bc)))
+      return true;
+  }
+  return false;
+}
+
 // One pass of local simplifications; returns true when something changed.
 bool simplify_pass(Ring& ring) {
   bool changed = false;
@@ -308,7 +333,10 @@ bool clean_rings(const Outline& outline, double cubic_tolerance, std::vector<Rin
     }
     // Each pass shrinks the ring or stops the loop; the cap only matters for
     // adversarial input, where leftovers are handled by the ear clipper.
-    for (int pass = 0; pass < 16 && ring.size() >= 2 && simplify_pass(ring); ++pass) {
+    // (The first pass's tests in one loop: the usual ring needs no pass.)
+    if (ring.size() >= 2 && needs_simplifying(ring)) {
+      for (int pass = 0; pass < 16 && ring.size() >= 2 && simplify_pass(ring); ++pass) {
+      }
     }
     // Split after simplifying: simplification only deletes vertices, so it
     // cannot create new repeats, while the sub-rings are not simplified again
