@@ -131,7 +131,7 @@ int cubic_to_quadratics(const Segment& cubic, double tolerance, std::vector<Segm
       split_cubic(rest, 1.0 / remaining, piece, tail);
       std::copy(tail, tail + 4, rest);
     }
-    // Written in place (see Outline::line_to for why not a copied temporary).
+    // Written in place (see append() in outline.cpp for why not a copied temporary).
     Segment& quadratic = out.emplace_back();
     quadratic.kind = Segment::Kind::Conic;
     quadratic.p[0] = piece[0];

@@ -213,12 +213,17 @@ bool has_repeated_position(std::size_t count, PointAt at) {
   return false;
 }
 
+// True when the ring passes through some vertex twice.
+bool repeats_a_vertex(const Ring& ring) {
+  return has_repeated_position(ring.size(), [&](std::size_t i) { return ring[i].a; });
+}
+
 }  // namespace
 
 std::vector<Ring> split_at_repeated_vertices(const Ring& ring) {
   std::vector<Ring> loops;
   // The usual ring passes through each vertex once: nothing to split.
-  if (!has_repeated_position(ring.size(), [&](std::size_t i) { return ring[i].a; })) {
+  if (!repeats_a_vertex(ring)) {
     loops.push_back(ring);
     return loops;
   }
@@ -305,7 +310,7 @@ bool clean_rings(const Outline& outline, double cubic_tolerance, std::vector<Rin
   auto finite_term = [](Vec2 p) { return p.x * 0.0 + p.y * 0.0; };
   auto add_piece = [&](Ring& ring, const Segment& s) {
     // Written in place (a temporary's copy would reload its bool and int
-    // fields in wider loads, which stall; see Outline::line_to).
+    // fields in wider loads, which stall; see append() in lib/curves/outline.cpp).
     Piece& p = ring.emplace_back();
     p.a = canonical(s.p[0]);
     zero += finite_term(s.p[0]) + finite_term(s.p[1]);  // a line's start and end, a conic's start and control
@@ -355,7 +360,7 @@ bool clean_rings(const Outline& outline, double cubic_tolerance, std::vector<Rin
     };
     // The usual ring passes through each vertex once: kept as it is, without
     // the copy split_at_repeated_vertices would make.
-    if (!split_repeated || !has_repeated_position(ring.size(), [&](std::size_t i) { return ring[i].a; })) {
+    if (!split_repeated || !repeats_a_vertex(ring)) {
       keep(ring);
     } else {
       for (Ring& loop : split_at_repeated_vertices(ring)) keep(loop);
@@ -635,8 +640,8 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
   // that is not split and overlapped nothing before has not changed.
   thread_local std::vector<std::uint64_t> overlaps, partners;
   thread_local std::vector<std::uint32_t> child_first;
-  for (Ring& ring : rings)
-    for (Piece& piece : ring) piece.fresh = true;
+  // (The pieces' `fresh` flags are not read in the first pass, which tests
+  // every pair; a pass that splits sets them all for the next one.)
   for (int pass = 0; pass <= tolerance::kMaxHullSubdivisionDepth; ++pass) {
     bool any = false;
     bool overlap_left = false;  // an overlap seen in this pass
@@ -1153,9 +1158,7 @@ class PointIndex {
 namespace {
 
 bool any_ring_repeats_a_vertex(const std::vector<detail::Ring>& rings) {
-  for (const detail::Ring& ring : rings)
-    if (detail::has_repeated_position(ring.size(), [&](std::size_t i) { return ring[i].a; })) return true;
-  return false;
+  return std::any_of(rings.begin(), rings.end(), detail::repeats_a_vertex);
 }
 
 // One build. With split_repeated false, rings that pass through a vertex

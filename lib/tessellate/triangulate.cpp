@@ -1,9 +1,9 @@
 #include "tessellate/triangulate.hpp"
 
 #include <algorithm>
-#include <cstring>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <map>
 #include <numeric>
 #include <utility>
