@@ -17,6 +17,10 @@
 // Run: build/bench/glyph_prep_bench            (Google Benchmark entries, then the tables)
 //      build/bench/glyph_prep_bench --tables-only
 //      build/bench/glyph_prep_bench --rounds=N  (default 5)
+//      build/bench/glyph_prep_bench --warm      (each glyph's rounds back to back instead of
+//                                                the glyphs in turn: trained branch predictors)
+//      build/bench/glyph_prep_bench --stages    (where the mesh time goes, stage by stage; needs
+//                                                a build configured with -DCURVETEXT_STAGE_TIMING=ON)
 #include <benchmark/benchmark.h>
 
 #include <ft2build.h>
@@ -35,6 +39,7 @@
 #include "curvetext/lod.hpp"
 #include "curvetext/mesh.hpp"
 #include "gpu/vertex_format.hpp"
+#include "tessellate/stage_timing.hpp"
 
 namespace {
 
@@ -78,6 +83,9 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
+// The stage columns: outline loading, build_mesh's stages, packing.
+constexpr int kStageColumns = 2 + curvetext::detail::kMeshStageCount;
+
 struct PrepResult {
   std::size_t glyphs = 0, empty = 0, mesh_faster = 0, ft_errors = 0;
   double mesh_us_median = 0, ft_us_median = 0;
@@ -86,6 +94,11 @@ struct PrepResult {
   double atlas_bytes[kAtlasSizeCount] = {};         // mean width x rows, 1 byte per pixel
   double atlas_bytes_padded[kAtlasSizeCount] = {};  // the same with 1 px of padding on each side
   double seconds = 0;                               // wall time of the measurement
+  // With CURVETEXT_STAGE_TIMING: per stage (outline load, build_mesh's stages,
+  // packing) the median over glyphs of each glyph's fastest time, us; and the
+  // median of the glyphs' summed stages (timed with the clock reads inside).
+  double stage_us[kStageColumns] = {};
+  double stage_total_us = 0;
 };
 
 struct FtFace {
@@ -112,7 +125,10 @@ struct FtFace {
 // vector,
 // with the cubic tolerance of the 32 px level of detail. The FreeType side is
 // what an atlas renderer pays: FT_Load_Glyph + FT_Render_Glyph (AA, 32 px).
-PrepResult measure(const FontCase& fc, const std::vector<unsigned>& glyphs, int rounds) {
+// With `warm`, each glyph's rounds run back to back instead (the predictors
+// and caches trained on that glyph): the cost of the work itself.
+PrepResult measure(const FontCase& fc, const std::vector<unsigned>& glyphs, int rounds, bool warm) {
+  namespace detail = curvetext::detail;
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
   curvetext::Font font = curvetext::Font::open(fc.path, fc.face_index);
@@ -128,28 +144,57 @@ PrepResult measure(const FontCase& fc, const std::vector<unsigned>& glyphs, int 
   double triangles = 0, bytes = 0;
   curvetext::Outline outline;  // reused, as GlyphCache reuses its scratch outline
   curvetext::Mesh mesh;        // and mesh
-  for (int round = 0; round < rounds; ++round) {
-    for (std::size_t i = 0; i < glyphs.size(); ++i) {
-      auto t0 = clock::now();
+  const std::size_t n = glyphs.size();
+  // (Only filled with CURVETEXT_STAGE_TIMING: ticks per glyph and stage.)
+  std::vector<double> stage_ticks(detail::kStageTiming ? n * kStageColumns : 0, 1e300);
+  std::vector<double> stage_total_ticks(detail::kStageTiming ? n : 0, 1e300);
+  std::uint64_t first_tick = 0;
+  if constexpr (detail::kStageTiming) first_tick = detail::stage_clock();
+  for (std::size_t step = 0; step < n * static_cast<std::size_t>(rounds); ++step) {
+    const std::size_t i = warm ? step / static_cast<std::size_t>(rounds) : step % n;
+    const bool first_visit = warm ? step % static_cast<std::size_t>(rounds) == 0 : step < n;
+    std::size_t packed_bytes = 0;
+    auto t0 = clock::now();
+    if constexpr (detail::kStageTiming) {
+      const std::uint64_t s0 = detail::stage_clock();
+      font.glyph_outline(glyphs[i], outline);
+      const std::uint64_t s1 = detail::stage_clock();
+      detail::mesh_stage_ticks() = {};
+      curvetext::build_mesh(outline, {tolerance}, mesh);
+      const std::uint64_t s2 = detail::stage_clock();
+      curvetext::gpu::PackedMesh packed;
+      curvetext::gpu::pack_mesh(mesh, packed);
+      benchmark::DoNotOptimize(packed.vertices.data());
+      benchmark::DoNotOptimize(packed.indices.data());
+      packed_bytes = packed.gpu_bytes();
+      const std::uint64_t s3 = detail::stage_clock();
+      double* row = stage_ticks.data() + i * kStageColumns;
+      row[0] = std::min(row[0], static_cast<double>(s1 - s0));
+      for (int k = 0; k < detail::kMeshStageCount; ++k)
+        row[1 + k] = std::min(row[1 + k], static_cast<double>(detail::mesh_stage_ticks().ticks[k]));
+      row[kStageColumns - 1] = std::min(row[kStageColumns - 1], static_cast<double>(s3 - s2));
+      stage_total_ticks[i] = std::min(stage_total_ticks[i], static_cast<double>(s3 - s0));
+    } else {
       font.glyph_outline(glyphs[i], outline);
       curvetext::build_mesh(outline, {tolerance}, mesh);
       curvetext::gpu::PackedMesh packed;  // new, as the cache stores each glyph's own
       curvetext::gpu::pack_mesh(mesh, packed);
       benchmark::DoNotOptimize(packed.vertices.data());
       benchmark::DoNotOptimize(packed.indices.data());
-      auto t1 = clock::now();
-      const FT_Error load_error = FT_Load_Glyph(ft.face, glyphs[i], FT_LOAD_DEFAULT);
-      const FT_Error render_error = load_error ? load_error : FT_Render_Glyph(ft.face->glyph, FT_RENDER_MODE_NORMAL);
-      benchmark::DoNotOptimize(ft.face->glyph->bitmap.buffer);
-      auto t2 = clock::now();
-      mesh_us[i] = std::min(mesh_us[i], std::chrono::duration<double, std::micro>(t1 - t0).count());
-      ft_us[i] = std::min(ft_us[i], std::chrono::duration<double, std::micro>(t2 - t1).count());
-      if (round == 0) {
-        if (render_error) ++r.ft_errors;
-        if (outline.empty()) ++r.empty;
-        triangles += static_cast<double>(mesh.triangles.size() + mesh.curves.size());
-        bytes += static_cast<double>(packed.gpu_bytes());
-      }
+      packed_bytes = packed.gpu_bytes();
+    }
+    auto t1 = clock::now();
+    const FT_Error load_error = FT_Load_Glyph(ft.face, glyphs[i], FT_LOAD_DEFAULT);
+    const FT_Error render_error = load_error ? load_error : FT_Render_Glyph(ft.face->glyph, FT_RENDER_MODE_NORMAL);
+    benchmark::DoNotOptimize(ft.face->glyph->bitmap.buffer);
+    auto t2 = clock::now();
+    mesh_us[i] = std::min(mesh_us[i], std::chrono::duration<double, std::micro>(t1 - t0).count());
+    ft_us[i] = std::min(ft_us[i], std::chrono::duration<double, std::micro>(t2 - t1).count());
+    if (first_visit) {
+      if (render_error) ++r.ft_errors;
+      if (outline.empty()) ++r.empty;
+      triangles += static_cast<double>(mesh.triangles.size() + mesh.curves.size());
+      bytes += static_cast<double>(packed_bytes);
     }
   }
   for (std::size_t i = 0; i < glyphs.size(); ++i)
@@ -171,6 +216,18 @@ PrepResult measure(const FontCase& fc, const std::vector<unsigned>& glyphs, int 
     r.atlas_bytes_padded[s] = padded / static_cast<double>(glyphs.size());
   }
 
+  if constexpr (detail::kStageTiming) {
+    // Ticks to microseconds against steady_clock over the whole measurement.
+    const double elapsed_us = std::chrono::duration<double, std::micro>(clock::now() - start).count();
+    const double ticks_per_us = static_cast<double>(detail::stage_clock() - first_tick) / elapsed_us;
+    std::vector<double> column(n);
+    for (int k = 0; k < kStageColumns; ++k) {
+      for (std::size_t i = 0; i < n; ++i) column[i] = stage_ticks[i * kStageColumns + k] / ticks_per_us;
+      r.stage_us[k] = median(column);
+    }
+    for (std::size_t i = 0; i < n; ++i) column[i] = stage_total_ticks[i] / ticks_per_us;
+    r.stage_total_us = median(column);
+  }
   r.mesh_us_median = median(mesh_us);
   r.ft_us_median = median(ft_us);
   for (std::size_t i = 0; i < glyphs.size(); ++i) {
@@ -215,6 +272,25 @@ void print_notes(const std::vector<std::pair<const FontCase*, PrepResult>>& rows
     if (r.ft_errors) std::printf("note: FreeType failed to load or render %zu glyphs of %s\n", r.ft_errors, fc->name);
 }
 
+// Where the mesh side's time goes (CURVETEXT_STAGE_TIMING builds).
+void print_stages(const std::vector<std::pair<const FontCase*, PrepResult>>& rows) {
+  std::printf("mesh time by stage, us per glyph (median over glyphs of each glyph's fastest time per stage; the\n"
+              "clock reads inside add a little to the mesh column above; sum = sum of the stage medians,\n"
+              "total = median of the glyphs' summed stages):\n");
+  std::printf("%-12s %9s", "font", "outline");
+  for (const char* name : curvetext::detail::kMeshStageNames) std::printf(" %9s", name);
+  std::printf(" %9s %9s %9s\n", "pack", "sum", "total");
+  for (const auto& [fc, r] : rows) {
+    std::printf("%-12s", fc->name);
+    double sum = 0;
+    for (const double us : r.stage_us) {
+      std::printf(" %9.2f", us);
+      sum += us;
+    }
+    std::printf(" %9.2f %9.2f\n", sum, r.stage_total_us);
+  }
+}
+
 // Google Benchmark entries for the same work (Latin glyphs), for its usual statistics.
 void BM_CurvetextMesh(benchmark::State& state, const FontCase* fc) {
   curvetext::Font font = curvetext::Font::open(fc->path, fc->face_index);
@@ -252,17 +328,29 @@ void BM_FreeTypeBitmap32(benchmark::State& state, const FontCase* fc) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool tables_only = false;
+  bool tables_only = false, warm = false, stages = false;
   int rounds = 5;
   std::vector<char*> args;
   for (int i = 0; i < argc; ++i) {
     if (std::strcmp(argv[i], "--tables-only") == 0) {
       tables_only = true;
+    } else if (std::strcmp(argv[i], "--warm") == 0) {
+      warm = true;
+    } else if (std::strcmp(argv[i], "--stages") == 0) {
+      stages = true;
     } else if (std::strncmp(argv[i], "--rounds=", 9) == 0) {
       rounds = std::max(1, std::atoi(argv[i] + 9));
     } else {
       args.push_back(argv[i]);
     }
+  }
+  if (stages && !curvetext::detail::kStageTiming) {
+    std::fprintf(stderr,
+                 "glyph_prep_bench: --stages needs a build configured with -DCURVETEXT_STAGE_TIMING=ON, e.g.\n"
+                 "  cmake -S . -B build-stages -DCURVETEXT_STAGE_TIMING=ON -DCURVETEXT_BUILD_TESTS=OFF &&\n"
+                 "  cmake --build build-stages -j2 --target glyph_prep_bench &&\n"
+                 "  build-stages/bench/glyph_prep_bench --tables-only --stages\n");
+    return 2;
   }
   std::vector<const FontCase*> fonts;
   for (const FontCase& fc : kFonts) {
@@ -289,8 +377,9 @@ int main(int argc, char** argv) {
               "ratio = FT32 / mesh (>= 1: the mesh is prepared at least as fast); faster = share of glyphs whose\n"
               "mesh is faster than their bitmap; triangles, GPU bytes (%zu-byte vertices and 16-bit indices) and\n"
               "atlas cells (atlN: mean FreeType bitmap width x rows at N px, 1 byte per pixel, no padding) are\n"
-              "means over all glyphs of the row, empty ones included.\n",
-              rounds, sizeof(curvetext::gpu::Vertex));
+              "means over all glyphs of the row, empty ones included.%s\n",
+              rounds, sizeof(curvetext::gpu::Vertex),
+              warm ? "\n--warm: each glyph's rounds back to back (predictors and caches trained on it)." : "");
 
   std::printf("\nLatin glyphs (U+0020..U+024F)  [target: ratio >= 1.0 and mesh < 5 us]\n");
   print_header();
@@ -298,11 +387,12 @@ int main(int argc, char** argv) {
   for (const FontCase* fc : fonts) {
     if (!fc->latin) continue;
     curvetext::Font font = curvetext::Font::open(fc->path, fc->face_index);
-    latin_rows.emplace_back(fc, measure(*fc, latin_glyphs(font), rounds));
+    latin_rows.emplace_back(fc, measure(*fc, latin_glyphs(font), rounds, warm));
     print_row(fc->name, latin_rows.back().second);
     std::fflush(stdout);
   }
   print_notes(latin_rows);
+  if (stages) print_stages(latin_rows);
 
   std::printf("\nAll glyphs (Noto Sans CJK: face 0, first 5,000 glyphs)  [target: ratio >= 1.0]\n");
   print_header();
@@ -310,12 +400,13 @@ int main(int argc, char** argv) {
   double seconds = 0;
   for (const FontCase* fc : fonts) {
     curvetext::Font font = curvetext::Font::open(fc->path, fc->face_index);
-    all_rows.emplace_back(fc, measure(*fc, all_glyphs(font, fc->max_glyphs), rounds));
+    all_rows.emplace_back(fc, measure(*fc, all_glyphs(font, fc->max_glyphs), rounds, warm));
     print_row(fc->name, all_rows.back().second);
     seconds += all_rows.back().second.seconds;
     std::fflush(stdout);
   }
   print_notes(all_rows);
+  if (stages) print_stages(all_rows);
   std::printf("(all-glyphs table measured in %.1f s)\n", seconds);
   return 0;
 }

@@ -31,6 +31,7 @@
 #include "curvetext/tolerances.hpp"
 #include "tessellate/predicates.hpp"
 #include "tessellate/rings.hpp"
+#include "tessellate/stage_timing.hpp"
 #include "tessellate/triangulate.hpp"
 
 namespace curvetext {
@@ -1176,8 +1177,10 @@ bool build_mesh_once(const Outline& outline, const MeshOptions& options, Mesh& m
   thread_local std::vector<Ring> rings;
   if (!clean_rings(outline, options.cubic_tolerance, rings, split_repeated))
     throw Error(ErrorCode::Geometry, "build_mesh: outline has non-finite coordinates or weights");
+  stage_mark(MeshStage::Clean);
   bool crossing = false;
   const bool separated = separate_hulls(rings, &crossing);
+  stage_mark(MeshStage::Separate);
   // Crossing, overlapping or edge-sharing contours: resolve them into
   // non-crossing rings of the nonzero fill first (skipped for the usual
   // glyph whose contours do not meet; separate_hulls's sweep already told).
@@ -1194,6 +1197,7 @@ bool build_mesh_once(const Outline& outline, const MeshOptions& options, Mesh& m
     bool still_crossing = true;
     simple_edges = separate_hulls(rings, &still_crossing) && !still_crossing;
   }
+  stage_mark(MeshStage::Resolve);
   mesh.triangles.clear();
   // Polygon loops as vertex indices, grouped by region when nest_rings has
   // made regions (outer loop first, then its holes): loop l is
@@ -1323,7 +1327,9 @@ bool build_mesh_once(const Outline& outline, const MeshOptions& options, Mesh& m
     const int turn = orient2d(ring[lowest_piece == 0 ? n - 1 : lowest_piece - 1].a, lowest,
                               ring_end(ring, lowest_piece));
     make_loops(next_index, turn != 0 ? turn < 0 : ring_area(ring) < 0.0);
+    stage_mark(MeshStage::Loops);
     swept = sweep_loops(&repeated);
+    stage_mark(MeshStage::Triangles);
   }
   if (!swept) {
     if (!split_repeated && any_ring_repeats_a_vertex(rings)) return false;
@@ -1334,12 +1340,15 @@ bool build_mesh_once(const Outline& outline, const MeshOptions& options, Mesh& m
     // orientation helps), else the general path with one index per position.
     if (simple_edges && !repeated) {
       make_loops(next_index, false);
+      stage_mark(MeshStage::Loops);
       swept = sweep_loops(nullptr);
+      stage_mark(MeshStage::Triangles);
     }
     if (!swept) {
       index.emplace(mesh.points, 2 * piece_count);
       make_loops(*index, false);
     }
+    stage_mark(MeshStage::Loops);
   }
   recycle_rings(rings);
   if (!swept) {
@@ -1364,6 +1373,7 @@ bool build_mesh_once(const Outline& outline, const MeshOptions& options, Mesh& m
     }
     mesh.triangles.reserve(triangle_points.size());
     for (const auto& t : triangle_points) mesh.triangles.push_back({(*index)(t[0]), (*index)(t[1]), (*index)(t[2])});
+    stage_mark(MeshStage::Triangles);
   }
   if (swept) {
     delaunay_flips_manifold(mesh.points, mesh.triangles);
@@ -1385,6 +1395,7 @@ bool build_mesh_once(const Outline& outline, const MeshOptions& options, Mesh& m
     constrained.erase(std::unique(constrained.begin(), constrained.end()), constrained.end());
     delaunay_flips(mesh.points, mesh.triangles, constrained);
   }
+  stage_mark(MeshStage::Flips);
   return true;
 }
 
@@ -1395,6 +1406,7 @@ void build_mesh(const Outline& outline, const MeshOptions& options, Mesh& mesh) 
   if (!(options.cubic_tolerance > 0.0) || !std::isfinite(options.cubic_tolerance)) {
     throw Error(ErrorCode::Geometry, "build_mesh: cubic_tolerance must be positive and finite");
   }
+  detail::stage_start();  // (no-op unless built with CURVETEXT_STAGE_TIMING)
   if (!build_mesh_once(outline, options, mesh, false)) build_mesh_once(outline, options, mesh, true);
 }
 
