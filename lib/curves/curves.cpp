@@ -110,8 +110,9 @@ int cubic_to_quadratics(const Segment& cubic, double tolerance, std::vector<Segm
   const double single_error = std::sqrt(3.0) / 36.0 * third;
   int pieces = 1;
   if (tolerance > 0.0 && single_error > tolerance) {
-    // The fewest pieces n with n^3 >= single_error / tolerance (up to a
-    // relative 1e-12, so that an exact cube gives its root): counted up, as
+    // The fewest pieces n with (n + 1e-12)^3 >= single_error / tolerance
+    // (the 1e-12 so that an exact cube gives its root, as ceil(cbrt(x) -
+    // 1e-12) did): counted up, as
     // n is small (cbrt costs more than the two or three steps).
     const double ratio = single_error / tolerance;
     pieces = 2;

@@ -492,9 +492,7 @@ int certain_side(Vec2 a, Vec2 b, Vec2 c) {
   const double detleft = (a.x - c.x) * (b.y - c.y);
   const double detright = (a.y - c.y) * (b.x - c.x);
   const double det = detleft - detright;
-  constexpr double kEps = 0x1p-53;
-  constexpr double kCcwErrBoundA = (3.0 + 16.0 * kEps) * kEps;
-  const double errbound = kCcwErrBoundA * (std::fabs(detleft) + std::fabs(detright));
+  const double errbound = kOrient2dErrorBound * (std::fabs(detleft) + std::fabs(detright));
   if (det > errbound) return 1;
   if (-det > errbound) return -1;
   return 2;
@@ -576,10 +574,8 @@ namespace {
 // decide (or an overflow made the products infinite). Written without
 // branches.
 int certain_cross_sign(Vec2 x, Vec2 y) {
-  constexpr double kEps = 0x1p-53;
-  constexpr double kCcwErrBoundA = (3.0 + 16.0 * kEps) * kEps;
   const double left = x.x * y.y, right = x.y * y.x, det = left - right;
-  const double errbound = kCcwErrBoundA * (std::fabs(left) + std::fabs(right));
+  const double errbound = kOrient2dErrorBound * (std::fabs(left) + std::fabs(right));
   return static_cast<int>(det > errbound) - static_cast<int>(-det > errbound);
 }
 

@@ -15,22 +15,25 @@ namespace curvetext::detail {
 // The exact slow path of orient2d, for inputs its filter cannot decide.
 int orient2d_exact(Vec2 a, Vec2 b, Vec2 c);
 
+// Shewchuk's bound for orient2d's filter ("Adaptive Precision Floating-Point
+// Arithmetic", 1997, ccwerrboundA): with eps = 2^-53, the double value of
+// detleft - detright is within (3 + 16 eps) eps (|detleft| + |detright|) of the
+// exact determinant, the rounding of the coordinate differences included.
+// Every filtered orientation sign in the tessellator uses this one bound.
+inline constexpr double kOrient2dErrorBound = (3.0 + 16.0 * 0x1p-53) * 0x1p-53;
+
 // Sign of the orientation determinant |a-c b-c|: +1 when a, b, c turn
 // counter-clockwise (c left of a->b, y up), -1 clockwise, 0 collinear. Exact.
-// Inline filter (Shewchuk, "Adaptive Precision Floating-Point Arithmetic",
-// 1997): with eps = 2^-53, |det - exact| <= (3 + 16 eps) eps (|detleft| +
-// |detright|); outside that band the double sign is the exact sign. Most
-// calls end here; the rest go to orient2d_exact.
+// Inline filter (kOrient2dErrorBound): outside that band the double sign is
+// the exact sign. Most calls end here; the rest go to orient2d_exact.
 inline int orient2d(Vec2 a, Vec2 b, Vec2 c) {
   const double detleft = (a.x - c.x) * (b.y - c.y);
   const double detright = (a.y - c.y) * (b.x - c.x);
   const double det = detleft - detright;
-  constexpr double kEps = 0x1p-53;
-  constexpr double kCcwErrBoundA = (3.0 + 16.0 * kEps) * kEps;
   // (fabs and a sign written as a difference of comparisons: no branch on
   // the sign, which is data-dependent and mispredicted half the time; the one
   // branch left, "decided by the filter", almost always goes the same way.)
-  const double errbound = kCcwErrBoundA * (std::fabs(detleft) + std::fabs(detright));
+  const double errbound = kOrient2dErrorBound * (std::fabs(detleft) + std::fabs(detright));
   if (std::fabs(det) > errbound) return static_cast<int>(det > 0) - static_cast<int>(det < 0);
   // Exactly collinear along an axis (common in fonts: horizontal and vertical
   // stems): a difference of doubles is zero only for equal operands, so when
