@@ -722,6 +722,36 @@ TEST(Crossing, ConicCrossingConic) {
   build_and_check(o, 56.25, 1e-7);
 }
 
+TEST(Crossing, CurvesAreSplitWhereTheyCross) {
+  // Circles of radius 10 about (0, 0) and (12, 0) cross at (6, 8) and
+  // (6, -8). Hull separation splits both conics there (Newton's method on
+  // the two curves) instead of halving them ten times towards the crossing
+  // and the resolver flattening the last pieces: the mesh has the crossing
+  // points themselves as vertices (a flattened piece's chord would cross the
+  // other curve about 1e-5 away), and a few pieces per crossing.
+  const double r = 10.0, d = 12.0;
+  const double lens = 2.0 * r * r * std::acos(d / (2.0 * r)) - 0.5 * d * std::sqrt(4.0 * r * r - d * d);
+  const Mesh mesh = build_and_check(circles({{{0, 0}, r}, {{d, 0}, r}}), 2.0 * std::numbers::pi * r * r - lens, 1e-7);
+  for (const Vec2 crossing : {Vec2{6, 8}, Vec2{6, -8}}) {
+    double nearest = 1e300;
+    for (const Vec2 p : mesh.points) nearest = std::min(nearest, std::hypot(p.x - crossing.x, p.y - crossing.y));
+    EXPECT_LT(nearest, 1e-12) << "crossing (" << crossing.x << ", " << crossing.y << ")";
+  }
+  EXPECT_LE(mesh.curves.size(), 24u);
+  // A conic crossing a line: the line is split at the same point.
+  Outline o;
+  add_polygon(o, square(0, 0, 10, true));
+  add_circle(o, {12, 5}, 5, true);
+  const double segment = 25.0 * std::acos(2.0 / 5.0) - 2.0 * std::sqrt(21.0);
+  const Mesh square_and_circle = build_and_check(o, 100.0 + 25.0 * std::numbers::pi - segment, 1e-7);
+  for (const Vec2 crossing : {Vec2{10, 5 - std::sqrt(21.0)}, Vec2{10, 5 + std::sqrt(21.0)}}) {
+    double nearest = 1e300;
+    for (const Vec2 p : square_and_circle.points) nearest = std::min(nearest, std::hypot(p.x - crossing.x, p.y - crossing.y));
+    EXPECT_LT(nearest, 1e-12) << "crossing (" << crossing.x << ", " << crossing.y << ")";
+  }
+  EXPECT_LE(square_and_circle.curves.size(), 16u);
+}
+
 TEST(Crossing, ManySegmentsThroughOnePoint) {
   // Three bow-ties crossing exactly at the origin (six edges through one
   // point), plus a contour with a vertex on another's edge. The reference is

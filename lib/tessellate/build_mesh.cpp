@@ -604,13 +604,61 @@ bool joint_apart(Vec2 a, Vec2 c, bool p_conic, Vec2 v, Vec2 d, bool q_conic, Vec
 
 }  // namespace
 
+// A piece's point and derivative at parameter t: a line a + t (b - a), or
+// a conic N(t) / D(t), N = (1-t)^2 a + 2t(1-t) w c + t^2 b, D its weights.
+void piece_at(const Vec2* h, int n, double w, double t, Vec2& point, Vec2& derivative) {
+  if (n == 2) {
+    derivative = h[1] - h[0];
+    point = h[0] + derivative * t;
+    return;
+  }
+  const double u = 1.0 - t;
+  const Vec2 numerator = h[0] * (u * u) + h[1] * (2.0 * t * u * w) + h[2] * (t * t);
+  const double denominator = u * u + 2.0 * t * u * w + t * t;
+  const Vec2 numerator_d = ((h[1] * w - h[0]) * u + (h[2] - h[1] * w) * t) * 2.0;
+  const double denominator_d = 2.0 * (w - 1.0) * (u - t);
+  point = numerator / denominator;
+  derivative = (numerator_d * denominator - numerator * denominator_d) / (denominator * denominator);
+}
+
+// Parameters t on p and s on q where their curves cross, for splitting both
+// there. Asked only when their chords cross properly (exact signs), from
+// the chords' crossing, by Newton's method on p(t) = q(s); accepted when the
+// steps fall below 1e-12 with both parameters in [1/64, 63/64] (no sliver
+// next to an end). Tangent curves (a singular step), curves that do not
+// cross, and slow convergence give false: the pieces are then halved.
+bool crossing_parameters(const Vec2* p, int np, double wp, const Vec2* q, int nq, double wq, double& t, double& s) {
+  const Vec2 pa = p[0], pb = p[np - 1], qa = q[0], qb = q[nq - 1];
+  if (orient2d(pa, pb, qa) * orient2d(pa, pb, qb) >= 0 || orient2d(qa, qb, pa) * orient2d(qa, qb, pb) >= 0) return false;
+  const Vec2 r = pb - pa, d = qb - qa;
+  const double denominator = cross(r, d);
+  t = cross(qa - pa, d) / denominator;
+  s = cross(qa - pa, r) / denominator;
+  constexpr int kSteps = 12;
+  constexpr double kSettled = 1e-12, kMargin = 1.0 / 64.0;
+  for (int step = 0; step < kSteps; ++step) {
+    Vec2 at_p, dp, at_q, dq;
+    piece_at(p, np, wp, t, at_p, dp);
+    piece_at(q, nq, wq, s, at_q, dq);
+    const Vec2 gap = at_p - at_q;
+    const double det = cross(dp, dq);
+    if (!(std::fabs(det) > 0.0)) return false;
+    const double dt = -cross(gap, dq) / det, ds = cross(dp, gap) / det;
+    t += dt;
+    s += ds;
+    if (!(t > 0.0 && t < 1.0 && s > 0.0 && s < 1.0)) return false;
+    if (std::fabs(dt) < kSettled && std::fabs(ds) < kSettled) return t >= kMargin && t <= 1.0 - kMargin && s >= kMargin && s <= 1.0 - kMargin;
+  }
+  return false;
+}
+
 // Up to this many pieces hull separation tests every pair's boxes instead
 // of sorting them first (measured: as fast up to about 96 pieces, faster
 // below).
 constexpr std::size_t kAllPairsLimit = 64;
 static_assert(kAllPairsLimit <= 64, "the all-pairs test reads one 64-bit block per piece");
 
-bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
+bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_crossings) {
   // A piece's hull with what the sweep needs, copied out of the rings so the
   // pair loop reads one compact array.
   struct HullRef {
@@ -620,8 +668,16 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
     int depth;
     double weight;
     std::size_t mark;  // index into split_marks
+    std::size_t ring;
     Vec2 end() const { return hull[n - 1]; }
   };
+  // Pieces split where they cross another piece, in some pass.
+  bool crossing_split = false;
+  // Two lines seen crossing in some pass. Lines are not split in the
+  // partner-only passes, so their crossing stands there without being tested
+  // again. (Only a split exactly at that crossing point would make it a
+  // touch; the rings would then be resolved for nothing, which is harmless.)
+  bool lines_crossed = false;
   // A pass after the first tests only the pairs with a fresh piece: the
   // others were tested in the pass before with the same hulls, and gave
   // "no overlap, no crossing" when that pass found no crossing and no overlap
@@ -648,7 +704,12 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
     bool cross_seen = crossing == nullptr;
     // Scratch reused across passes and calls (no allocation once warm).
     thread_local std::vector<std::size_t> mark_base;  // ring r's marks start at mark_base[r]
+    // 0: kept; 1: halved; 2: split at split_at[k], the new vertex being
+    // split_point[k] (a crossing, shared by the two pieces split there).
     thread_local std::vector<char> split_marks;
+    thread_local std::vector<double> split_at;
+    thread_local std::vector<Vec2> split_point;
+    bool split_this_pass = false;
     // Tangent legs are aligned (align_tangent_legs) only when the pass has
     // found an overlap, and then the pass is run again on the aligned rings:
     // every tangency align_tangent_legs fixes is a hull corner on another
@@ -663,12 +724,17 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
       any = false;
       overlap_left = false;
       unsplit_overlap = false;
+      split_this_pass = false;
       cross_seen = crossing == nullptr;
       thread_local std::vector<HullRef> refs;
       mark_base.assign(rings.size() + 1, 0);
       for (std::size_t r = 0; r < rings.size(); ++r) mark_base[r + 1] = mark_base[r] + rings[r].size();
       const std::size_t count = mark_base.back();
       split_marks.assign(count, 0);
+      if (split_at_crossings) {
+        split_at.resize(count);
+        split_point.resize(count);
+      }
       // Grown, never shrunk: resize() would construct every record again.
       if (refs.size() < count) refs.resize(count);
       HullRef* const unsorted = refs.data();
@@ -690,6 +756,7 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
           ref.depth = piece.depth;
           ref.weight = piece.weight;
           ref.mark = mark_base[r] + i;
+          ref.ring = r;
         }
       }
       // (Raw pointers: the stores into the char marks may alias anything,
@@ -727,7 +794,10 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
       auto test_pair = [&](const HullRef& ri, const HullRef& rj) {
         const bool ci = ri.n == 3, cj = rj.n == 3;
         if (!ci && !cj) {
-          if (!cross_seen) cross_seen = lines_cross(ri.hull[0], ri.hull[1], rj.hull[0], rj.hull[1]);
+          if (!cross_seen && lines_cross(ri.hull[0], ri.hull[1], rj.hull[0], rj.hull[1])) {
+            cross_seen = true;
+            lines_crossed = true;
+          }
           return;
         }
         const Vec2 ai = ri.hull[0], ei = ri.end(), aj = rj.hull[0], ej = rj.end();
@@ -740,19 +810,47 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
         if (same_ends && ci && cj && ri.hull[1] == rj.hull[1] && ri.weight == rj.weight) return;
         if (!hulls_overlap(ri.hull, ri.n, rj.hull, rj.n)) return;
         overlaps.push_back(static_cast<std::uint64_t>(ri.mark) << 32 | rj.mark);
+        overlap_left = true;
+        // Pieces of two rings that cross: both split at the crossing (once
+        // per pass each), which saves halving the conics down to the limit
+        // around it. The point is the conic's, rounded; the other piece gets
+        // the same point as its new vertex (a move of an ulp or so).
+        // (Pieces with a common end, most overlapping pairs, have no proper
+        // chord crossing: not asked.)
+        const bool common_end = ai == aj || ai == ej || ei == aj || ei == ej;
+        if (split_at_crossings && !common_end && marks[ri.mark] == 0 && marks[rj.mark] == 0 &&
+            (!ci || ri.depth < tolerance::kMaxHullSubdivisionDepth) &&
+            (!cj || rj.depth < tolerance::kMaxHullSubdivisionDepth)) {
+          double t = 0.0, u = 0.0;
+          if (crossing_parameters(ri.hull, ri.n, ri.weight, rj.hull, rj.n, rj.weight, t, u)) {
+            const HullRef& conic = ci ? ri : rj;
+            const Vec2 x = canonical(
+                split(Segment::conic(conic.hull[0], conic.hull[1], conic.hull[2], conic.weight), ci ? t : u).second.p[0]);
+            if (x != ai && x != ei && x != aj && x != ej) {
+              marks[ri.mark] = 2;
+              marks[rj.mark] = 2;
+              split_at[ri.mark] = t;
+              split_at[rj.mark] = u;
+              split_point[ri.mark] = x;
+              split_point[rj.mark] = x;
+              split_this_pass = true;
+              any = true;
+              return;
+            }
+          }
+        }
         // Subdividing a conic shrinks its hull towards the arc; lines stay.
         bool split_one = false;
         if (ci && ri.depth < tolerance::kMaxHullSubdivisionDepth) {
-          marks[ri.mark] = 1;
+          if (marks[ri.mark] == 0) marks[ri.mark] = 1;
           split_one = true;
         }
         if (cj && rj.depth < tolerance::kMaxHullSubdivisionDepth) {
-          marks[rj.mark] = 1;
+          if (marks[rj.mark] == 0) marks[rj.mark] = 1;
           split_one = true;
         }
         any = any || split_one;
         unsplit_overlap = unsplit_overlap || !split_one;
-        overlap_left = true;
       };
       // The boxes in one array per side, for tests written without branches
       // (their outcomes are unpredictable; most pairs are rejected by their
@@ -903,19 +1001,24 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
       if (!changed) break;
     }  // (the pass again, on the aligned rings)
     if (!any) {
-      if (!overlap_left && crossing) *crossing = cross_seen;
+      if (!overlap_left && crossing) *crossing = cross_seen || lines_crossed;
+      if (crossing_split) *crossing = true;
       return !overlap_left;
     }
-    test_all = unsplit_overlap || (crossing != nullptr && cross_seen);
+    // (After a split at a crossing, the pass tests every pair: a line's new
+    // vertex is off the line by its rounding, so its halves need not lie in
+    // its hull.)
+    test_all = unsplit_overlap || (crossing != nullptr && cross_seen && !lines_crossed) || split_this_pass;
+    crossing_split = crossing_split || split_this_pass;
     child_first.resize(split_marks.size() + 1);
     child_first[0] = 0;
     for (std::size_t k = 0; k < split_marks.size(); ++k)
-      child_first[k + 1] = child_first[k] + 1 + static_cast<std::uint32_t>(split_marks[k]);
+      child_first[k + 1] = child_first[k] + 1 + static_cast<std::uint32_t>(split_marks[k] != 0);
     partners.swap(overlaps);
     for (std::size_t r = 0; r < rings.size(); ++r) {
       const char* ring_marks = split_marks.data() + mark_base[r];
       for (Piece& piece : rings[r]) piece.fresh = false;
-      if (std::find(ring_marks, ring_marks + rings[r].size(), char{1}) == ring_marks + rings[r].size()) continue;  // nothing to split
+      if (std::all_of(ring_marks, ring_marks + rings[r].size(), [](char m) { return m == 0; })) continue;  // nothing to split
       Ring next = take_ring();
       next.reserve(rings[r].size() + 8);
       for (std::size_t i = 0; i < rings[r].size(); ++i) {
@@ -924,14 +1027,26 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing) {
           next.push_back(p);
           continue;
         }
-        const auto halves = split(Segment::conic(p.a, p.control, ring_end(rings[r], i), p.weight), 0.5);
+        const bool at_crossing = ring_marks[i] == 2;
+        if (!p.conic) {  // (a line is only split at a crossing)
+          next.push_back(p);
+          next.back().fresh = true;
+          next.push_back(p);
+          next.back().a = split_point[mark_base[r] + i];
+          next.back().fresh = true;
+          continue;
+        }
+        const double at = at_crossing ? split_at[mark_base[r] + i] : 0.5;
+        const auto halves = split(Segment::conic(p.a, p.control, ring_end(rings[r], i), p.weight), at);
         next.push_back(conic_piece(halves.first, p.depth + 1));
         next.push_back(conic_piece(halves.second, p.depth + 1));
+        if (at_crossing) next.back().a = split_point[mark_base[r] + i];
       }
       rings[r].swap(next);
       recycle_ring(std::move(next));
     }
   }
+  if (crossing_split) *crossing = true;
   return false;  // passes used up right after splitting: not known to be separated
 }
 
@@ -1175,7 +1290,7 @@ bool build_mesh_once(const Outline& outline, const MeshOptions& options, Mesh& m
     throw Error(ErrorCode::Geometry, "build_mesh: outline has non-finite coordinates or weights");
   stage_mark(MeshStage::Clean);
   bool crossing = false;
-  const bool separated = separate_hulls(rings, &crossing);
+  const bool separated = separate_hulls(rings, &crossing, kResolveCrossingContours);
   stage_mark(MeshStage::Separate);
   // Crossing, overlapping or edge-sharing contours: resolve them into
   // non-crossing rings of the nonzero fill first (skipped for the usual
@@ -1183,7 +1298,7 @@ bool build_mesh_once(const Outline& outline, const MeshOptions& options, Mesh& m
   // Pieces of separated, non-crossing rings meet only at common vertices,
   // which lets sweep_triangulate take their loops when no position repeats.
   bool simple_edges = separated && !crossing;
-  if (kResolveCrossingContours && (separated ? crossing : rings_cross(rings, false))) {
+  if (kResolveCrossingContours && (crossing || (!separated && rings_cross(rings, false)))) {
     if (!split_repeated && any_ring_repeats_a_vertex(rings)) return false;
     std::vector<Ring> resolved = resolve_crossings(rings);
     recycle_rings(rings);

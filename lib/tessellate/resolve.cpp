@@ -2,9 +2,11 @@
 // overlapping, self-intersecting and edge-sharing contours, nonzero rule).
 //
 // Strategy. Hull separation (separate_hulls) has already subdivided conics
-// whose control triangles overlap another piece's; conics that cross or touch
-// something keep overlapping however deep they are split, so they end at the
-// subdivision limit (parameter span 2^-kMaxHullSubdivisionDepth). Those last
+// whose control triangles overlap another piece's, and split pieces whose
+// chords cross at the point where their curves cross (they then meet at a
+// common vertex); conics that touch something, or cross it where that point
+// was not found, keep overlapping however deep they are split, so they end
+// at the subdivision limit (parameter span 2^-kMaxHullSubdivisionDepth). Those last
 // small pieces are replaced by their chords: their arcs deviate from the chord
 // by a sagitta of ~1e-6 of the curve's size, far below a pixel. Every conic
 // that is left then has a hull no other piece enters, so the arrangement's
@@ -22,6 +24,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -101,20 +104,46 @@ bool lines_conflict(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   return point_on_segment(shared, p, q) || point_on_segment(shared, q, p);
 }
 
-// Pairs of edges with overlapping boxes (sweep over x); f(i, j) returns true to stop.
+// Pairs of edges with overlapping boxes; f(i, j) returns true to stop. Sweep
+// and prune along the longer side of all the boxes (a tall glyph's edges
+// share x ranges), with the sides copied in sorted order so the scan reads
+// them in a row. The pairs come in no particular order and either way round:
+// every caller's answer is independent of both.
 template <class F>
 bool for_each_close_pair(const std::vector<Edge>& edges, F&& f) {
+  const std::size_t n = edges.size();
+  Box all;
+  for (const Edge& e : edges) {
+    all.add(e.box.min);
+    all.add(e.box.max);
+  }
+  const bool along_y = all.max.y - all.min.y > all.max.x - all.min.x;
+  struct Key {
+    double low;
+    std::uint32_t edge;
+  };
   // Scratch reused across calls (callers never nest this loop).
-  thread_local std::vector<std::uint32_t> order;
-  order.resize(edges.size());
-  for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(),
-            [&](std::uint32_t x, std::uint32_t y) { return edges[x].box.min.x < edges[y].box.min.x; });
-  for (std::size_t oi = 0; oi < order.size(); ++oi) {
-    const Edge& e = edges[order[oi]];
-    for (std::size_t oj = oi + 1; oj < order.size() && edges[order[oj]].box.min.x <= e.box.max.x; ++oj) {
-      if (!boxes_overlap(e.box, edges[order[oj]].box)) continue;
-      if (f(order[oi], order[oj])) return true;
+  thread_local std::vector<Key> keys;
+  thread_local std::vector<double> sides;
+  keys.resize(n);
+  for (std::size_t k = 0; k < n; ++k)
+    keys[k] = {along_y ? edges[k].box.min.y : edges[k].box.min.x, static_cast<std::uint32_t>(k)};
+  std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) { return a.low < b.low; });
+  sides.resize(3 * n);
+  double* const high_a = sides.data();
+  double* const low_b = high_a + n;
+  double* const high_b = low_b + n;
+  for (std::size_t k = 0; k < n; ++k) {
+    const Box& box = edges[keys[k].edge].box;
+    high_a[k] = along_y ? box.max.y : box.max.x;
+    low_b[k] = along_y ? box.min.x : box.min.y;
+    high_b[k] = along_y ? box.max.x : box.max.y;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const double upper = high_a[i], lo = low_b[i], hi = high_b[i];
+    for (std::size_t j = i + 1; j < n && keys[j].low <= upper; ++j) {
+      if (low_b[j] > hi || lo > high_b[j]) continue;
+      if (f(keys[i].edge, keys[j].edge)) return true;
     }
   }
   return false;
@@ -244,12 +273,18 @@ void split_lines(std::vector<Edge>& edges) {
       const int o1 = orient2d(e.a, e.b, f.a), o2 = orient2d(e.a, e.b, f.b);
       const int o3 = orient2d(f.a, f.b, e.a), o4 = orient2d(f.a, f.b, e.b);
       if (o1 * o2 < 0 && o3 * o4 < 0) {
-        // Proper crossing: the point from e's parametrisation, t clamped to
-        // the open interval (rounding cannot push it past an end).
-        const Vec2 r = e.b - e.a, s = f.b - f.a;
-        double t = cross(f.a - e.a, s) / cross(r, s);
+        // Proper crossing: the point from the parametrisation of the edge
+        // whose start is least (so the point does not depend on the order
+        // the pair comes in), t clamped to the closed interval (rounding
+        // cannot push it past an end).
+        const bool e_first = std::make_pair(e.a.x, e.a.y) < std::make_pair(f.a.x, f.a.y) ||
+                             (e.a == f.a && std::make_pair(e.b.x, e.b.y) < std::make_pair(f.b.x, f.b.y));
+        const Edge& g = e_first ? e : f;
+        const Edge& h = e_first ? f : e;
+        const Vec2 r = g.b - g.a, s = h.b - h.a;
+        double t = cross(h.a - g.a, s) / cross(r, s);
         t = std::clamp(t, 0.0, 1.0);
-        const Vec2 p = e.a + r * t;
+        const Vec2 p = g.a + r * t;
         cut(i, p);
         cut(j, p);
         return false;
@@ -348,18 +383,60 @@ std::vector<Edge> merge_coincident(const std::vector<Edge>& edges) {
 // so the rounded m is on the same side of all of them as the true midpoint;
 // conic caps are not entered by the ray's start (hulls are separated), and a
 // ray through a cap crosses chord and arc with the same net count.
+//
+// One ray per chain: where exactly two edges meet at a vertex, the faces on
+// either side of one continue on the same sides of the other (the plane
+// around the vertex is cut in two), so their windings are equal, sides
+// swapped when the two edges point both into or both out of the vertex.
+// Most vertices are such joints; only crossings and touches end a chain, so
+// a glyph with two crossings casts a handful of rays instead of one per edge.
 void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::vector<int>& right) {
   const std::size_t n = edges.size();
   left.assign(n, 0);
   right.assign(n, 0);
   if (n == 0) return;
+
+  // The chains: the edge ends sorted by position; a position held by exactly
+  // two ends of two different edges joins them.
+  struct End {
+    Vec2 p;
+    std::uint32_t edge;
+    bool at_b;  // the edge's end b (else its start a)
+  };
+  thread_local std::vector<End> ends;
+  ends.clear();
+  for (std::uint32_t i = 0; i < n; ++i) {
+    ends.push_back({edges[i].a, i, false});
+    ends.push_back({edges[i].b, i, true});
+  }
+  std::sort(ends.begin(), ends.end(), [](const End& u, const End& v) {
+    return u.p.x != v.p.x ? u.p.x < v.p.x : (u.p.y != v.p.y ? u.p.y < v.p.y : u.edge < v.edge);
+  });
+  // Up to two joins per edge (at a and at b): the other edge, and whether its
+  // sides are swapped.
+  struct Join {
+    std::uint32_t other = UINT32_MAX;
+    bool swapped = false;
+  };
+  thread_local std::vector<Join> joins;
+  joins.assign(2 * n, Join{});
+  for (std::size_t k = 0; k < ends.size();) {
+    std::size_t m = k + 1;
+    while (m < ends.size() && ends[m].p == ends[k].p) ++m;
+    if (m - k == 2 && ends[k].edge != ends[k + 1].edge) {
+      const End &u = ends[k], &v = ends[k + 1];
+      const bool swapped = u.at_b == v.at_b;
+      joins[2 * u.edge + u.at_b] = {v.edge, swapped};
+      joins[2 * v.edge + v.at_b] = {u.edge, swapped};
+    }
+    k = m;
+  }
+
   // Only edges whose span in the ray's perpendicular coordinate contains the
-  // midpoint's can be crossed. Edges go into bins of y (for horizontal rays)
-  // and of x (for vertical ones) by their closed span, so a query looks at
-  // the edges of one bin. About n / 2 bins: a glyph's edges are short against
-  // its size (those of a crossing are split small), so a bin holds a few and
-  // an edge spans a few; the bins are one array (counted, then filled), not a
-  // vector per bin.
+  // midpoint's can be crossed: the rays test every edge when they are few,
+  // and otherwise look at one bin of edges (of y for horizontal rays, of x
+  // for vertical ones, by their closed spans; about n / 2 bins, one array
+  // each, counted then filled).
   struct Bins {
     double lo = 0.0, scale = 0.0;
     std::size_t count = 1;
@@ -402,24 +479,23 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
     }
     return b;
   };
-  const Bins by_y = make_bins(false), by_x = make_bins(true);
-  for (std::size_t i = 0; i < n; ++i) {
+  std::optional<Bins> by_y, by_x;
+  std::size_t rays = 0;
+  // Left and right winding of edge i by its own ray.
+  auto cast = [&](std::size_t i) {
     const Edge& e = edges[i];
     const bool rotate = std::fabs(e.b.x - e.a.x) > std::fabs(e.b.y - e.a.y);
     auto tf = [rotate](Vec2 p) { return rotate ? Vec2{p.y, -p.x} : p; };
     const Vec2 mid = (e.a + e.b) * 0.5;
     const Vec2 m = tf(mid);
-    const Bins& bins = rotate ? by_x : by_y;
-    const std::size_t k = bins.bin(rotate ? mid.x : mid.y);
     int w = 0;
-    for (std::uint32_t c = bins.start[k]; c < bins.start[k + 1]; ++c) {
-      const std::uint32_t j = bins.members[c];
-      if (j == i) continue;
+    auto test = [&](std::uint32_t j) {
+      if (j == i) return;
       const Edge& f = edges[j];
       const Vec2 a = tf(f.a), b = tf(f.b);
       // Only an edge whose span straddles the ray's line can be crossed (the
-      // cheap test first: most candidates of a bin do not).
-      if ((a.y <= m.y) == (b.y <= m.y)) continue;
+      // cheap test first: most candidates do not).
+      if ((a.y <= m.y) == (b.y <= m.y)) return;
       // For an edge sharing an end point with e, every point of e's open
       // interior is on the side of f's line where e's other end is; asking
       // that end instead of the rounded midpoint is exact even for a tiny e.
@@ -431,10 +507,46 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
       } else if (b.y <= m.y && orient2d(a, b, probe) < 0) {
         w -= f.count;
       }
+    };
+    // (Binned once the rays have tested about 16 n edges one by one.)
+    if (++rays * n <= 16 * n + 4096 || n < 64) {
+      for (std::uint32_t j = 0; j < n; ++j) test(j);
+    } else {
+      std::optional<Bins>& slot = rotate ? by_x : by_y;
+      if (!slot) slot = make_bins(rotate);
+      const std::size_t k = slot->bin(rotate ? mid.x : mid.y);
+      for (std::uint32_t c = slot->start[k]; c < slot->start[k + 1]; ++c) test(slot->members[c]);
     }
     const bool upward = tf(e.b).y > tf(e.a).y;
     left[i] = upward ? w + e.count : w;
     right[i] = upward ? w : w - e.count;
+  };
+
+  // Each chain from one edge with a ray, along its joins both ways.
+  thread_local std::vector<char> done;
+  done.assign(n, 0);
+  for (std::size_t first = 0; first < n; ++first) {
+    if (done[first]) continue;
+    cast(first);
+    done[first] = 1;
+    for (int way = 0; way < 2; ++way) {
+      std::size_t from = first;
+      bool at_b = way == 0;  // leave `from` through this end
+      for (;;) {
+        const Join join = joins[2 * from + at_b];
+        if (join.other == UINT32_MAX || done[join.other]) break;
+        const std::size_t to = join.other;
+        left[to] = join.swapped ? right[from] : left[from];
+        right[to] = join.swapped ? left[from] : right[from];
+        done[to] = 1;
+        // `to` was entered through its end at the join: at b when the sides
+        // were not swapped and we left `from` through b, and so on; leave it
+        // through the other end.
+        const bool entered_at_b = join.swapped ? at_b : !at_b;
+        at_b = !entered_at_b;
+        from = to;
+      }
+    }
   }
 }
 

@@ -50,7 +50,13 @@ bool hulls_overlap(const Vec2* p, int np, const Vec2* q, int nq);
 // hull overlaps another piece's any more (identical conics aside). Then, if
 // `crossing` is not null, it is set to rings_cross(rings, true), found in the
 // same sweep over the pieces (the usual glyph then needs no second sweep).
-bool separate_hulls(std::vector<Ring>& rings, bool* crossing = nullptr);
+// With `split_at_crossings`, a conic whose chord crosses the chord of a piece
+// of another ring is split where the two curves cross (found by Newton's
+// method), and that piece too, both at the same point, instead of halving the
+// conic ten times towards the crossing; `crossing` is then set to true
+// whatever else is found (the rings now cross at a common vertex, which only
+// the crossing resolver deals with), and it must not be null.
+bool separate_hulls(std::vector<Ring>& rings, bool* crossing = nullptr, bool split_at_crossings = false);
 
 // Position of p against the chord polygon of a ring (nonzero winding).
 Where point_in_ring(const Ring& ring, Vec2 p);
