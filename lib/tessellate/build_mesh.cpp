@@ -602,8 +602,6 @@ bool joint_apart(Vec2 a, Vec2 c, bool p_conic, Vec2 v, Vec2 d, bool q_conic, Vec
   return (ab != 0) & (by_p_chord | by_q_chord);
 }
 
-}  // namespace
-
 // A piece's point and derivative at parameter t: a line a + t (b - a), or
 // a conic N(t) / D(t), N = (1-t)^2 a + 2t(1-t) w c + t^2 b, D its weights.
 void piece_at(const Vec2* h, int n, double w, double t, Vec2& point, Vec2& derivative) {
@@ -652,6 +650,8 @@ bool crossing_parameters(const Vec2* p, int np, double wp, const Vec2* q, int nq
   return false;
 }
 
+}  // namespace
+
 // Up to this many pieces hull separation tests every pair's boxes instead
 // of sorting them first (measured: as fast up to about 96 pieces, faster
 // below).
@@ -668,7 +668,6 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
     int depth;
     double weight;
     std::size_t mark;  // index into split_marks
-    std::size_t ring;
     Vec2 end() const { return hull[n - 1]; }
   };
   // Pieces split where they cross another piece, in some pass.
@@ -756,7 +755,6 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
           ref.depth = piece.depth;
           ref.weight = piece.weight;
           ref.mark = mark_base[r] + i;
-          ref.ring = r;
         }
       }
       // (Raw pointers: the stores into the char marks may alias anything,
@@ -811,9 +809,9 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
         if (!hulls_overlap(ri.hull, ri.n, rj.hull, rj.n)) return;
         overlaps.push_back(static_cast<std::uint64_t>(ri.mark) << 32 | rj.mark);
         overlap_left = true;
-        // Pieces of two rings that cross: both split at the crossing (once
-        // per pass each), which saves halving the conics down to the limit
-        // around it. The point is the conic's, rounded; the other piece gets
+        // Pieces that cross: both split at the crossing (once per pass
+        // each), which saves halving the conics down to the limit around
+        // it. The point is the conic's, rounded; the other piece gets
         // the same point as its new vertex (a move of an ulp or so).
         // (Pieces with a common end, most overlapping pairs, have no proper
         // chord crossing: not asked.)
@@ -1277,11 +1275,15 @@ bool any_ring_repeats_a_vertex(const std::vector<detail::Ring>& rings) {
 // twice are not split into their lobes (clean_rings): that search costs a
 // hash table per ring, and such rings are rare (none in DejaVu Sans, Noto
 // Sans or Inter, 31 of 20,000 Noto Sans CJK glyphs). Where it matters the
-// build looks for them and returns false on finding one: before resolving
-// crossings, and when the sweep gives up (a ring through a vertex twice
-// always makes it give up: the vertex repeats among its loops). The caller
-// then builds again with the split, exactly as a build that split first.
-// Returns true when the mesh is built.
+// build looks for them and returns false on finding one: when the sweep
+// gives up (a ring through a vertex twice always makes it give up: the
+// vertex repeats among its loops). The caller then builds again with the
+// split, exactly as a build that split first. The crossing resolver needs no
+// split: it takes the edges of all rings together and splits the loops it
+// makes at repeated vertices itself. (Hull separation makes a ring pass
+// through a point twice where it splits two of its pieces at their crossing;
+// looking for repeats before resolving would build such glyphs twice, about
+// one in 25 of Inter's.) Returns true when the mesh is built.
 bool build_mesh_once(const Outline& outline, const MeshOptions& options, Mesh& mesh, bool split_repeated) {
   using namespace detail;
   // The rings (and their storage) are reused from glyph to glyph.
@@ -1299,7 +1301,6 @@ bool build_mesh_once(const Outline& outline, const MeshOptions& options, Mesh& m
   // which lets sweep_triangulate take their loops when no position repeats.
   bool simple_edges = separated && !crossing;
   if (kResolveCrossingContours && (crossing || (!separated && rings_cross(rings, false)))) {
-    if (!split_repeated && any_ring_repeats_a_vertex(rings)) return false;
     std::vector<Ring> resolved = resolve_crossings(rings);
     recycle_rings(rings);
     rings = std::move(resolved);

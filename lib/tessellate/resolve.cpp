@@ -508,8 +508,9 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
         w -= f.count;
       }
     };
-    // (Binned once the rays have tested about 16 n edges one by one.)
-    if (++rays * n <= 16 * n + 4096 || n < 64) {
+    // The first 16 rays (or all of them, for fewer than 64 edges) test every
+    // edge, about what making the bins costs; later ones use the bins.
+    if (++rays <= 16 || n < 64) {
       for (std::uint32_t j = 0; j < n; ++j) test(j);
     } else {
       std::optional<Bins>& slot = rotate ? by_x : by_y;

@@ -50,8 +50,8 @@ bool hulls_overlap(const Vec2* p, int np, const Vec2* q, int nq);
 // hull overlaps another piece's any more (identical conics aside). Then, if
 // `crossing` is not null, it is set to rings_cross(rings, true), found in the
 // same sweep over the pieces (the usual glyph then needs no second sweep).
-// With `split_at_crossings`, a conic whose chord crosses the chord of a piece
-// of another ring is split where the two curves cross (found by Newton's
+// With `split_at_crossings`, a conic whose chord crosses the chord of another
+// piece is split where the two curves cross (found by Newton's
 // method), and that piece too, both at the same point, instead of halving the
 // conic ten times towards the crossing; `crossing` is then set to true
 // whatever else is found (the rings now cross at a common vertex, which only
