@@ -753,6 +753,55 @@ TEST(Crossing, CurvesAreSplitWhereTheyCross) {
   EXPECT_LE(square_and_circle.curves.size(), 6u);  // (5; 8 before)
 }
 
+// Halving a conic never gets its end off a line that end lies on, nor its
+// leg off a line it runs along: hull separation splits the line there
+// instead (an exact point of it) of halving the conic to the subdivision
+// limit. The curve-count bounds fail on the code that halved (counts there
+// in the comments).
+TEST(Crossing, ConicMeetingALineIsNotHalvedTowardsIt) {
+  // An ogonek: both ends of a conic on the square's bottom edge, the rest
+  // of its contour inside the square. Union: the square and a parabolic
+  // segment of chord 4 and height 3 (2/3 * 4 * 3 = 8).
+  Outline ogonek;
+  add_polygon(ogonek, square(0, 0, 10, true));
+  ogonek.move_to({3, 0});
+  ogonek.conic_to({5, -6}, {7, 0});
+  ogonek.line_to({7, 2});
+  ogonek.line_to({3, 2});
+  ogonek.close();
+  const Mesh t_junctions = build_and_check(ogonek, 108.0);
+  EXPECT_LE(t_junctions.curves.size(), 2u);  // (2; 18 when halved)
+  for (const Vec2 end : {Vec2{3, 0}, Vec2{7, 0}})
+    EXPECT_NE(std::find(t_junctions.points.begin(), t_junctions.points.end(), end), t_junctions.points.end());
+  // A cedilla: a contour whose edge along y = 0 touches a conic leaving
+  // (10, 0) along that line. The shape above is the unit square minus the
+  // region between the conic and the corner (0, 0): 100 - (50 - 2/3 * 50);
+  // the triangle below adds 9.
+  Outline cedilla;
+  cedilla.move_to({10, 0});
+  cedilla.line_to({10, 10});
+  cedilla.line_to({0, 10});
+  cedilla.conic_to({0, 0}, {10, 0});
+  cedilla.close();
+  add_polygon(cedilla, {{4, 0}, {6, -3}, {10, 0}});
+  const Mesh tangent = build_and_check(cedilla, 100.0 - 50.0 / 3.0 + 9.0, 1e-9);
+  EXPECT_LE(tangent.curves.size(), 2u);  // (2; 10 when halved)
+  // A lens of two conics around the square's corner, its ends on two of the
+  // square's edges and nothing crossing anywhere: the outlines meet only at
+  // those ends, where the inner conic runs on into the square. The union
+  // still has to be resolved. The lens holds 12 (segments of 3 and 9 on its
+  // chord), 7.5 of it inside the square (the inner segment and the corner's
+  // triangle under the chord: the outer conic leaves the first quadrant at
+  // once).
+  Outline lens;
+  add_polygon(lens, square(0, 0, 10, true));
+  lens.move_to({3, 0});
+  lens.conic_to({3, 3}, {0, 3});
+  lens.conic_to({-3, -3}, {3, 0});
+  lens.close();
+  build_and_check(lens, 104.5);
+}
+
 TEST(Crossing, ManySegmentsThroughOnePoint) {
   // Three bow-ties crossing exactly at the origin (six edges through one
   // point), plus a contour with a vertex on another's edge. The reference is

@@ -730,10 +730,8 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
       for (std::size_t r = 0; r < rings.size(); ++r) mark_base[r + 1] = mark_base[r] + rings[r].size();
       const std::size_t count = mark_base.back();
       split_marks.assign(count, 0);
-      if (split_at_crossings) {
-        split_at.resize(count);
-        split_point.resize(count);
-      }
+      split_point.resize(count);  // (lines are split at points of them in every call)
+      if (split_at_crossings) split_at.resize(count);
       // Grown, never shrunk: resize() would construct every record again.
       if (refs.size() < count) refs.resize(count);
       HullRef* const unsorted = refs.data();
@@ -816,6 +814,36 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
         // (Pieces with a common end, most overlapping pairs, have no proper
         // chord crossing: not asked.)
         const bool common_end = ai == aj || ai == ej || ei == aj || ei == ej;
+        // A line and a conic that halving would never get apart, because a
+        // point of the conic's hull stays on the line however often the
+        // conic is halved: the line is split at that point (exact: the point
+        // is on it), so that the two meet at a common vertex. Either an end
+        // of the conic on the line (a T-junction: an ogonek or a cedilla
+        // drawn onto a stem), or its control with the leg through it along
+        // the line (a conic leaving another contour's line tangentially;
+        // align_tangent_legs does this for neighbours in one ring).
+        if (ci != cj) {
+          const HullRef& line = ci ? rj : ri;
+          const HullRef& conic = ci ? ri : rj;
+          const Vec2 la = line.hull[0], lb = line.hull[1];
+          for (int k : {0, 2, 1}) {
+            const Vec2 e = conic.hull[k];
+            if (e == la || e == lb || !point_on_segment(la, lb, e)) continue;
+            if (k == 1 && orient2d(la, lb, conic.hull[0]) != 0 && orient2d(la, lb, conic.hull[2]) != 0) continue;
+            // (A line already split in this pass is split here in the next.)
+            if (marks[line.mark] == 0) {
+              marks[line.mark] = 2;
+              split_point[line.mark] = e;
+            }
+            // Contours that touch there may still overlap (a lobe of one
+            // inside the other, their outlines meeting only at such
+            // points): before resolving, that calls for the resolver, as a
+            // crossing does.
+            crossing_split = crossing_split || split_at_crossings;
+            any = true;
+            return;
+          }
+        }
         if (split_at_crossings && !common_end && marks[ri.mark] == 0 && marks[rj.mark] == 0 &&
             (!ci || ri.depth < tolerance::kMaxHullSubdivisionDepth) &&
             (!cj || rj.depth < tolerance::kMaxHullSubdivisionDepth)) {
@@ -1026,7 +1054,7 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
           continue;
         }
         const bool at_crossing = ring_marks[i] == 2;
-        if (!p.conic) {  // (a line is only split at a crossing)
+        if (!p.conic) {  // (a line is only split at a crossing or a T-junction)
           next.push_back(p);
           next.back().fresh = true;
           next.push_back(p);
