@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <optional>
 #include <tuple>
 #include <utility>
@@ -37,6 +38,23 @@ namespace curvetext::detail {
 namespace {
 
 Vec2 canonical(Vec2 p) { return {p.x + 0.0, p.y + 0.0}; }
+
+// A 128-bit unsigned integer (a GCC and Clang extension; marked so that
+// -Wpedantic accepts it).
+__extension__ typedef unsigned __int128 Uint128;
+
+// A position as one integer ordered as (x, y): each coordinate's bits mapped
+// to an unsigned integer of the same order (-0.0 taken as +0.0), so equal
+// positions have equal keys.
+Uint128 position_key(Vec2 p) {
+  auto ordered = [](double v) {
+    v += 0.0;
+    std::uint64_t bits;
+    std::memcpy(&bits, &v, sizeof bits);
+    return (bits >> 63) != 0 ? ~bits : bits | (std::uint64_t{1} << 63);
+  };
+  return static_cast<Uint128>(ordered(p.x)) << 64 | ordered(p.y);
+}
 
 // A piece of the arrangement: a line or a conic whose hull nothing enters.
 struct Edge {
@@ -253,13 +271,15 @@ void snap_cuts(const std::vector<Edge>& edges, std::vector<Cut>& cuts) {
 // Splits line edges at every crossing and every end point lying inside them.
 // Rounding a crossing point to doubles can move it off either line by an ulp
 // and, very rarely, create a new conflict; a few rounds settle that (bounded).
-void split_lines(std::vector<Edge>& edges) {
+// Returns true when some edge was split.
+bool split_lines(std::vector<Edge>& edges) {
   constexpr int kRounds = 4;
   // Scratch reused across rounds and calls: the cut points of all edges in
   // one list (edge, point), in the order found.
   thread_local std::vector<Cut> cuts;
   thread_local std::vector<Vec2> along;
   thread_local std::vector<Edge> next;
+  bool split_any = false;
   for (int round = 0; round < kRounds; ++round) {
     cuts.clear();
     auto cut = [&](std::uint32_t i, Vec2 p) {
@@ -296,7 +316,8 @@ void split_lines(std::vector<Edge>& edges) {
       if (o4 == 0 && point_on_segment(f.a, f.b, e.b)) cut(j, e.b);
       return false;
     });
-    if (cuts.empty()) return;
+    if (cuts.empty()) return split_any;
+    split_any = true;
     snap_cuts(edges, cuts);
     // Each edge's cuts together, in the order found.
     std::stable_sort(cuts.begin(), cuts.end(), [](const Cut& a, const Cut& b) { return a.edge < b.edge; });
@@ -328,6 +349,7 @@ void split_lines(std::vector<Edge>& edges) {
     }
     edges.swap(next);
   }
+  return split_any;
 }
 
 // Coincident edges become one with the sum of their directed counts; edges
@@ -615,6 +637,12 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings) {
     });
     if (!any && round > 0) break;
     if (round == kMaxRounds) break;
+    // No conic in conflict and no line split: the next round would find
+    // what this one found.
+    if (!any) {
+      if (!split_lines(edges)) break;
+      continue;
+    }
     next.clear();
     next.reserve(edges.size() + 16);
     for (std::size_t i = 0; i < edges.size(); ++i) {
@@ -659,36 +687,54 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings) {
     kept.push_back(e);
   }
 
-  // Outgoing kept edges per vertex: kept edge indices sorted by start point
-  // (stable: each vertex's in increasing index order).
-  std::vector<std::uint32_t> by_start(kept.size());
-  for (std::uint32_t i = 0; i < kept.size(); ++i) by_start[i] = i;
-  auto start_of = [&](std::uint32_t i) { return std::make_pair(kept[i].a.x, kept[i].a.y); };
-  std::stable_sort(by_start.begin(), by_start.end(),
-                   [&](std::uint32_t x, std::uint32_t y) { return start_of(x) < start_of(y); });
-  struct Outs {
-    const std::uint32_t* first;
-    const std::uint32_t* last;
-    const std::uint32_t* begin() const { return first; }
-    const std::uint32_t* end() const { return last; }
-    std::size_t size() const { return static_cast<std::size_t>(last - first); }
+  // Vertices of the kept edges, numbered: each edge's start and end vertex,
+  // and per vertex its outgoing edges in increasing index order (a vertex
+  // where no kept edge starts has none). Positions compare as one integer
+  // each (position_key), which costs less than comparing pairs of doubles.
+  const std::size_t kept_count = kept.size();
+  struct Start {
+    Uint128 key;
+    std::uint32_t edge;
   };
-  auto outgoing = [&](Vec2 v) {
-    const auto key = std::make_pair(v.x, v.y);
-    const auto lo = std::lower_bound(by_start.begin(), by_start.end(), key,
-                                     [&](std::uint32_t i, const std::pair<double, double>& k) { return start_of(i) < k; });
-    auto hi = lo;
-    while (hi != by_start.end() && !(key < start_of(*hi))) ++hi;
-    return Outs{by_start.data() + (lo - by_start.begin()), by_start.data() + (hi - by_start.begin())};
-  };
+  thread_local std::vector<Start> starts;
+  thread_local std::vector<Uint128> vertex_keys;
+  thread_local std::vector<std::uint32_t> start_vertex, end_vertex, out_first;
+  starts.resize(kept_count);
+  for (std::uint32_t i = 0; i < kept_count; ++i) starts[i] = {position_key(kept[i].a), i};
+  std::sort(starts.begin(), starts.end(),
+            [](const Start& x, const Start& y) { return x.key != y.key ? x.key < y.key : x.edge < y.edge; });
+  // Sorted, the starts are the outgoing lists one vertex after another.
+  vertex_keys.clear();
+  out_first.clear();
+  start_vertex.resize(kept_count);
+  for (std::size_t k = 0; k < kept_count; ++k) {
+    if (k == 0 || starts[k].key != starts[k - 1].key) {
+      vertex_keys.push_back(starts[k].key);
+      out_first.push_back(static_cast<std::uint32_t>(k));
+    }
+    start_vertex[starts[k].edge] = static_cast<std::uint32_t>(vertex_keys.size() - 1);
+  }
+  out_first.push_back(static_cast<std::uint32_t>(kept_count));
+  constexpr std::uint32_t kNoVertex = UINT32_MAX;
+  end_vertex.resize(kept_count);
+  for (std::uint32_t i = 0; i < kept_count; ++i) {
+    const Uint128 key = position_key(kept[i].b);
+    const auto at = std::lower_bound(vertex_keys.begin(), vertex_keys.end(), key);
+    end_vertex[i] = at != vertex_keys.end() && *at == key ? static_cast<std::uint32_t>(at - vertex_keys.begin()) : kNoVertex;
+  }
+  auto out_degree = [&](std::uint32_t v) { return v == kNoVertex ? 0u : out_first[v + 1] - out_first[v]; };
 
   // At v, coming along u -> v: the next edge is the first outgoing one
   // clockwise from the direction back to u. Fill-on-left edges alternate in
   // and out around v, so this pairs each incoming edge with one outgoing edge.
-  auto next_edge = [&](const Edge& in) -> std::uint32_t {
+  auto next_edge = [&](std::uint32_t incoming) -> std::uint32_t {
+    const Edge& in = kept[incoming];
     const Vec2 v = in.b;
+    const std::uint32_t vertex = end_vertex[incoming];
     std::uint32_t best_before = UINT32_MAX, best_any = UINT32_MAX;
-    for (const std::uint32_t o : outgoing(v)) {
+    if (vertex == kNoVertex) return best_any;
+    for (std::uint32_t k = out_first[vertex]; k < out_first[vertex + 1]; ++k) {
+      const std::uint32_t o = starts[k].edge;
       const Vec2 p = kept[o].b;
       if (best_any == UINT32_MAX || angle_less(v, kept[best_any].b, p)) best_any = o;
       if (angle_less(v, p, in.a) && (best_before == UINT32_MAX || angle_less(v, kept[best_before].b, p))) {
@@ -698,13 +744,15 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings) {
     return best_before != UINT32_MAX ? best_before : best_any;
   };
 
-  std::vector<char> used(kept.size(), 0);
+  std::vector<char> used(kept_count, 0);
   std::vector<Ring> loops;
-  for (std::uint32_t start = 0; start < kept.size(); ++start) {
+  thread_local std::vector<std::uint32_t> ring_edges;  // the kept edge of each piece
+  for (std::uint32_t start = 0; start < kept_count; ++start) {
     if (used[start]) continue;
     Ring ring;
+    ring_edges.clear();
     std::uint32_t cur = start;
-    for (std::size_t steps = 0; steps <= kept.size(); ++steps) {
+    for (std::size_t steps = 0; steps <= kept_count; ++steps) {
       used[cur] = 1;
       Piece p;
       p.a = kept[cur].a;
@@ -713,7 +761,8 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings) {
       p.weight = kept[cur].weight;
       p.depth = kept[cur].depth;
       ring.push_back(p);
-      const std::uint32_t nxt = next_edge(kept[cur]);
+      ring_edges.push_back(cur);
+      const std::uint32_t nxt = next_edge(cur);
       if (nxt == UINT32_MAX || nxt == start || used[nxt]) break;
       cur = nxt;
     }
@@ -723,8 +772,7 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings) {
     Ring simple;
     for (std::size_t i = 0; i < ring.size(); ++i) {
       const std::size_t prev = (i + ring.size() - 1) % ring.size();
-      if (ring.size() > 3 && !ring[i].conic && !ring[prev].conic &&
-          outgoing(ring[i].a).size() == 1) {
+      if (ring.size() > 3 && !ring[i].conic && !ring[prev].conic && out_degree(start_vertex[ring_edges[i]]) == 1) {
         const Vec2 a = ring[prev].a, b = ring[i].a, c = ring_end(ring, i);
         if (orient2d(a, b, c) == 0 && dot(b - a, c - b) > 0.0) continue;
       }
