@@ -56,6 +56,25 @@ Uint128 position_key(Vec2 p) {
   return static_cast<Uint128>(ordered(p.x)) << 64 | ordered(p.y);
 }
 
+// Slot of a position in an open-addressing table of 2^bits slots: its
+// coordinates' bits (canonical: no -0.0), each multiplied by its own odd
+// constant, top bits kept (font coordinates' low mantissa bits are zero).
+std::size_t position_slot(Vec2 p, int bits) {
+  std::uint64_t x, y;
+  const Vec2 c = canonical(p);
+  std::memcpy(&x, &c.x, sizeof x);
+  std::memcpy(&y, &c.y, sizeof y);
+  return static_cast<std::size_t>((x * 0x9e3779b97f4a7c15ull ^ y * 0xc2b2ae3d27d4eb4full) >> (64 - bits));
+}
+
+// The smallest number of bits for a table of at least 4 * count slots (at
+// most a quarter full, so that a probe rarely goes past its first slot).
+int table_bits(std::size_t count) {
+  int bits = 4;
+  while ((std::size_t{1} << bits) < 4 * count) ++bits;
+  return bits;
+}
+
 // A piece of the arrangement: a line or a conic whose hull nothing enters.
 struct Edge {
   Vec2 a, b;
@@ -353,19 +372,21 @@ bool split_lines(std::vector<Edge>& edges) {
 }
 
 // Coincident edges become one with the sum of their directed counts; edges
-// whose count cancels (a contour running back over another) disappear.
+// whose count cancels (a contour running back over another) disappear. Each
+// edge is directed from its smaller end and looked up in a hash table of the
+// edges kept so far: the merged edges come in the order of their first
+// occurrence.
 std::vector<Edge> merge_coincident(const std::vector<Edge>& edges) {
-  using Key = std::tuple<double, double, double, double, bool, double, double, double>;
-  // Each edge directed from its smaller end, with its key; sorted by key
-  // (stable, so the first of a group is its first in the input).
-  struct Keyed {
-    Key key;
-    std::uint32_t index;
+  auto same_key = [](const Edge& e, const Edge& f) {
+    return e.a == f.a && e.b == f.b && e.conic == f.conic &&
+           (!e.conic || (e.control == f.control && e.weight == f.weight));
   };
-  std::vector<Edge> directed;
-  directed.reserve(edges.size());
-  std::vector<Keyed> keyed;
-  keyed.reserve(edges.size());
+  std::vector<Edge> merged;
+  merged.reserve(edges.size());
+  const int bits = table_bits(edges.size());
+  thread_local std::vector<std::int32_t> slots;  // index into merged, or -1
+  slots.assign(std::size_t{1} << bits, -1);
+  const std::size_t mask = (std::size_t{1} << bits) - 1;
   for (const Edge& e0 : edges) {
     Edge e = e0;
     if (std::make_pair(e.b.x, e.b.y) < std::make_pair(e.a.x, e.a.y)) {
@@ -373,27 +394,21 @@ std::vector<Edge> merge_coincident(const std::vector<Edge>& edges) {
       e.count = -e.count;
     }
     if (e.a == e.b) continue;
-    keyed.push_back({Key{e.a.x, e.a.y, e.b.x, e.b.y, e.conic, e.conic ? e.control.x : 0.0,
-                         e.conic ? e.control.y : 0.0, e.conic ? e.weight : 0.0},
-                     static_cast<std::uint32_t>(directed.size())});
-    directed.push_back(e);
+    std::size_t slot = (position_slot(e.a, bits) ^ position_slot(e.b, bits) * 3) & mask;
+    for (;; slot = (slot + 1) & mask) {
+      const std::int32_t k = slots[slot];
+      if (k < 0) {
+        slots[slot] = static_cast<std::int32_t>(merged.size());
+        merged.push_back(e);
+        break;
+      }
+      if (same_key(merged[static_cast<std::size_t>(k)], e)) {
+        merged[static_cast<std::size_t>(k)].count += e.count;
+        break;
+      }
+    }
   }
-  std::stable_sort(keyed.begin(), keyed.end(), [](const Keyed& a, const Keyed& b) { return a.key < b.key; });
-  // One edge per group of equal keys, with the group's total count, in the
-  // order of the groups' first edges.
-  std::vector<std::uint32_t> firsts;
-  for (std::size_t g = 0; g < keyed.size();) {
-    Edge& first = directed[keyed[g].index];
-    std::size_t h = g + 1;
-    for (; h < keyed.size() && !(keyed[g].key < keyed[h].key); ++h) first.count += directed[keyed[h].index].count;
-    firsts.push_back(keyed[g].index);
-    g = h;
-  }
-  std::sort(firsts.begin(), firsts.end());
-  std::vector<Edge> merged;
-  merged.reserve(firsts.size());
-  for (const std::uint32_t i : firsts)
-    if (directed[i].count != 0) merged.push_back(directed[i]);
+  merged.erase(std::remove_if(merged.begin(), merged.end(), [](const Edge& e) { return e.count == 0; }), merged.end());
   return merged;
 }
 
@@ -418,22 +433,10 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
   right.assign(n, 0);
   if (n == 0) return;
 
-  // The chains: the edge ends sorted by position; a position held by exactly
-  // two ends of two different edges joins them.
-  struct End {
-    Vec2 p;
-    std::uint32_t edge;
-    bool at_b;  // the edge's end b (else its start a)
-  };
-  thread_local std::vector<End> ends;
-  ends.clear();
-  for (std::uint32_t i = 0; i < n; ++i) {
-    ends.push_back({edges[i].a, i, false});
-    ends.push_back({edges[i].b, i, true});
-  }
-  std::sort(ends.begin(), ends.end(), [](const End& u, const End& v) {
-    return u.p.x != v.p.x ? u.p.x < v.p.x : (u.p.y != v.p.y ? u.p.y < v.p.y : u.edge < v.edge);
-  });
+  // The chains: a position held by exactly two ends of two different edges
+  // joins them. End k is edge k / 2's start (k even) or end (k odd); a hash
+  // table of positions holds each position's first end, with how many ends
+  // it has and its second.
   // Up to two joins per edge (at a and at b): the other edge, and whether its
   // sides are swapped.
   struct Join {
@@ -442,16 +445,40 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
   };
   thread_local std::vector<Join> joins;
   joins.assign(2 * n, Join{});
-  for (std::size_t k = 0; k < ends.size();) {
-    std::size_t m = k + 1;
-    while (m < ends.size() && ends[m].p == ends[k].p) ++m;
-    if (m - k == 2 && ends[k].edge != ends[k + 1].edge) {
-      const End &u = ends[k], &v = ends[k + 1];
-      const bool swapped = u.at_b == v.at_b;
-      joins[2 * u.edge + u.at_b] = {v.edge, swapped};
-      joins[2 * v.edge + v.at_b] = {u.edge, swapped};
+  {
+    auto end_point = [&](std::size_t k) { return (k & 1) != 0 ? edges[k / 2].b : edges[k / 2].a; };
+    const int bits = table_bits(2 * n);
+    const std::size_t mask = (std::size_t{1} << bits) - 1;
+    thread_local std::vector<std::int32_t> slots;  // a position's first end, or -1
+    thread_local std::vector<std::uint32_t> ends_at, second_end;  // per first end
+    slots.assign(mask + 1, -1);
+    ends_at.assign(2 * n, 0);
+    second_end.resize(2 * n);
+    for (std::size_t k = 0; k < 2 * n; ++k) {
+      const Vec2 p = end_point(k);
+      for (std::size_t slot = position_slot(p, bits);; slot = (slot + 1) & mask) {
+        const std::int32_t first = slots[slot];
+        if (first < 0) {
+          slots[slot] = static_cast<std::int32_t>(k);
+          ends_at[k] = 1;
+          break;
+        }
+        if (end_point(static_cast<std::size_t>(first)) == p) {
+          if (++ends_at[static_cast<std::size_t>(first)] == 2) second_end[static_cast<std::size_t>(first)] = static_cast<std::uint32_t>(k);
+          break;
+        }
+      }
     }
-    k = m;
+    for (std::size_t k = 0; k < 2 * n; ++k) {
+      if (ends_at[k] != 2) continue;
+      const std::size_t u = k, v = second_end[k];
+      const std::uint32_t eu = static_cast<std::uint32_t>(u / 2), ev = static_cast<std::uint32_t>(v / 2);
+      if (eu == ev) continue;
+      const bool u_at_b = (u & 1) != 0, v_at_b = (v & 1) != 0;
+      const bool swapped = u_at_b == v_at_b;
+      joins[u] = {ev, swapped};
+      joins[v] = {eu, swapped};
+    }
   }
 
   // Only edges whose span in the ray's perpendicular coordinate contains the
