@@ -802,6 +802,33 @@ TEST(Crossing, ConicMeetingALineIsNotHalvedTowardsIt) {
   build_and_check(lens, 104.5);
 }
 
+TEST(Crossing, ConicCrossingALineNearItsEndIsSplitThere) {
+  // A conic crossing the square's bottom edge 0.07 from the edge's end:
+  // (9.7, -1) to (10.1, 1) through control (10.02, 0.25) has y(t) = -1 +
+  // 2.5 t - 0.5 t^2, zero at t = 2.5 - sqrt(4.25), x = 9.934. Both are split
+  // there (the point put exactly on the horizontal line) rather than the
+  // conic being halved ten times towards a crossing that stays at 99.3% of
+  // the line. The reference area is check_mesh's own sweep.
+  Outline o;
+  add_polygon(o, square(0, 0, 10, true));
+  o.move_to({9.7, -1});
+  o.line_to({12, -1});
+  o.line_to({12, 1});
+  o.line_to({10.1, 1});
+  o.conic_to({10.02, 0.25}, {9.7, -1});
+  o.close();
+  const Mesh mesh = build_mesh(o);
+  const MeshCheck check = check_mesh(mesh, o);
+  for (const std::string& p : check.problems) ADD_FAILURE() << p;
+  EXPECT_GT(check.area_outline, 100.0);
+  EXPECT_LE(mesh.curves.size(), 3u);  // (2; 4 on the code that kept crossings 1/64 of a line from its end)
+  const double t = 2.5 - std::sqrt(4.25);
+  const double x = 9.7 * (1 - t) * (1 - t) + 2 * t * (1 - t) * 10.02 + 10.1 * t * t;
+  const bool on_line = std::any_of(mesh.points.begin(), mesh.points.end(),
+                                   [x](Vec2 p) { return p.y == 0.0 && std::fabs(p.x - x) < 1e-12; });
+  EXPECT_TRUE(on_line) << "the crossing (" << x << ", 0) is not a vertex";
+}
+
 TEST(Crossing, ManySegmentsThroughOnePoint) {
   // Three bow-ties crossing exactly at the origin (six edges through one
   // point), plus a contour with a vertex on another's edge. The reference is

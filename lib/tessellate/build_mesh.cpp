@@ -622,8 +622,10 @@ void piece_at(const Vec2* h, int n, double w, double t, Vec2& point, Vec2& deriv
 // Parameters t on p and s on q where their curves cross, for splitting both
 // there. Asked only when their chords cross properly (exact signs), from
 // the chords' crossing, by Newton's method on p(t) = q(s); accepted when the
-// steps fall below 1e-12 with both parameters in [1/64, 63/64] (no sliver
-// next to an end). Tangent curves (a singular step), curves that do not
+// steps fall below 1e-12 with a conic's parameter in [1/64, 63/64] (no
+// sliver of a curve next to its end: halving moves such a crossing inward)
+// and a line's anywhere inside (halving the conic never moves the crossing
+// along the line). Tangent curves (a singular step), curves that do not
 // cross, and slow convergence give false: the pieces are then halved.
 bool crossing_parameters(const Vec2* p, int np, double wp, const Vec2* q, int nq, double wq, double& t, double& s) {
   const Vec2 pa = p[0], pb = p[np - 1], qa = q[0], qb = q[nq - 1];
@@ -645,7 +647,8 @@ bool crossing_parameters(const Vec2* p, int np, double wp, const Vec2* q, int nq
     t += dt;
     s += ds;
     if (!(t > 0.0 && t < 1.0 && s > 0.0 && s < 1.0)) return false;
-    if (std::fabs(dt) < kSettled && std::fabs(ds) < kSettled) return t >= kMargin && t <= 1.0 - kMargin && s >= kMargin && s <= 1.0 - kMargin;
+    if (std::fabs(dt) < kSettled && std::fabs(ds) < kSettled)
+      return (np == 2 || (t >= kMargin && t <= 1.0 - kMargin)) && (nq == 2 || (s >= kMargin && s <= 1.0 - kMargin));
   }
   return false;
 }
@@ -682,6 +685,13 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
   // "no overlap, no crossing" when that pass found no crossing and no overlap
   // it could not split (otherwise the pass tests every pair again).
   bool test_all = true;
+  // After a split at a crossing, a pass tests every fresh piece against all
+  // others instead of the children of the pairs that overlapped: the point is
+  // the conic's, rounded, and off the other piece by that rounding, so that
+  // piece's halves need not lie in its hull. Pairs of pieces that are not
+  // fresh were tested in the pass before with the same hulls and did not
+  // overlap (an overlap marks a piece for splitting, or sets test_all).
+  bool fresh_against_all = false;
   // The overlapping pairs of the pass (ref indices: first piece << 32 |
   // second), and those of the pass before with where each of its pieces went
   // (piece k became pieces child_first[k], plus child_first[k] + 1 when it
@@ -708,6 +718,12 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
     thread_local std::vector<char> split_marks;
     thread_local std::vector<double> split_at;
     thread_local std::vector<Vec2> split_point;
+    // Further points of the pass to split lines at (mark, point): a line is
+    // split at every T-junction found on it in one pass, besides its
+    // split_point, because a line split at a crossing alone gets a vertex off
+    // the line (the crossing rounded), and a T-junction point on the line
+    // would then no longer be on either half.
+    thread_local std::vector<std::pair<std::uint32_t, Vec2>> more_line_points;
     bool split_this_pass = false;
     // Tangent legs are aligned (align_tangent_legs) only when the pass has
     // found an overlap, and then the pass is run again on the aligned rings:
@@ -718,7 +734,7 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
     for (bool aligned = false;;) {
       // (After aligning, pieces may have been inserted and the pairs of the
       // pass before no longer name them: the pass then scans the boxes.)
-      const bool by_partners = !test_all && !aligned;
+      const bool by_partners = !test_all && !fresh_against_all && !aligned;
       overlaps.clear();
       any = false;
       overlap_left = false;
@@ -730,6 +746,7 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
       for (std::size_t r = 0; r < rings.size(); ++r) mark_base[r + 1] = mark_base[r] + rings[r].size();
       const std::size_t count = mark_base.back();
       split_marks.assign(count, 0);
+      more_line_points.clear();
       split_point.resize(count);  // (lines are split at points of them in every call)
       if (split_at_crossings) split_at.resize(count);
       // Grown, never shrunk: resize() would construct every record again.
@@ -830,10 +847,11 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
             const Vec2 e = conic.hull[k];
             if (e == la || e == lb || !point_on_segment(la, lb, e)) continue;
             if (k == 1 && orient2d(la, lb, conic.hull[0]) != 0 && orient2d(la, lb, conic.hull[2]) != 0) continue;
-            // (A line already split in this pass is split here in the next.)
             if (marks[line.mark] == 0) {
               marks[line.mark] = 2;
               split_point[line.mark] = e;
+            } else if (split_point[line.mark] != e) {
+              more_line_points.push_back({static_cast<std::uint32_t>(line.mark), e});
             }
             // Contours that touch there may still overlap (a lobe of one
             // inside the other, their outlines meeting only at such
@@ -850,8 +868,18 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
           double t = 0.0, u = 0.0;
           if (crossing_parameters(ri.hull, ri.n, ri.weight, rj.hull, rj.n, rj.weight, t, u)) {
             const HullRef& conic = ci ? ri : rj;
-            const Vec2 x = canonical(
+            Vec2 x = canonical(
                 split(Segment::conic(conic.hull[0], conic.hull[1], conic.hull[2], conic.weight), ci ? t : u).second.p[0]);
+            // On a horizontal or vertical line (most of a font's lines) the
+            // point is put on the line exactly, a move of its rounding: then
+            // it is on every line along that one too (another contour's
+            // edge there), where the conic's half could otherwise start a
+            // rounding away and cross it again next to its end.
+            if (ci != cj) {
+              const HullRef& line = ci ? rj : ri;
+              if (line.hull[0].y == line.hull[1].y) x.y = line.hull[0].y;
+              if (line.hull[0].x == line.hull[1].x) x.x = line.hull[0].x;
+            }
             if (x != ai && x != ei && x != aj && x != ej) {
               marks[ri.mark] = 2;
               marks[rj.mark] = 2;
@@ -939,9 +967,10 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
             for (std::size_t cq = child_first[q]; cq < child_first[q + 1]; ++cq) test_pair(unsorted[cp], unsorted[cq]);
         }
       } else if (!test_all) {
-        // (After aligning tangent legs in a pass that tests only fresh
-        // pieces.) Each fresh piece against every piece whose box meets its
-        // own (a fresh pair once, from its first piece).
+        // (After a split at a crossing, or after aligning tangent legs in a
+        // pass that tests only fresh pieces.) Each fresh piece against every
+        // piece whose box meets its own (a fresh pair once, from its first
+        // piece).
         thread_local std::vector<std::uint32_t> fresh_refs;
         fresh_refs.clear();
         for (std::size_t r = 0; r < rings.size(); ++r)
@@ -1031,15 +1060,21 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
       if (crossing_split) *crossing = true;
       return !overlap_left;
     }
-    // (After a split at a crossing, the pass tests every pair: a line's new
-    // vertex is off the line by its rounding, so its halves need not lie in
-    // its hull.)
-    test_all = unsplit_overlap || (crossing != nullptr && cross_seen && !lines_crossed) || split_this_pass;
+    test_all = unsplit_overlap || (crossing != nullptr && cross_seen && !lines_crossed);
+    fresh_against_all = split_this_pass;
     crossing_split = crossing_split || split_this_pass;
+    // (Each line's further points once, in mark order.)
+    std::sort(more_line_points.begin(), more_line_points.end(), [](const auto& u, const auto& v) {
+      return u.first != v.first ? u.first < v.first : std::make_pair(u.second.x, u.second.y) < std::make_pair(v.second.x, v.second.y);
+    });
+    more_line_points.erase(std::unique(more_line_points.begin(), more_line_points.end()), more_line_points.end());
     child_first.resize(split_marks.size() + 1);
     child_first[0] = 0;
-    for (std::size_t k = 0; k < split_marks.size(); ++k)
-      child_first[k + 1] = child_first[k] + 1 + static_cast<std::uint32_t>(split_marks[k] != 0);
+    for (std::size_t k = 0, m = 0; k < split_marks.size(); ++k) {
+      std::uint32_t children = 1 + static_cast<std::uint32_t>(split_marks[k] != 0);
+      for (; m < more_line_points.size() && more_line_points[m].first == k; ++m) ++children;
+      child_first[k + 1] = child_first[k] + children;
+    }
     partners.swap(overlaps);
     for (std::size_t r = 0; r < rings.size(); ++r) {
       const char* ring_marks = split_marks.data() + mark_base[r];
@@ -1054,12 +1089,30 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
           continue;
         }
         const bool at_crossing = ring_marks[i] == 2;
-        if (!p.conic) {  // (a line is only split at a crossing or a T-junction)
+        if (!p.conic) {  // (a line is only split at a crossing or T-junctions)
+          const std::size_t mark = mark_base[r] + i;
           next.push_back(p);
           next.back().fresh = true;
-          next.push_back(p);
-          next.back().a = split_point[mark_base[r] + i];
-          next.back().fresh = true;
+          const auto more = std::equal_range(more_line_points.begin(), more_line_points.end(), std::pair{static_cast<std::uint32_t>(mark), Vec2{}},
+                                             [](const auto& u, const auto& v) { return u.first < v.first; });
+          if (more.first == more.second) {
+            next.push_back(p);
+            next.back().a = split_point[mark];
+            next.back().fresh = true;
+            continue;
+          }
+          // Several points: in order along the line.
+          thread_local std::vector<Vec2> points;
+          points.assign(1, split_point[mark]);
+          for (auto it = more.first; it != more.second; ++it) points.push_back(it->second);
+          const Vec2 direction = ring_end(rings[r], i) - p.a;
+          std::sort(points.begin(), points.end(),
+                    [&](Vec2 u, Vec2 v) { return dot(u - p.a, direction) < dot(v - p.a, direction); });
+          for (const Vec2 point : points) {
+            next.push_back(p);
+            next.back().a = point;
+            next.back().fresh = true;
+          }
           continue;
         }
         const double at = at_crossing ? split_at[mark_base[r] + i] : 0.5;
