@@ -829,6 +829,32 @@ TEST(Crossing, ConicCrossingALineNearItsEndIsSplitThere) {
   EXPECT_TRUE(on_line) << "the crossing (" << x << ", 0) is not a vertex";
 }
 
+TEST(Crossing, LineWithACrossingAndATJunctionIsSplitAtBoth) {
+  // The triangle's slanted edge (0, 0) -> (10, 3) is crossed by one conic
+  // and has another conic end on it at (5, 1.5), found in the same pass. A
+  // crossing's point is rounded and may lie off a slanted line; were the
+  // edge split there alone, (5, 1.5) would no longer lie exactly on either
+  // half, and the second conic would be halved to the limit towards it.
+  // (The crossing contour first: its pair is then found first, and the
+  // edge already has a split point when the T-junction comes.)
+  Outline o;
+  add_polygon(o, {{0, 0}, {10, 3}, {0, 10}});
+  o.move_to({2, -1});
+  o.line_to({3, -1});
+  o.conic_to({3, 0.9}, {2.5, 2.5});
+  o.close();
+  o.move_to({5, 1.5});
+  o.line_to({5, -1});
+  o.line_to({7, -1});
+  o.conic_to({7, 1.2}, {5, 1.5});
+  o.close();
+  const Mesh mesh = build_mesh(o);
+  const MeshCheck check = check_mesh(mesh, o);
+  for (const std::string& p : check.problems) ADD_FAILURE() << p;
+  EXPECT_NE(std::find(mesh.points.begin(), mesh.points.end(), Vec2{5, 1.5}), mesh.points.end());
+  EXPECT_LE(mesh.curves.size(), 4u);  // (11 when a line took one point per pass)
+}
+
 TEST(Crossing, ManySegmentsThroughOnePoint) {
   // Three bow-ties crossing exactly at the origin (six edges through one
   // point), plus a contour with a vertex on another's edge. The reference is

@@ -55,7 +55,11 @@ bool hulls_overlap(const Vec2* p, int np, const Vec2* q, int nq);
 // method), and that piece too, both at the same point, instead of halving the
 // conic ten times towards the crossing; `crossing` is then set to true
 // whatever else is found (the rings now cross at a common vertex, which only
-// the crossing resolver deals with), and it must not be null.
+// the crossing resolver deals with), and it must not be null. In every call,
+// a line on which a conic ends, or along which a conic's leg runs, is split
+// at that point (exact: the point is on the line) instead of the conic being
+// halved towards it; with `split_at_crossings` that too sets `crossing`
+// (contours touching there may overlap without crossing anywhere).
 bool separate_hulls(std::vector<Ring>& rings, bool* crossing = nullptr, bool split_at_crossings = false);
 
 // Position of p against the chord polygon of a ring (nonzero winding).
