@@ -176,12 +176,23 @@ bool for_each_close_pair(const std::vector<Edge>& edges, F&& f) {
     low_b[k] = along_y ? box.min.x : box.min.y;
     high_b[k] = along_y ? box.max.x : box.max.y;
   }
+  // The boxes after box i that meet it along a are gathered first, those
+  // that also meet it along b kept without a branch (whether they do follows
+  // no pattern a predictor could learn; a branch per candidate cost more
+  // than the pairs' tests for a glyph whose long stems overlap most edges
+  // along a).
+  thread_local std::vector<std::uint32_t> candidates;
+  candidates.resize(n);
+  std::uint32_t* const candidate = candidates.data();
   for (std::size_t i = 0; i < n; ++i) {
     const double upper = high_a[i], lo = low_b[i], hi = high_b[i];
+    std::size_t found = 0;
     for (std::size_t j = i + 1; j < n && keys[j].low <= upper; ++j) {
-      if (low_b[j] > hi || lo > high_b[j]) continue;
-      if (f(keys[i].edge, keys[j].edge)) return true;
+      candidate[found] = keys[j].edge;
+      found += static_cast<std::size_t>((low_b[j] <= hi) & (lo <= high_b[j]));
     }
+    for (std::size_t k = 0; k < found; ++k)
+      if (f(keys[i].edge, candidate[k])) return true;
   }
   return false;
 }
@@ -230,7 +241,8 @@ struct Cut {
 };
 
 void snap_cuts(const std::vector<Edge>& edges, std::vector<Cut>& cuts) {
-  std::vector<Vec2> vertices;
+  thread_local std::vector<Vec2> vertices;
+  vertices.clear();
   Box all;
   for (const Edge& e : edges) {
     vertices.push_back(e.a);
@@ -241,6 +253,33 @@ void snap_cuts(const std::vector<Edge>& edges, std::vector<Cut>& cuts) {
   const double extent = std::max(all.max.x - all.min.x, all.max.y - all.min.y);
   const double eps = std::max(tolerance::kMergeDistanceFontUnits, 1e-12 * extent);
   auto by_x = [](Vec2 a, Vec2 b) { return a.x != b.x ? a.x < b.x : a.y < b.y; };
+  // With few cuts (the usual resolve), each looks for its vertex by scanning
+  // them as they are, which costs less than sorting them: the same vertex as
+  // below (the nearest within eps, Chebyshev; the last in (x, y) order among
+  // equally near ones). Cuts left over go through the sorted path, which
+  // leaves the snapped ones where they are.
+  if (cuts.size() <= 16) {
+    bool loose_left = false;
+    for (Cut& c : cuts) {
+      double best = eps;
+      bool found = false;
+      Vec2 nearest{};
+      for (const Vec2 v : vertices) {
+        const double d = std::max(std::fabs(v.x - c.p.x), std::fabs(v.y - c.p.y));
+        if (d < best || (d == best && (!found || !by_x(v, nearest)))) {
+          best = d;
+          nearest = v;
+          found = true;
+        }
+      }
+      if (found) {
+        c.p = nearest;
+      } else {
+        loose_left = true;
+      }
+    }
+    if (!loose_left) return;
+  }
   std::sort(vertices.begin(), vertices.end(), by_x);
   vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
   // The nearest point of a list sorted by x within eps (Chebyshev) of p.
@@ -310,6 +349,9 @@ bool split_lines(std::vector<Edge>& edges) {
       const Edge& f = edges[j];
       if (e.conic || f.conic || same_ends(e, f)) return false;
       const int o1 = orient2d(e.a, e.b, f.a), o2 = orient2d(e.a, e.b, f.b);
+      // f strictly on one side of e's line (most pairs whose boxes meet): it
+      // neither crosses nor touches e, and no end of e can lie on it.
+      if (o1 * o2 > 0) return false;
       const int o3 = orient2d(f.a, f.b, e.a), o4 = orient2d(f.a, f.b, e.b);
       if (o1 * o2 < 0 && o3 * o4 < 0) {
         // Proper crossing: the point from the parametrisation of the edge
