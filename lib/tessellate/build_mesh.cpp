@@ -694,8 +694,8 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
   bool fresh_against_all = false;
   // The overlapping pairs of the pass (ref indices: first piece << 32 |
   // second), and those of the pass before with where each of its pieces went
-  // (piece k became pieces child_first[k], plus child_first[k] + 1 when it
-  // was split). A pass that tests only fresh pieces tests just the children
+  // (piece k became pieces child_first[k] .. child_first[k + 1] - 1: two
+  // when it was split, more for a line split at several points). A pass that tests only fresh pieces tests just the children
   // of the pairs that overlapped before: a child's hull lies in its parent's,
   // so a child can only overlap what its parent overlapped (its sibling and
   // its ring neighbours it meets only at their common vertex), and a piece
