@@ -571,6 +571,22 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
   };
   std::optional<Bins> by_y, by_x;
   std::size_t rays = 0;
+  // The ends' heights in either frame, one array each: y, and for rotated
+  // rays -x (the rotated frame's y, exact).
+  thread_local std::vector<double> heights;
+  heights.resize(4 * n);
+  double* const a_y = heights.data();
+  double* const b_y = a_y + n;
+  double* const a_rotated = b_y + n;
+  double* const b_rotated = a_rotated + n;
+  for (std::size_t j = 0; j < n; ++j) {
+    a_y[j] = edges[j].a.y;
+    b_y[j] = edges[j].b.y;
+    a_rotated[j] = -edges[j].a.x;
+    b_rotated[j] = -edges[j].b.x;
+  }
+  thread_local std::vector<std::uint32_t> straddling;
+  straddling.resize(n);
   // Left and right winding of edge i by its own ray.
   auto cast = [&](std::size_t i) {
     const Edge& e = edges[i];
@@ -579,13 +595,19 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
     const Vec2 mid = (e.a + e.b) * 0.5;
     const Vec2 m = tf(mid);
     int w = 0;
+    // Only an edge whose span straddles the ray's line can be crossed: those
+    // are gathered first, without a branch per edge (most do not straddle,
+    // in no order a predictor could learn).
+    const double* const a_height = rotate ? a_rotated : a_y;
+    const double* const b_height = rotate ? b_rotated : b_y;
+    std::size_t found = 0;
+    auto gather = [&](std::uint32_t j) {
+      straddling[found] = j;
+      found += static_cast<std::size_t>(((a_height[j] <= m.y) != (b_height[j] <= m.y)) & (j != i));
+    };
     auto test = [&](std::uint32_t j) {
-      if (j == i) return;
       const Edge& f = edges[j];
       const Vec2 a = tf(f.a), b = tf(f.b);
-      // Only an edge whose span straddles the ray's line can be crossed (the
-      // cheap test first: most candidates do not).
-      if ((a.y <= m.y) == (b.y <= m.y)) return;
       // For an edge sharing an end point with e, every point of e's open
       // interior is on the side of f's line where e's other end is; asking
       // that end instead of the rounded midpoint is exact even for a tiny e.
@@ -601,13 +623,14 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
     // The first 16 rays (or all of them, for fewer than 64 edges) test every
     // edge, about what making the bins costs; later ones use the bins.
     if (++rays <= 16 || n < 64) {
-      for (std::uint32_t j = 0; j < n; ++j) test(j);
+      for (std::uint32_t j = 0; j < n; ++j) gather(j);
     } else {
       std::optional<Bins>& slot = rotate ? by_x : by_y;
       if (!slot) slot = make_bins(rotate);
       const std::size_t k = slot->bin(rotate ? mid.x : mid.y);
-      for (std::uint32_t c = slot->start[k]; c < slot->start[k + 1]; ++c) test(slot->members[c]);
+      for (std::uint32_t c = slot->start[k]; c < slot->start[k + 1]; ++c) gather(slot->members[c]);
     }
+    for (std::size_t c = 0; c < found; ++c) test(straddling[c]);
     const bool upward = tf(e.b).y > tf(e.a).y;
     left[i] = upward ? w + e.count : w;
     right[i] = upward ? w : w - e.count;
