@@ -29,6 +29,7 @@
 #include "curvetext/error.hpp"
 #include "curvetext/mesh.hpp"
 #include "curvetext/tolerances.hpp"
+#include "tessellate/columns.hpp"
 #include "tessellate/predicates.hpp"
 #include "tessellate/rings.hpp"
 #include "tessellate/stage_timing.hpp"
@@ -910,11 +911,7 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
       // (their outcomes are unpredictable; most pairs are rejected by their
       // boxes alone).
       thread_local std::vector<double> box_sides;
-      box_sides.resize(4 * count);
-      double* const min_x = box_sides.data();
-      double* const max_x = min_x + count;
-      double* const min_y = max_x + count;
-      double* const max_y = min_y + count;
+      const auto [min_x, max_x, min_y, max_y] = columns<4>(box_sides, count);
       for (std::size_t k = 0; k < count && !by_partners; ++k) {
         const Box& b = unsorted[k].box;
         min_x[k] = b.min.x;
@@ -1019,11 +1016,7 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
         thread_local std::vector<std::uint32_t> candidates;
         candidates.resize(count);
         std::uint32_t* const candidate = candidates.data();
-        sorted_sides.resize(4 * count);
-        double* const s_min_a = sorted_sides.data();
-        double* const s_max_a = s_min_a + count;
-        double* const s_min_b = s_max_a + count;
-        double* const s_max_b = s_min_b + count;
+        const auto [s_min_a, s_max_a, s_min_b, s_max_b] = columns<4>(sorted_sides, count);
         for (std::size_t k = 0; k < count; ++k) {
           const std::uint32_t r = keys[k].ref;
           s_min_a[k] = min_a[r];

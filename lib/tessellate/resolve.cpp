@@ -31,6 +31,7 @@
 
 #include "curvetext/curves.hpp"
 #include "curvetext/tolerances.hpp"
+#include "tessellate/columns.hpp"
 #include "tessellate/rings.hpp"
 
 namespace curvetext::detail {
@@ -165,10 +166,7 @@ bool for_each_close_pair(const std::vector<Edge>& edges, F&& f) {
   for (std::size_t k = 0; k < n; ++k)
     keys[k] = {along_y ? edges[k].box.min.y : edges[k].box.min.x, static_cast<std::uint32_t>(k)};
   std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) { return a.low < b.low; });
-  sides.resize(3 * n);
-  double* const high_a = sides.data();
-  double* const low_b = high_a + n;
-  double* const high_b = low_b + n;
+  const auto [high_a, low_b, high_b] = columns<3>(sides, n);
   for (std::size_t k = 0; k < n; ++k) {
     const Box& box = edges[keys[k].edge].box;
     high_a[k] = along_y ? box.max.y : box.max.x;
@@ -574,11 +572,7 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
   // The ends' heights in either frame, one array each: y, and for rotated
   // rays -x (the rotated frame's y, exact).
   thread_local std::vector<double> heights;
-  heights.resize(4 * n);
-  double* const a_y = heights.data();
-  double* const b_y = a_y + n;
-  double* const a_rotated = b_y + n;
-  double* const b_rotated = a_rotated + n;
+  const auto [a_y, b_y, a_rotated, b_rotated] = columns<4>(heights, n);
   for (std::size_t j = 0; j < n; ++j) {
     a_y[j] = edges[j].a.y;
     b_y[j] = edges[j].b.y;
