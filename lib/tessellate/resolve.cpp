@@ -323,11 +323,51 @@ void snap_cuts(const std::vector<Edge>& edges, std::vector<Cut>& cuts) {
   }
 }
 
+// The cut points two lines i and j (not the same segment) make on each
+// other: their crossing, or the end points of one lying inside the other.
+void line_pair_cuts(const std::vector<Edge>& edges, std::uint32_t i, std::uint32_t j, std::vector<Cut>& cuts) {
+  const Edge& e = edges[i];
+  const Edge& f = edges[j];
+  auto cut = [&](std::uint32_t k, Vec2 p) {
+    if (p == edges[k].a || p == edges[k].b) return;
+    cuts.push_back({k, canonical(p)});
+  };
+  const int o1 = orient2d(e.a, e.b, f.a), o2 = orient2d(e.a, e.b, f.b);
+  // f strictly on one side of e's line (most pairs whose boxes meet): it
+  // neither crosses nor touches e, and no end of e can lie on it.
+  if (o1 * o2 > 0) return;
+  const int o3 = orient2d(f.a, f.b, e.a), o4 = orient2d(f.a, f.b, e.b);
+  if (o1 * o2 < 0 && o3 * o4 < 0) {
+    // Proper crossing: the point from the parametrisation of the edge
+    // whose start is least (so the point does not depend on the order
+    // the pair comes in), t clamped to the closed interval (rounding
+    // cannot push it past an end).
+    const bool e_first = std::make_pair(e.a.x, e.a.y) < std::make_pair(f.a.x, f.a.y) ||
+                         (e.a == f.a && std::make_pair(e.b.x, e.b.y) < std::make_pair(f.b.x, f.b.y));
+    const Edge& g = e_first ? e : f;
+    const Edge& h = e_first ? f : e;
+    const Vec2 r = g.b - g.a, s = h.b - h.a;
+    double t = cross(h.a - g.a, s) / cross(r, s);
+    t = std::clamp(t, 0.0, 1.0);
+    const Vec2 p = g.a + r * t;
+    cut(i, p);
+    cut(j, p);
+    return;
+  }
+  // Touching: an end point of one on the other (T-junction, overlap).
+  if (o1 == 0 && point_on_segment(e.a, e.b, f.a)) cut(i, f.a);
+  if (o2 == 0 && point_on_segment(e.a, e.b, f.b)) cut(i, f.b);
+  if (o3 == 0 && point_on_segment(f.a, f.b, e.a)) cut(j, e.a);
+  if (o4 == 0 && point_on_segment(f.a, f.b, e.b)) cut(j, e.b);
+}
+
 // Splits line edges at every crossing and every end point lying inside them.
 // Rounding a crossing point to doubles can move it off either line by an ulp
 // and, very rarely, create a new conflict; a few rounds settle that (bounded).
-// Returns true when some edge was split.
-bool split_lines(std::vector<Edge>& edges) {
+// `found`, when given, holds the cut points of the edges as they are, already
+// looked for (by the caller's own sweep over the same pairs); they are used
+// up. Returns true when some edge was split.
+bool split_lines(std::vector<Edge>& edges, std::vector<Cut>* found = nullptr) {
   constexpr int kRounds = 4;
   // Scratch reused across rounds and calls: the cut points of all edges in
   // one list (edge, point), in the order found.
@@ -337,43 +377,16 @@ bool split_lines(std::vector<Edge>& edges) {
   bool split_any = false;
   for (int round = 0; round < kRounds; ++round) {
     cuts.clear();
-    auto cut = [&](std::uint32_t i, Vec2 p) {
-      if (p == edges[i].a || p == edges[i].b) return;
-      cuts.push_back({i, canonical(p)});
-    };
-    for_each_close_pair(edges, [&](std::uint32_t i, std::uint32_t j) {
-      const Edge& e = edges[i];
-      const Edge& f = edges[j];
-      if (e.conic || f.conic || same_ends(e, f)) return false;
-      const int o1 = orient2d(e.a, e.b, f.a), o2 = orient2d(e.a, e.b, f.b);
-      // f strictly on one side of e's line (most pairs whose boxes meet): it
-      // neither crosses nor touches e, and no end of e can lie on it.
-      if (o1 * o2 > 0) return false;
-      const int o3 = orient2d(f.a, f.b, e.a), o4 = orient2d(f.a, f.b, e.b);
-      if (o1 * o2 < 0 && o3 * o4 < 0) {
-        // Proper crossing: the point from the parametrisation of the edge
-        // whose start is least (so the point does not depend on the order
-        // the pair comes in), t clamped to the closed interval (rounding
-        // cannot push it past an end).
-        const bool e_first = std::make_pair(e.a.x, e.a.y) < std::make_pair(f.a.x, f.a.y) ||
-                             (e.a == f.a && std::make_pair(e.b.x, e.b.y) < std::make_pair(f.b.x, f.b.y));
-        const Edge& g = e_first ? e : f;
-        const Edge& h = e_first ? f : e;
-        const Vec2 r = g.b - g.a, s = h.b - h.a;
-        double t = cross(h.a - g.a, s) / cross(r, s);
-        t = std::clamp(t, 0.0, 1.0);
-        const Vec2 p = g.a + r * t;
-        cut(i, p);
-        cut(j, p);
+    if (round == 0 && found != nullptr) {
+      cuts.swap(*found);
+    } else {
+      for_each_close_pair(edges, [&](std::uint32_t i, std::uint32_t j) {
+        const Edge& e = edges[i];
+        const Edge& f = edges[j];
+        if (!e.conic && !f.conic && !same_ends(e, f)) line_pair_cuts(edges, i, j, cuts);
         return false;
-      }
-      // Touching: an end point of one on the other (T-junction, overlap).
-      if (o1 == 0 && point_on_segment(e.a, e.b, f.a)) cut(i, f.a);
-      if (o2 == 0 && point_on_segment(e.a, e.b, f.b)) cut(i, f.b);
-      if (o3 == 0 && point_on_segment(f.a, f.b, e.a)) cut(j, e.a);
-      if (o4 == 0 && point_on_segment(f.a, f.b, e.b)) cut(j, e.b);
-      return false;
-    });
+      });
+    }
     if (cuts.empty()) return split_any;
     split_any = true;
     snap_cuts(edges, cuts);
@@ -707,13 +720,22 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings) {
   constexpr int kMaxRounds = tolerance::kMaxHullSubdivisionDepth + 2;
   std::vector<char> marked;
   std::vector<Edge> next;
+  // The first round's sweep also finds the lines' cut points, which
+  // split_lines then takes as found when no conic was in conflict (the
+  // usual case: hull separation has kept the conics apart); the edges are
+  // then as they were in that sweep.
+  thread_local std::vector<Cut> first_cuts;
+  first_cuts.clear();
   for (int round = 0; round <= kMaxRounds; ++round) {
     marked.assign(edges.size(), 0);
     bool any = false;
     for_each_close_pair(edges, [&](std::uint32_t i, std::uint32_t j) {
       const Edge& e = edges[i];
       const Edge& f = edges[j];
-      if (!e.conic && !f.conic) return false;
+      if (!e.conic && !f.conic) {
+        if (round == 0 && !same_ends(e, f)) line_pair_cuts(edges, i, j, first_cuts);
+        return false;
+      }
       if (same_curve(e, f) || !pieces_conflict(e, f)) return false;
       if (e.conic) marked[i] = 1;
       if (f.conic) marked[j] = 1;
@@ -725,7 +747,7 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings) {
     // No conic in conflict and no line split: the next round would find
     // what this one found.
     if (!any) {
-      if (!split_lines(edges)) break;
+      if (!split_lines(edges, round == 0 ? &first_cuts : nullptr)) break;
       continue;
     }
     next.clear();
