@@ -12,7 +12,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <map>
 #include <optional>
@@ -30,6 +29,7 @@
 #include "curvetext/mesh.hpp"
 #include "curvetext/tolerances.hpp"
 #include "tessellate/columns.hpp"
+#include "tessellate/positions.hpp"
 #include "tessellate/predicates.hpp"
 #include "tessellate/rings.hpp"
 #include "tessellate/stage_timing.hpp"
@@ -42,26 +42,18 @@ namespace detail {
 
 namespace {
 
-// Signed zero would give equal positions different bit patterns (and so
-// different vertex indices); adding +0.0 turns -0.0 into +0.0.
-Vec2 canonical(Vec2 p) { return {p.x + 0.0, p.y + 0.0}; }
-
-// A hash of a canonical position's bits for tables of 2^bits slots. Font
-// coordinates are short binary numbers whose low mantissa bits are zero:
-// multiply (Fibonacci hashing) and keep the top bits, which every input bit
-// reaches.
-std::size_t position_hash(Vec2 p, int bits) {
-  std::uint64_t x, y;
-  std::memcpy(&x, &p.x, sizeof x);
-  std::memcpy(&y, &p.y, sizeof y);
-  return static_cast<std::size_t>(((x * 0x9e3779b97f4a7c15ull) ^ (y * 0xc2b2ae3d27d4eb4full)) >> (64 - bits));
-}
-
 bool nearly_flat(Vec2 a, Vec2 control, Vec2 b) {
   const Vec2 chord = b - a;
   const double len2 = dot(chord, chord);
   return std::fabs(cross(control - a, chord)) <= tolerance::kConicFlatnessRelative * len2 ||
          orient2d(a, control, b) == 0;
+}
+
+// Two consecutive lines with directions ab and bc that go back along
+// themselves: a spike, within the flatness tolerance.
+bool folds_back(Vec2 ab, Vec2 bc) {
+  return dot(ab, bc) < 0.0 &&
+         std::fabs(cross(ab, bc)) <= tolerance::kConicFlatnessRelative * std::max(dot(ab, ab), dot(bc, bc));
 }
 
 // Whether simplify_pass would change the ring: its three tests (a
@@ -81,10 +73,7 @@ bool needs_simplifying(const Ring& ring) {
     }
     if (ring[j].conic) continue;
     const Vec2 c = ring_end(ring, j), bc = c - b;
-    if (orient2d(a, b, c) == 0) return true;
-    if (dot(ab, bc) < 0.0 &&
-        std::fabs(cross(ab, bc)) <= tolerance::kConicFlatnessRelative * std::max(dot(ab, ab), dot(bc, bc)))
-      return true;
+    if (orient2d(a, b, c) == 0 || folds_back(ab, bc)) return true;
   }
   return false;
 }
@@ -138,12 +127,7 @@ bool simplify_pass(Ring& ring) {
       // change where j ends; leave that pair to the next pass.
       if (ring[i].conic || ring[j].conic || drop[i] || drop[j] || drop[after_j]) continue;
       const Vec2 a = ring[i].a, b = ring[j].a, c = ring_end(ring, j);
-      const Vec2 ab = b - a, bc = c - b;
-      const double along = dot(ab, bc);
-      const bool straight = orient2d(a, b, c) == 0;
-      const bool spike = along < 0.0 && std::fabs(cross(ab, bc)) <= tolerance::kConicFlatnessRelative *
-                                                                       std::max(dot(ab, ab), dot(bc, bc));
-      if (straight || spike) {
+      if (orient2d(a, b, c) == 0 || folds_back(b - a, c - b)) {
         drop[j] = 1;  // the piece starting at b disappears; piece i now ends at c
         any_dropped = true;
       }
@@ -197,10 +181,7 @@ namespace {
 template <class PointAt>
 bool has_repeated_position(std::size_t count, PointAt at) {
   thread_local std::vector<std::uint32_t> slots;  // scratch: index + 1 of the point there, 0 empty
-  // At most a quarter full: a probe then rarely goes past its first slot
-  // (a probe loop of unpredictable length costs a misprediction).
-  int bits = 4;
-  while ((std::size_t{1} << bits) < 4 * count) ++bits;
+  const int bits = position_table_bits(count);
   slots.assign(std::size_t{1} << bits, 0);
   const std::size_t mask = slots.size() - 1;
   for (std::size_t i = 0; i < count; ++i) {
@@ -696,11 +677,12 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
   // The overlapping pairs of the pass (ref indices: first piece << 32 |
   // second), and those of the pass before with where each of its pieces went
   // (piece k became pieces child_first[k] .. child_first[k + 1] - 1: two
-  // when it was split, more for a line split at several points). A pass that tests only fresh pieces tests just the children
-  // of the pairs that overlapped before: a child's hull lies in its parent's,
-  // so a child can only overlap what its parent overlapped (its sibling and
-  // its ring neighbours it meets only at their common vertex), and a piece
-  // that is not split and overlapped nothing before has not changed.
+  // when it was split, more for a line split at several points). A pass that
+  // tests only fresh pieces tests just the children of the pairs that
+  // overlapped before: a child's hull lies in its parent's, so a child can
+  // only overlap what its parent overlapped (its sibling and its ring
+  // neighbours it meets only at their common vertex), and a piece that is
+  // not split and overlapped nothing before has not changed.
   thread_local std::vector<std::uint64_t> overlaps, partners;
   thread_local std::vector<std::uint32_t> child_first;
   // (The pieces' `fresh` flags are not read in the first pass, which tests
@@ -825,13 +807,6 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
         if (!hulls_overlap(ri.hull, ri.n, rj.hull, rj.n)) return;
         overlaps.push_back(static_cast<std::uint64_t>(ri.mark) << 32 | rj.mark);
         overlap_left = true;
-        // Pieces that cross: both split at the crossing (once per pass
-        // each), which saves halving the conics down to the limit around
-        // it. The point is the conic's, rounded; the other piece gets
-        // the same point as its new vertex (a move of an ulp or so).
-        // (Pieces with a common end, most overlapping pairs, have no proper
-        // chord crossing: not asked.)
-        const bool common_end = ai == aj || ai == ej || ei == aj || ei == ej;
         // A line and a conic that halving would never get apart, because a
         // point of the conic's hull stays on the line however often the
         // conic is halved: the line is split at that point (exact: the point
@@ -863,6 +838,13 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
             return;
           }
         }
+        // Pieces that cross: both split at the crossing (once per pass
+        // each), which saves halving the conics down to the limit around
+        // it. The point is the conic's, rounded; the other piece gets
+        // the same point as its new vertex (a move of an ulp or so).
+        // (Pieces with a common end, most overlapping pairs, have no proper
+        // chord crossing: not asked.)
+        const bool common_end = ai == aj || ai == ej || ei == aj || ei == ej;
         if (split_at_crossings && !common_end && marks[ri.mark] == 0 && marks[rj.mark] == 0 &&
             (!ci || ri.depth < tolerance::kMaxHullSubdivisionDepth) &&
             (!cj || rj.depth < tolerance::kMaxHullSubdivisionDepth)) {
@@ -1083,24 +1065,19 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
         }
         const bool at_crossing = ring_marks[i] == 2;
         if (!p.conic) {  // (a line is only split at a crossing or T-junctions)
+          // Its split point and further points, in order along the line.
           const std::size_t mark = mark_base[r] + i;
-          next.push_back(p);
-          next.back().fresh = true;
-          const auto more = std::equal_range(more_line_points.begin(), more_line_points.end(), std::pair{static_cast<std::uint32_t>(mark), Vec2{}},
+          const auto more = std::equal_range(more_line_points.begin(), more_line_points.end(),
+                                             std::pair{static_cast<std::uint32_t>(mark), Vec2{}},
                                              [](const auto& u, const auto& v) { return u.first < v.first; });
-          if (more.first == more.second) {
-            next.push_back(p);
-            next.back().a = split_point[mark];
-            next.back().fresh = true;
-            continue;
-          }
-          // Several points: in order along the line.
           thread_local std::vector<Vec2> points;
           points.assign(1, split_point[mark]);
           for (auto it = more.first; it != more.second; ++it) points.push_back(it->second);
           const Vec2 direction = ring_end(rings[r], i) - p.a;
           std::sort(points.begin(), points.end(),
                     [&](Vec2 u, Vec2 v) { return dot(u - p.a, direction) < dot(v - p.a, direction); });
+          next.push_back(p);
+          next.back().fresh = true;
           for (const Vec2 point : points) {
             next.push_back(p);
             next.back().a = point;

@@ -24,7 +24,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -32,48 +31,11 @@
 #include "curvetext/curves.hpp"
 #include "curvetext/tolerances.hpp"
 #include "tessellate/columns.hpp"
+#include "tessellate/positions.hpp"
 #include "tessellate/rings.hpp"
 
 namespace curvetext::detail {
 namespace {
-
-Vec2 canonical(Vec2 p) { return {p.x + 0.0, p.y + 0.0}; }
-
-// A 128-bit unsigned integer (a GCC and Clang extension; marked so that
-// -Wpedantic accepts it).
-__extension__ typedef unsigned __int128 Uint128;
-
-// A position as one integer ordered as (x, y): each coordinate's bits mapped
-// to an unsigned integer of the same order (-0.0 taken as +0.0), so equal
-// positions have equal keys.
-Uint128 position_key(Vec2 p) {
-  auto ordered = [](double v) {
-    v += 0.0;
-    std::uint64_t bits;
-    std::memcpy(&bits, &v, sizeof bits);
-    return (bits >> 63) != 0 ? ~bits : bits | (std::uint64_t{1} << 63);
-  };
-  return static_cast<Uint128>(ordered(p.x)) << 64 | ordered(p.y);
-}
-
-// Slot of a position in an open-addressing table of 2^bits slots: its
-// coordinates' bits (canonical: no -0.0), each multiplied by its own odd
-// constant, top bits kept (font coordinates' low mantissa bits are zero).
-std::size_t position_slot(Vec2 p, int bits) {
-  std::uint64_t x, y;
-  const Vec2 c = canonical(p);
-  std::memcpy(&x, &c.x, sizeof x);
-  std::memcpy(&y, &c.y, sizeof y);
-  return static_cast<std::size_t>((x * 0x9e3779b97f4a7c15ull ^ y * 0xc2b2ae3d27d4eb4full) >> (64 - bits));
-}
-
-// The smallest number of bits for a table of at least 4 * count slots (at
-// most a quarter full, so that a probe rarely goes past its first slot).
-int table_bits(std::size_t count) {
-  int bits = 4;
-  while ((std::size_t{1} << bits) < 4 * count) ++bits;
-  return bits;
-}
 
 // A piece of the arrangement: a line or a conic whose hull nothing enters.
 struct Edge {
@@ -435,7 +397,7 @@ std::vector<Edge> merge_coincident(const std::vector<Edge>& edges) {
   };
   std::vector<Edge> merged;
   merged.reserve(edges.size());
-  const int bits = table_bits(edges.size());
+  const int bits = position_table_bits(edges.size());
   thread_local std::vector<std::int32_t> slots;  // index into merged, or -1
   slots.assign(std::size_t{1} << bits, -1);
   const std::size_t mask = (std::size_t{1} << bits) - 1;
@@ -446,7 +408,7 @@ std::vector<Edge> merge_coincident(const std::vector<Edge>& edges) {
       e.count = -e.count;
     }
     if (e.a == e.b) continue;
-    std::size_t slot = (position_slot(e.a, bits) ^ position_slot(e.b, bits) * 3) & mask;
+    std::size_t slot = (position_hash(canonical(e.a), bits) ^ position_hash(canonical(e.b), bits) * 3) & mask;
     for (;; slot = (slot + 1) & mask) {
       const std::int32_t k = slots[slot];
       if (k < 0) {
@@ -499,7 +461,7 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
   joins.assign(2 * n, Join{});
   {
     auto end_point = [&](std::size_t k) { return (k & 1) != 0 ? edges[k / 2].b : edges[k / 2].a; };
-    const int bits = table_bits(2 * n);
+    const int bits = position_table_bits(2 * n);
     const std::size_t mask = (std::size_t{1} << bits) - 1;
     thread_local std::vector<std::int32_t> slots;  // a position's first end, or -1
     thread_local std::vector<std::uint32_t> ends_at, second_end;  // per first end
@@ -508,7 +470,7 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
     second_end.resize(2 * n);
     for (std::size_t k = 0; k < 2 * n; ++k) {
       const Vec2 p = end_point(k);
-      for (std::size_t slot = position_slot(p, bits);; slot = (slot + 1) & mask) {
+      for (std::size_t slot = position_hash(canonical(p), bits);; slot = (slot + 1) & mask) {
         const std::int32_t first = slots[slot];
         if (first < 0) {
           slots[slot] = static_cast<std::int32_t>(k);

@@ -23,9 +23,9 @@
 // sweep again or the general path (bridges and ear clipping).
 #include <algorithm>
 #include <cstdint>
-#include <cstring>
 #include <vector>
 
+#include "tessellate/positions.hpp"
 #include "tessellate/predicates.hpp"
 #include "tessellate/triangulate.hpp"
 
@@ -35,9 +35,6 @@ namespace {
 constexpr std::uint32_t kRightSide = 0x80000000u;  // stack entry flag: on the right chain
 constexpr std::uint32_t kIndexMask = 0x7fffffffu;
 constexpr int kNone = -1;
-// A 128-bit unsigned integer (a GCC and Clang extension; marked so that
-// -Wpedantic accepts it).
-__extension__ typedef unsigned __int128 Uint128;
 
 // One interval of the fill at the sweep line: between edge `left` and edge
 // `right` (an edge is named by the loop position it starts at). `poly[0]` is
@@ -402,19 +399,10 @@ bool Sweep::run() {
   loop_of_.resize(n);
   rank_.resize(n);
   position_.resize(n);
-  // Sorted as (y, x) keys with their positions: each coordinate mapped to
-  // an unsigned integer of the same order, y in the high half, so one
-  // integer comparison orders two points (a double comparison of y, then
-  // of x on ties, costs two unpredictable branches).
+  // Sorted as (y, x) keys (position_key) with their positions.
   struct Key {
     Uint128 yx;
     std::uint32_t position;
-  };
-  auto ordered = [](double v) {
-    v += 0.0;  // -0.0 -> +0.0: equal values, equal keys
-    std::uint64_t bits;
-    std::memcpy(&bits, &v, sizeof bits);
-    return (bits >> 63) != 0 ? ~bits : bits | (std::uint64_t{1} << 63);
   };
   thread_local std::vector<Key> keys;
   keys.clear();
@@ -428,7 +416,7 @@ bool Sweep::run() {
       const Vec2 p = points_[vertices_[i]];
       position_[i] = p;
       loop_of_[i] = static_cast<std::uint32_t>(l);
-      keys.push_back({static_cast<Uint128>(ordered(p.y)) << 64 | ordered(p.x), i});
+      keys.push_back({position_key(p), i});
       low = std::min(low, p.y);
       high = std::max(high, p.y);
     }
