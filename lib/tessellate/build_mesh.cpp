@@ -1,6 +1,7 @@
 // build_mesh: outline -> cleaned rings -> separated hulls -> (crossing,
 // overlapping or edge-sharing contours only: resolve.cpp's non-crossing rings
-// of the nonzero fill, hulls separated again) -> orientation -> polygon
+// of the nonzero fill, hulls separated again
+// unless the resolver left nothing in conflict) -> orientation -> polygon
 // loops + curved triangles -> triangles -> Lawson flips -> indexed mesh
 // (DESIGN.md section 4, paper 3.1). Loops that neither cross nor touch (the
 // usual glyph) are triangulated by one plane sweep (sweep.cpp), first with
@@ -248,14 +249,12 @@ double ring_area(const Ring& ring) {
 
 namespace {
 
-// Rings out of use, kept with their storage: the rings of the next glyph
-// reuse it (no allocation per glyph once warm). take_ring gives an empty
-// ring, with storage from the pool when it has some; recycle_ring(s) give
-// storage back.
 std::vector<Ring>& spare_rings() {
   thread_local std::vector<Ring> spare;
   return spare;
 }
+
+}  // namespace
 
 Ring take_ring() {
   std::vector<Ring>& spare = spare_rings();
@@ -278,8 +277,6 @@ void recycle_rings(std::vector<Ring>& rings) {
   for (Ring& ring : rings) recycle_ring(std::move(ring));
   rings.clear();
 }
-
-}  // namespace
 
 bool clean_rings(const Outline& outline, double cubic_tolerance, std::vector<Ring>& rings, bool split_repeated) {
   recycle_rings(rings);
@@ -1352,13 +1349,15 @@ bool build_mesh_once(const Outline& outline, const MeshOptions& options, Mesh& m
   // which lets sweep_triangulate take their loops when no position repeats.
   bool simple_edges = separated && !crossing;
   if (kResolveCrossingContours && (crossing || (!separated && rings_cross(rings, false)))) {
-    std::vector<Ring> resolved = resolve_crossings(rings);
+    bool settled = false;
+    std::vector<Ring> resolved = resolve_crossings(rings, separated, &settled);
     recycle_rings(rings);
     rings = std::move(resolved);
-    // The resolved rings do not cross; where the same test as above agrees
-    // (and no position repeats: the sweep checks), they take the sweep too.
+    // The resolved rings do not cross; where the resolver found nothing left
+    // in conflict, or the same test as above agrees (and no position repeats:
+    // the sweep checks), they take the sweep too.
     bool still_crossing = true;
-    simple_edges = separate_hulls(rings, &still_crossing) && !still_crossing;
+    simple_edges = settled || (separate_hulls(rings, &still_crossing) && !still_crossing);
   }
   stage_mark(MeshStage::Resolve);
   mesh.triangles.clear();

@@ -46,6 +46,9 @@ struct Edge {
   int depth = 0;
   int count = 1;  // net number of times the outline runs a -> b
   Box box;
+  // New since the last conflict sweep (resolve_crossings): only pairs with a
+  // fresh edge can conflict in a way that sweep has not seen.
+  bool fresh = true;
 };
 
 Box edge_box(const Edge& e) {
@@ -66,6 +69,8 @@ int hull_points(const Edge& e, Vec2* out) {
   out[1] = e.b;
   return 2;
 }
+
+bool shares_an_end(const Edge& e, const Edge& f) { return e.a == f.a || e.a == f.b || e.b == f.a || e.b == f.b; }
 
 bool same_ends(const Edge& e, const Edge& f) { return (e.a == f.a && e.b == f.b) || (e.a == f.b && e.b == f.a); }
 
@@ -156,6 +161,34 @@ bool for_each_close_pair(const std::vector<Edge>& edges, F&& f) {
   return false;
 }
 
+// Pairs of edges with overlapping boxes and at least one of them fresh, as
+// for_each_close_pair gives them, found by testing each fresh edge's box
+// against every other (no sort): after a round of splits the fresh pieces are
+// few. Each pair once.
+template <class F>
+bool for_each_fresh_pair(const std::vector<Edge>& edges, F&& f) {
+  const std::size_t n = edges.size();
+  thread_local std::vector<std::uint32_t> candidates;
+  candidates.resize(n);
+  std::uint32_t* const candidate = candidates.data();
+  for (std::uint32_t i = 0; i < n; ++i) {
+    if (!edges[i].fresh) continue;
+    const Box& b = edges[i].box;
+    std::size_t found = 0;
+    for (std::uint32_t j = 0; j < n; ++j) {
+      const Box& c = edges[j].box;
+      candidate[found] = j;
+      // Fresh pairs once (from their lower index), never an edge with itself.
+      const bool once = !edges[j].fresh || j > i;
+      found += static_cast<std::size_t>(once & (c.min.x <= b.max.x) & (b.min.x <= c.max.x) & (c.min.y <= b.max.y) &
+                                        (b.min.y <= c.max.y));
+    }
+    for (std::size_t k = 0; k < found; ++k)
+      if (f(i, candidate[k])) return true;
+  }
+  return false;
+}
+
 // Whether two pieces conflict: lines by lines_conflict; with a conic, any
 // overlap of hulls beyond a shared vertex, or the same end points (the chords
 // would coincide). Identical curves are reported too (they merge later).
@@ -212,14 +245,53 @@ void snap_cuts(const std::vector<Edge>& edges, std::vector<Cut>& cuts) {
   const double extent = std::max(all.max.x - all.min.x, all.max.y - all.min.y);
   const double eps = std::max(tolerance::kMergeDistanceFontUnits, 1e-12 * extent);
   auto by_x = [](Vec2 a, Vec2 b) { return a.x != b.x ? a.x < b.x : a.y < b.y; };
+  struct Loose {
+    Vec2 p;
+    std::size_t cut;
+  };
+  thread_local std::vector<Loose> loose;
+  loose.clear();
+  // The loose cut points (near no vertex) onto each other, in (x, y) order:
+  // each becomes the nearest earlier representative within eps (the last in
+  // that order among equally near ones), or a representative itself. (Only
+  // equal points compare equal here, and they snap alike: the result does
+  // not depend on the order of the cuts.) The representatives come in x
+  // order because the loose points do.
+  thread_local std::vector<Vec2> reps;
+  auto snap_loose = [&](auto&& nearest_rep) {
+    std::sort(loose.begin(), loose.end(), [&](const Loose& a, const Loose& b) { return by_x(a.p, b.p); });
+    reps.clear();
+    for (const Loose& l : loose) {
+      Vec2 r;
+      if (nearest_rep(l.p, r)) {
+        cuts[l.cut].p = r;
+      } else {
+        reps.push_back(l.p);
+      }
+    }
+  };
   // With few cuts (the usual resolve), each looks for its vertex by scanning
   // them as they are, which costs less than sorting them: the same vertex as
   // below (the nearest within eps, Chebyshev; the last in (x, y) order among
-  // equally near ones). Cuts left over go through the sorted path, which
-  // leaves the snapped ones where they are.
+  // equally near ones). Most cut points are crossings near no vertex: a
+  // branch-free count of the vertices within eps finds those first. The
+  // loose ones then meet each other in a scan too.
   if (cuts.size() <= 16) {
-    bool loose_left = false;
-    for (Cut& c : cuts) {
+    thread_local std::vector<double> coordinates;
+    const auto [xs, ys] = columns<2>(coordinates, vertices.size());
+    for (std::size_t k = 0; k < vertices.size(); ++k) {
+      xs[k] = vertices[k].x;
+      ys[k] = vertices[k].y;
+    }
+    for (std::size_t k = 0; k < cuts.size(); ++k) {
+      Cut& c = cuts[k];
+      std::size_t near = 0;
+      for (std::size_t v = 0; v < vertices.size(); ++v)
+        near += static_cast<std::size_t>((std::fabs(xs[v] - c.p.x) <= eps) & (std::fabs(ys[v] - c.p.y) <= eps));
+      if (near == 0) {
+        loose.push_back({c.p, k});
+        continue;
+      }
       double best = eps;
       bool found = false;
       Vec2 nearest{};
@@ -231,13 +303,22 @@ void snap_cuts(const std::vector<Edge>& edges, std::vector<Cut>& cuts) {
           found = true;
         }
       }
-      if (found) {
-        c.p = nearest;
-      } else {
-        loose_left = true;
-      }
+      c.p = nearest;
     }
-    if (!loose_left) return;
+    snap_loose([&](Vec2 p, Vec2& out) {
+      double best = eps;
+      bool found = false;
+      for (const Vec2 r : reps) {
+        const double d = std::max(std::fabs(r.x - p.x), std::fabs(r.y - p.y));
+        if (d <= best) {
+          best = d;
+          out = r;
+          found = true;
+        }
+      }
+      return found;
+    });
+    return;
   }
   std::sort(vertices.begin(), vertices.end(), by_x);
   vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
@@ -258,11 +339,6 @@ void snap_cuts(const std::vector<Edge>& edges, std::vector<Cut>& cuts) {
   };
   // First onto existing vertices (all of them, whatever the order of
   // discovery), then the remaining cut points onto each other.
-  struct Loose {
-    Vec2 p;
-    std::size_t cut;
-  };
-  std::vector<Loose> loose;
   for (std::size_t k = 0; k < cuts.size(); ++k) {
     Vec2 v;
     if (nearest(vertices, cuts[k].p, v)) {
@@ -271,18 +347,7 @@ void snap_cuts(const std::vector<Edge>& edges, std::vector<Cut>& cuts) {
       loose.push_back({cuts[k].p, k});
     }
   }
-  // (Only equal points compare equal here, and they snap alike: the result
-  // does not depend on the order of the cuts.)
-  std::sort(loose.begin(), loose.end(), [&](const Loose& a, const Loose& b) { return by_x(a.p, b.p); });
-  std::vector<Vec2> reps;  // sorted by x because `loose` is
-  for (const Loose& l : loose) {
-    Vec2 r;
-    if (nearest(reps, l.p, r)) {
-      cuts[l.cut].p = r;
-    } else {
-      reps.push_back(l.p);
-    }
-  }
+  snap_loose([&](Vec2 p, Vec2& out) { return nearest(reps, p, out); });
 }
 
 // The cut points two lines i and j (not the same segment) make on each
@@ -323,66 +388,45 @@ void line_pair_cuts(const std::vector<Edge>& edges, std::uint32_t i, std::uint32
   if (o4 == 0 && point_on_segment(f.a, f.b, e.b)) cut(j, e.b);
 }
 
-// Splits line edges at every crossing and every end point lying inside them.
-// Rounding a crossing point to doubles can move it off either line by an ulp
-// and, very rarely, create a new conflict; a few rounds settle that (bounded).
-// `found`, when given, holds the cut points of the edges as they are, already
-// looked for (by the caller's own sweep over the same pairs); they are used
-// up. Returns true when some edge was split.
-bool split_lines(std::vector<Edge>& edges, std::vector<Cut>* found = nullptr) {
-  constexpr int kRounds = 4;
-  // Scratch reused across rounds and calls: the cut points of all edges in
-  // one list (edge, point), in the order found.
-  thread_local std::vector<Cut> cuts;
-  thread_local std::vector<Vec2> along;
+// Splits line edges at the cut points found on them (line_pair_cuts), after
+// snapping the points together (snap_cuts). The pieces of a split edge are
+// fresh; other edges keep their flag. Returns true when some edge was split.
+bool split_at_cuts(std::vector<Edge>& edges, std::vector<Cut>& cuts) {
+  if (cuts.empty()) return false;
+  thread_local std::vector<Vec2> along;  // scratch
   thread_local std::vector<Edge> next;
-  bool split_any = false;
-  for (int round = 0; round < kRounds; ++round) {
-    cuts.clear();
-    if (round == 0 && found != nullptr) {
-      cuts.swap(*found);
-    } else {
-      for_each_close_pair(edges, [&](std::uint32_t i, std::uint32_t j) {
-        const Edge& e = edges[i];
-        const Edge& f = edges[j];
-        if (!e.conic && !f.conic && !same_ends(e, f)) line_pair_cuts(edges, i, j, cuts);
-        return false;
-      });
+  snap_cuts(edges, cuts);
+  // Each edge's cuts together, in the order found.
+  std::stable_sort(cuts.begin(), cuts.end(), [](const Cut& a, const Cut& b) { return a.edge < b.edge; });
+  next.clear();
+  next.reserve(edges.size() + cuts.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    if (k == cuts.size() || cuts[k].edge != i) {
+      next.push_back(edges[i]);
+      continue;
     }
-    if (cuts.empty()) return split_any;
-    split_any = true;
-    snap_cuts(edges, cuts);
-    // Each edge's cuts together, in the order found.
-    std::stable_sort(cuts.begin(), cuts.end(), [](const Cut& a, const Cut& b) { return a.edge < b.edge; });
-    next.clear();
-    next.reserve(edges.size() + cuts.size());
-    std::size_t k = 0;
-    for (std::size_t i = 0; i < edges.size(); ++i) {
-      if (k == cuts.size() || cuts[k].edge != i) {
-        next.push_back(edges[i]);
-        continue;
-      }
-      const Edge& e = edges[i];
-      const Vec2 dir = e.b - e.a;
-      along.clear();
-      for (; k < cuts.size() && cuts[k].edge == i; ++k) along.push_back(cuts[k].p);
-      std::sort(along.begin(), along.end(), [&](Vec2 p, Vec2 q) { return dot(p - e.a, dir) < dot(q - e.a, dir); });
-      along.erase(std::unique(along.begin(), along.end()), along.end());
-      Vec2 from = e.a;
-      along.push_back(e.b);
-      for (const Vec2 p : along) {
-        if (p == from) continue;
-        Edge piece = e;
-        piece.a = from;
-        piece.b = p;
-        piece.box = edge_box(piece);
-        next.push_back(piece);
-        from = p;
-      }
+    const Edge& e = edges[i];
+    const Vec2 dir = e.b - e.a;
+    along.clear();
+    for (; k < cuts.size() && cuts[k].edge == i; ++k) along.push_back(cuts[k].p);
+    std::sort(along.begin(), along.end(), [&](Vec2 p, Vec2 q) { return dot(p - e.a, dir) < dot(q - e.a, dir); });
+    along.erase(std::unique(along.begin(), along.end()), along.end());
+    Vec2 from = e.a;
+    along.push_back(e.b);
+    for (const Vec2 p : along) {
+      if (p == from) continue;
+      Edge piece = e;
+      piece.a = from;
+      piece.b = p;
+      piece.box = edge_box(piece);
+      piece.fresh = true;
+      next.push_back(piece);
+      from = p;
     }
-    edges.swap(next);
   }
-  return split_any;
+  edges.swap(next);
+  return true;
 }
 
 // Coincident edges become one with the sum of their directed counts; edges
@@ -390,12 +434,12 @@ bool split_lines(std::vector<Edge>& edges, std::vector<Cut>* found = nullptr) {
 // edge is directed from its smaller end and looked up in a hash table of the
 // edges kept so far: the merged edges come in the order of their first
 // occurrence.
-std::vector<Edge> merge_coincident(const std::vector<Edge>& edges) {
+void merge_coincident(const std::vector<Edge>& edges, std::vector<Edge>& merged) {
   auto same_key = [](const Edge& e, const Edge& f) {
     return e.a == f.a && e.b == f.b && e.conic == f.conic &&
            (!e.conic || (e.control == f.control && e.weight == f.weight));
   };
-  std::vector<Edge> merged;
+  merged.clear();
   merged.reserve(edges.size());
   const int bits = position_table_bits(edges.size());
   thread_local std::vector<std::int32_t> slots;  // index into merged, or -1
@@ -423,7 +467,15 @@ std::vector<Edge> merge_coincident(const std::vector<Edge>& edges) {
     }
   }
   merged.erase(std::remove_if(merged.begin(), merged.end(), [](const Edge& e) { return e.count == 0; }), merged.end());
-  return merged;
+}
+
+// Angular order of directions from a common vertex v (exact: signs of
+// coordinate differences are exact in floating point, cross signs by orient2d).
+bool angle_less(Vec2 v, Vec2 p, Vec2 q) {
+  auto half = [v](Vec2 r) { return (r.y < v.y || (r.y == v.y && r.x < v.x)) ? 1 : 0; };
+  const int hp = half(p), hq = half(q);
+  if (hp != hq) return hp < hq;
+  return orient2d(v, p, q) > 0;
 }
 
 // Winding numbers just left and right of each edge. A ray from the edge's
@@ -459,12 +511,15 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
   };
   thread_local std::vector<Join> joins;
   joins.assign(2 * n, Join{});
+  auto end_point = [&](std::size_t k) { return (k & 1) != 0 ? edges[k / 2].b : edges[k / 2].a; };
+  // Each end's position's first end; per first end, how many ends are there.
+  thread_local std::vector<std::uint32_t> first_of, ends_at;
+  first_of.resize(2 * n);
   {
-    auto end_point = [&](std::size_t k) { return (k & 1) != 0 ? edges[k / 2].b : edges[k / 2].a; };
     const int bits = position_table_bits(2 * n);
     const std::size_t mask = (std::size_t{1} << bits) - 1;
     thread_local std::vector<std::int32_t> slots;  // a position's first end, or -1
-    thread_local std::vector<std::uint32_t> ends_at, second_end;  // per first end
+    thread_local std::vector<std::uint32_t> second_end;  // per first end
     slots.assign(mask + 1, -1);
     ends_at.assign(2 * n, 0);
     second_end.resize(2 * n);
@@ -475,9 +530,11 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
         if (first < 0) {
           slots[slot] = static_cast<std::int32_t>(k);
           ends_at[k] = 1;
+          first_of[k] = static_cast<std::uint32_t>(k);
           break;
         }
         if (end_point(static_cast<std::size_t>(first)) == p) {
+          first_of[k] = static_cast<std::uint32_t>(first);
           if (++ends_at[static_cast<std::size_t>(first)] == 2) second_end[static_cast<std::size_t>(first)] = static_cast<std::uint32_t>(k);
           break;
         }
@@ -605,13 +662,38 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
     right[i] = upward ? w : w - e.count;
   };
 
-  // Each chain from one edge with a ray, along its joins both ways.
-  thread_local std::vector<char> done;
+  // The nodes: positions where other than two ends meet (crossings,
+  // touches, merged edges), which end chains. Around a node the faces
+  // between consecutive edges (in angular order) differ by the count of the
+  // edge between them, so one edge's windings there give all the others':
+  // the windings spread from chain to chain through the nodes, and a ray is
+  // cast only for a chain none of that reaches (one per connected part of
+  // the arrangement). Node m's ends are node_ends[node_start[m] ..
+  // node_start[m + 1]), sorted by angle when the node is first used.
+  thread_local std::vector<std::uint32_t> node_of, node_start, node_ends;
+  node_of.assign(2 * n, UINT32_MAX);  // per first end: its node
+  node_start.assign(1, 0);
+  for (std::size_t k = 0; k < 2 * n; ++k) {
+    if (first_of[k] != k || ends_at[k] == 2) continue;
+    node_of[k] = static_cast<std::uint32_t>(node_start.size() - 1);
+    node_start.push_back(node_start.back() + ends_at[k]);
+  }
+  const std::size_t nodes = node_start.size() - 1;
+  node_ends.resize(node_start.back());
+  thread_local std::vector<std::uint32_t> fill;
+  fill.assign(node_start.begin(), node_start.end() - 1);
+  for (std::size_t k = 0; k < 2 * n; ++k) {
+    const std::uint32_t m = node_of[first_of[k]];
+    if (m != UINT32_MAX) node_ends[fill[m]++] = static_cast<std::uint32_t>(k);
+  }
+  thread_local std::vector<char> done, node_done;
   done.assign(n, 0);
-  for (std::size_t first = 0; first < n; ++first) {
-    if (done[first]) continue;
-    cast(first);
-    done[first] = 1;
+  node_done.assign(nodes, 0);
+  thread_local std::vector<std::uint32_t> pending;  // edges whose windings are set, ends not yet looked at
+  pending.clear();
+  // Along the chain of `first` (windings set) both ways.
+  auto walk_chain = [&](std::size_t first) {
+    pending.push_back(static_cast<std::uint32_t>(first));
     for (int way = 0; way < 2; ++way) {
       std::size_t from = first;
       bool at_b = way == 0;  // leave `from` through this end
@@ -622,6 +704,7 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
         left[to] = join.swapped ? right[from] : left[from];
         right[to] = join.swapped ? left[from] : right[from];
         done[to] = 1;
+        pending.push_back(static_cast<std::uint32_t>(to));
         // `to` was entered through its end at the join: at b when the sides
         // were not swapped and we left `from` through b, and so on; leave it
         // through the other end.
@@ -630,16 +713,57 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
         from = to;
       }
     }
+  };
+  // Node m, where some edge's windings are known: every other edge there.
+  auto spread_at = [&](std::uint32_t m) {
+    node_done[m] = 1;
+    std::uint32_t* const first_end = node_ends.data() + node_start[m];
+    std::uint32_t* const last_end = node_ends.data() + node_start[m + 1];
+    const Vec2 v = end_point(*first_end);
+    // Counter-clockwise by the direction to each edge's other end (a conic's
+    // chord: hulls are separated, so chords and arcs leave v in one order).
+    auto other_end = [&](std::uint32_t k) { return end_point(k ^ 1u); };
+    std::sort(first_end, last_end, [&](std::uint32_t x, std::uint32_t y) { return angle_less(v, other_end(x), other_end(y)); });
+    const std::size_t degree = static_cast<std::size_t>(last_end - first_end);
+    std::size_t known = degree;
+    for (std::size_t j = 0; j < degree; ++j)
+      if (done[first_end[j] / 2]) {
+        known = j;
+        break;
+      }
+    if (known == degree) return;
+    // sector = the winding just counter-clockwise of the current end. An
+    // edge leaving v has its left side counter-clockwise of it, one
+    // arriving its right side.
+    auto leaves = [](std::uint32_t k) { return (k & 1) == 0; };
+    std::uint32_t k = first_end[known];
+    int sector = leaves(k) ? left[k / 2] : right[k / 2];
+    for (std::size_t step = 1; step < degree; ++step) {
+      k = first_end[(known + step) % degree];
+      const std::size_t e = k / 2;
+      const int before = sector;
+      sector += leaves(k) ? edges[e].count : -edges[e].count;
+      if (done[e]) continue;
+      left[e] = leaves(k) ? sector : before;
+      right[e] = leaves(k) ? before : sector;
+      done[e] = 1;
+      walk_chain(e);
+    }
+  };
+  for (std::size_t first = 0; first < n; ++first) {
+    if (done[first]) continue;
+    cast(first);
+    done[first] = 1;
+    walk_chain(first);
+    while (!pending.empty()) {
+      const std::uint32_t e = pending.back();
+      pending.pop_back();
+      for (std::uint32_t k = 2 * e; k < 2 * e + 2; ++k) {
+        const std::uint32_t m = node_of[first_of[k]];
+        if (m != UINT32_MAX && !node_done[m]) spread_at(m);
+      }
+    }
   }
-}
-
-// Angular order of directions from a common vertex v (exact: signs of
-// coordinate differences are exact in floating point, cross signs by orient2d).
-bool angle_less(Vec2 v, Vec2 p, Vec2 q) {
-  auto half = [v](Vec2 r) { return (r.y < v.y || (r.y == v.y && r.x < v.x)) ? 1 : 0; };
-  const int hp = half(p), hq = half(q);
-  if (hp != hq) return hp < hq;
-  return orient2d(v, p, q) > 0;
 }
 
 }  // namespace
@@ -667,51 +791,79 @@ bool lines_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   return orient2d(shared, p, q) == 0 && dot(p - shared, q - shared) > 0.0;
 }
 
-std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings) {
+std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, bool hulls_separated, bool* settled) {
   std::vector<Edge> edges = edges_of(rings);
 
   // Conics in conflict with another piece (sharing a point other than a
   // common vertex, or both end points) are halved, and flattened once at the
   // subdivision limit, where their arcs are within ~1e-6 of the curve's size
-  // of their chords. Splitting lines at crossings can move a line by the
-  // rounding of a crossing point; near a conic's vertex that can make it
-  // enter the conic's hull, so conflicts are looked for again after every
-  // round of line splitting. Each round deepens every conic still in
-  // conflict, so the loop ends after at most kMaxHullSubdivisionDepth + 2
-  // rounds with no conic in conflict.
-  constexpr int kMaxRounds = tolerance::kMaxHullSubdivisionDepth + 2;
+  // of their chords. Lines are split at their cut points (crossings, and end
+  // points lying inside them). Each crossing point is rounded to doubles,
+  // which can move a piece by an ulp into a new crossing, or near a conic's
+  // vertex into the conic's hull, so conflicts are looked for again after
+  // every round of splits. Each round with a conic in conflict deepens every
+  // such conic, so there are at most kMaxHullSubdivisionDepth + 2 of them;
+  // line splits settle in a few rounds (the cap is generous).
+  constexpr int kMaxConicRounds = tolerance::kMaxHullSubdivisionDepth + 2;
+  constexpr int kMaxRounds = 4 * (kMaxConicRounds + 1);
+  // One sweep per round finds both the conics in conflict and the lines'
+  // cut points. Pairs of edges that are both unchanged since the last sweep
+  // are skipped: it found them apart, or one of them would have been split
+  // and so be new.
+  thread_local std::vector<Cut> cuts;
+  // Up to this many box tests (fresh edges times all), testing the fresh
+  // edges against all costs less than the sweep's sort.
+  constexpr std::size_t kFreshPairsDirect = 4096;
   std::vector<char> marked;
   std::vector<Edge> next;
-  // The first round's sweep also finds the lines' cut points, which
-  // split_lines then takes as found when no conic was in conflict (the
-  // usual case: hull separation has kept the conics apart); the edges are
-  // then as they were in that sweep.
-  thread_local std::vector<Cut> first_cuts;
-  first_cuts.clear();
-  for (int round = 0; round <= kMaxRounds; ++round) {
+  int conic_rounds = 0;
+  bool conflicts_left = true;
+  for (int round = 0; round < kMaxRounds; ++round) {
     marked.assign(edges.size(), 0);
+    cuts.clear();
     bool any = false;
-    for_each_close_pair(edges, [&](std::uint32_t i, std::uint32_t j) {
+    auto test_pair = [&](std::uint32_t i, std::uint32_t j) {
       const Edge& e = edges[i];
       const Edge& f = edges[j];
+      if (!e.fresh && !f.fresh) return false;
       if (!e.conic && !f.conic) {
-        if (round == 0 && !same_ends(e, f)) line_pair_cuts(edges, i, j, first_cuts);
+        if (!same_ends(e, f)) line_pair_cuts(edges, i, j, cuts);
         return false;
       }
+      // Hull separation has kept the conics apart from every piece they
+      // share no vertex with; where it split two curves at their crossing,
+      // the pieces meet at that vertex with their hulls across each other.
+      if (round == 0 && hulls_separated && !shares_an_end(e, f)) return false;
       if (same_curve(e, f) || !pieces_conflict(e, f)) return false;
       if (e.conic) marked[i] = 1;
       if (f.conic) marked[j] = 1;
       any = true;
       return false;
-    });
-    if (!any && round > 0) break;
-    if (round == kMaxRounds) break;
-    // No conic in conflict and no line split: the next round would find
-    // what this one found.
+    };
+    // (Every edge is fresh in the first round.)
+    std::size_t fresh = 0;
+    for (const Edge& e : edges) fresh += static_cast<std::size_t>(e.fresh);
+    if (round > 0 && fresh * edges.size() <= kFreshPairsDirect) {
+      for_each_fresh_pair(edges, test_pair);
+    } else {
+      for_each_close_pair(edges, test_pair);
+    }
+    for (Edge& e : edges) e.fresh = false;
     if (!any) {
-      if (!split_lines(edges, round == 0 ? &first_cuts : nullptr)) break;
+      // (The last round's cuts are still made, not looked at again.)
+      if (!split_at_cuts(edges, cuts)) {
+        conflicts_left = false;
+        break;
+      }
       continue;
     }
+    if (conic_rounds++ == kMaxConicRounds) {
+      split_at_cuts(edges, cuts);
+      break;
+    }
+    // Conics first; the lines' cuts are found again in the next round (the
+    // lines they were on stay fresh for it).
+    for (const Cut& c : cuts) edges[c.edge].fresh = true;
     next.clear();
     next.reserve(edges.size() + 16);
     for (std::size_t i = 0; i < edges.size(); ++i) {
@@ -723,6 +875,7 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings) {
         flat.conic = false;
         flat.weight = 1.0;
         flat.box = edge_box(flat);
+        flat.fresh = true;
         next.push_back(flat);
       } else {
         const auto halves = split(Segment::conic(e.a, e.control, e.b, e.weight), 0.5);
@@ -734,19 +887,22 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings) {
           half.weight = h.weight;
           half.depth = e.depth + 1;
           half.box = edge_box(half);
+          half.fresh = true;
           next.push_back(half);
         }
       }
     }
     edges.swap(next);
-    split_lines(edges);
   }
-  const std::vector<Edge> merged = merge_coincident(edges);
-  std::vector<int> left, right;
+  // (Scratch reused across calls from here on: no allocation once warm.)
+  thread_local std::vector<Edge> merged, kept;
+  thread_local std::vector<int> left, right;
+  merge_coincident(edges, merged);
   side_windings(merged, left, right);
 
   // Kept edges, directed with the fill on the left.
-  std::vector<Edge> kept;
+  kept.clear();
+  kept.reserve(merged.size());
   for (std::size_t i = 0; i < merged.size(); ++i) {
     const bool l = left[i] != 0, r = right[i] != 0;
     if (l == r) continue;
@@ -756,40 +912,44 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings) {
     kept.push_back(e);
   }
 
-  // Vertices of the kept edges, numbered: each edge's start and end vertex,
-  // and per vertex its outgoing edges in increasing index order (a vertex
-  // where no kept edge starts has none). Positions compare as one integer
-  // each (position_key), which costs less than comparing pairs of doubles.
+  // Vertices of the kept edges, numbered: each edge's start and end vertex
+  // (an end where no kept edge starts has none), found in a hash table of
+  // positions, and per vertex its outgoing edges in increasing index order
+  // (counted, then filled in edge order).
   const std::size_t kept_count = kept.size();
-  struct Start {
-    Uint128 key;
-    std::uint32_t edge;
-  };
-  thread_local std::vector<Start> starts;
-  thread_local std::vector<Uint128> vertex_keys;
-  thread_local std::vector<std::uint32_t> start_vertex, end_vertex, out_first;
-  starts.resize(kept_count);
-  for (std::uint32_t i = 0; i < kept_count; ++i) starts[i] = {position_key(kept[i].a), i};
-  std::sort(starts.begin(), starts.end(),
-            [](const Start& x, const Start& y) { return x.key != y.key ? x.key < y.key : x.edge < y.edge; });
-  // Sorted, the starts are the outgoing lists one vertex after another.
-  vertex_keys.clear();
-  out_first.clear();
-  start_vertex.resize(kept_count);
-  for (std::size_t k = 0; k < kept_count; ++k) {
-    if (k == 0 || starts[k].key != starts[k - 1].key) {
-      vertex_keys.push_back(starts[k].key);
-      out_first.push_back(static_cast<std::uint32_t>(k));
-    }
-    start_vertex[starts[k].edge] = static_cast<std::uint32_t>(vertex_keys.size() - 1);
-  }
-  out_first.push_back(static_cast<std::uint32_t>(kept_count));
   constexpr std::uint32_t kNoVertex = UINT32_MAX;
-  end_vertex.resize(kept_count);
-  for (std::uint32_t i = 0; i < kept_count; ++i) {
-    const Uint128 key = position_key(kept[i].b);
-    const auto at = std::lower_bound(vertex_keys.begin(), vertex_keys.end(), key);
-    end_vertex[i] = at != vertex_keys.end() && *at == key ? static_cast<std::uint32_t>(at - vertex_keys.begin()) : kNoVertex;
+  thread_local std::vector<std::int32_t> slots;  // a vertex, or -1
+  thread_local std::vector<Vec2> vertex_at;
+  thread_local std::vector<std::uint32_t> start_vertex, end_vertex, out_first, out_edges;
+  {
+    const int bits = position_table_bits(kept_count);
+    const std::size_t mask = (std::size_t{1} << bits) - 1;
+    slots.assign(mask + 1, -1);
+    vertex_at.clear();
+    auto vertex_of = [&](Vec2 p, bool add) {
+      for (std::size_t slot = position_hash(canonical(p), bits);; slot = (slot + 1) & mask) {
+        const std::int32_t v = slots[slot];
+        if (v < 0) {
+          if (!add) return kNoVertex;
+          slots[slot] = static_cast<std::int32_t>(vertex_at.size());
+          vertex_at.push_back(p);
+          return static_cast<std::uint32_t>(vertex_at.size() - 1);
+        }
+        if (vertex_at[static_cast<std::size_t>(v)] == p) return static_cast<std::uint32_t>(v);
+      }
+    };
+    start_vertex.resize(kept_count);
+    for (std::size_t i = 0; i < kept_count; ++i) start_vertex[i] = vertex_of(kept[i].a, true);
+    end_vertex.resize(kept_count);
+    for (std::size_t i = 0; i < kept_count; ++i) end_vertex[i] = vertex_of(kept[i].b, false);
+    out_first.assign(vertex_at.size() + 1, 0);
+    for (std::size_t i = 0; i < kept_count; ++i) ++out_first[start_vertex[i] + 1];
+    for (std::size_t v = 0; v < vertex_at.size(); ++v) out_first[v + 1] += out_first[v];
+    out_edges.resize(kept_count);
+    for (std::size_t i = 0; i < kept_count; ++i) out_edges[out_first[start_vertex[i]]++] = static_cast<std::uint32_t>(i);
+    // (Filling moved each vertex's first to its end: shift back.)
+    for (std::size_t v = vertex_at.size(); v > 0; --v) out_first[v] = out_first[v - 1];
+    out_first[0] = 0;
   }
   auto out_degree = [&](std::uint32_t v) { return v == kNoVertex ? 0u : out_first[v + 1] - out_first[v]; };
 
@@ -803,7 +963,7 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings) {
     std::uint32_t best_before = UINT32_MAX, best_any = UINT32_MAX;
     if (vertex == kNoVertex) return best_any;
     for (std::uint32_t k = out_first[vertex]; k < out_first[vertex + 1]; ++k) {
-      const std::uint32_t o = starts[k].edge;
+      const std::uint32_t o = out_edges[k];
       const Vec2 p = kept[o].b;
       if (best_any == UINT32_MAX || angle_less(v, kept[best_any].b, p)) best_any = o;
       if (angle_less(v, p, in.a) && (best_before == UINT32_MAX || angle_less(v, kept[best_before].b, p))) {
@@ -813,13 +973,30 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings) {
     return best_before != UINT32_MAX ? best_before : best_any;
   };
 
-  std::vector<char> used(kept_count, 0);
-  std::vector<Ring> loops;
+  thread_local std::vector<Vec2> controls;  // of the kept conics
+  controls.clear();
+  for (const Edge& e : kept)
+    if (e.conic) controls.push_back(e.control);
+  auto is_control_point = [&](Vec2 p) { return std::find(controls.begin(), controls.end(), p) != controls.end(); };
+  thread_local std::vector<char> used;
+  used.assign(kept_count, 0);
+  thread_local Ring traced;                            // scratch: one loop as traced
   thread_local std::vector<std::uint32_t> ring_edges;  // the kept edge of each piece
+  std::vector<Ring> out;
+  // A loop passes through a vertex twice only where two kept edges leave it.
+  auto keep = [&](Ring&& loop) {
+    const bool has_conic = std::any_of(loop.begin(), loop.end(), [](const Piece& p) { return p.conic; });
+    if (loop.size() < 2 || (loop.size() == 2 && !has_conic) || ring_area(loop) == 0.0) {
+      recycle_ring(std::move(loop));
+      return;
+    }
+    out.push_back(std::move(loop));
+  };
   for (std::uint32_t start = 0; start < kept_count; ++start) {
     if (used[start]) continue;
-    Ring ring;
+    traced.clear();
     ring_edges.clear();
+    bool may_repeat = false;
     std::uint32_t cur = start;
     for (std::size_t steps = 0; steps <= kept_count; ++steps) {
       used[cur] = 1;
@@ -829,38 +1006,38 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings) {
       p.control = kept[cur].control;
       p.weight = kept[cur].weight;
       p.depth = kept[cur].depth;
-      ring.push_back(p);
+      traced.push_back(p);
       ring_edges.push_back(cur);
+      may_repeat |= out_degree(start_vertex[cur]) > 1;
       const std::uint32_t nxt = next_edge(cur);
       if (nxt == UINT32_MAX || nxt == start || used[nxt]) break;
       cur = nxt;
     }
     // Straight-through vertices where the boundary passes alone (one kept
     // edge out) are dropped: they come from splitting at crossings whose
-    // other edges turned out interior.
-    Ring simple;
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-      const std::size_t prev = (i + ring.size() - 1) % ring.size();
-      if (ring.size() > 3 && !ring[i].conic && !ring[prev].conic && out_degree(start_vertex[ring_edges[i]]) == 1) {
-        const Vec2 a = ring[prev].a, b = ring[i].a, c = ring_end(ring, i);
-        if (orient2d(a, b, c) == 0 && dot(b - a, c - b) > 0.0) continue;
+    // other edges turned out interior. A vertex at a conic's control point is
+    // kept: there a conic's leg runs exactly along the line (as hull
+    // separation aligned it), and the longer line would overlap the leg.
+    Ring simple = take_ring();
+    for (std::size_t i = 0; i < traced.size(); ++i) {
+      const std::size_t prev = (i + traced.size() - 1) % traced.size();
+      if (traced.size() > 3 && !traced[i].conic && !traced[prev].conic && out_degree(start_vertex[ring_edges[i]]) == 1) {
+        const Vec2 a = traced[prev].a, b = traced[i].a, c = ring_end(traced, i);
+        if (orient2d(a, b, c) == 0 && dot(b - a, c - b) > 0.0 && !is_control_point(b)) continue;
       }
-      simple.push_back(ring[i]);
+      simple.push_back(traced[i]);
     }
     // Dropping is decided against the original neighbours; consecutive drops
     // are fine because each dropped vertex lies on the line through its
     // neighbours and all of them on one straight run.
-    loops.push_back(std::move(simple));
-  }
-  std::vector<Ring> out;
-  for (const Ring& loop : loops) {
-    for (Ring& sub : split_at_repeated_vertices(loop)) {
-      const bool has_conic = std::any_of(sub.begin(), sub.end(), [](const Piece& p) { return p.conic; });
-      if (sub.size() < 2 || (sub.size() == 2 && !has_conic)) continue;
-      if (ring_area(sub) == 0.0) continue;
-      out.push_back(std::move(sub));
+    if (!may_repeat) {
+      keep(std::move(simple));
+      continue;
     }
+    for (Ring& sub : split_at_repeated_vertices(simple)) keep(std::move(sub));
+    recycle_ring(std::move(simple));
   }
+  if (settled != nullptr) *settled = !conflicts_left;
   return out;
 }
 

@@ -23,6 +23,14 @@ struct Piece {
 };
 using Ring = std::vector<Piece>;
 
+// Rings out of use, kept with their storage in a per-thread pool: the rings
+// of the next glyph reuse it (no allocation per glyph once warm). take_ring
+// gives an empty ring, with storage from the pool when it has some;
+// recycle_ring(s) give storage back (the pool is capped).
+Ring take_ring();
+void recycle_ring(Ring&& ring);
+void recycle_rings(std::vector<Ring>& rings);  // and clears `rings`
+
 // (i < ring.size(); a compare instead of a division in the hot loops.)
 inline Vec2 ring_end(const Ring& ring, std::size_t i) { return ring[i + 1 == ring.size() ? 0 : i + 1].a; }
 
@@ -86,8 +94,15 @@ bool lines_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
 
 // Non-crossing rings, fill on the left (outer counter-clockwise, holes
 // clockwise), covering exactly the nonzero fill of `rings` (crossing conics
-// replaced by chords at the hull-subdivision limit). Input: separated hulls.
-std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings);
+// replaced by chords at the hull-subdivision limit). Input: the rings after
+// separate_hulls; `hulls_separated`: it reported success (no conic hull
+// overlaps another piece), which spares looking for conics in conflict
+// until lines have been split. `settled`, when given, is set to true when the
+// last look found no conflict left (no crossing, no T-junction, no conic hull
+// overlapping another piece): the rings are then as separate_hulls would
+// leave them, with no crossing.
+std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, bool hulls_separated = false,
+                                    bool* settled = nullptr);
 
 // Nonzero-rule roles of non-crossing rings: which bound the fill, their
 // orientation normalised in place (fill on the left: outer rings
