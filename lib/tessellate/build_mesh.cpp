@@ -1,7 +1,7 @@
 // build_mesh: outline -> cleaned rings -> separated hulls -> (crossing,
 // overlapping or edge-sharing contours only: resolve.cpp's non-crossing rings
-// of the nonzero fill, hulls separated again
-// unless the resolver left nothing in conflict) -> orientation -> polygon
+// of the nonzero fill, hulls separated again unless the resolver left nothing
+// in conflict) -> orientation -> polygon
 // loops + curved triangles -> triangles -> Lawson flips -> indexed mesh
 // (DESIGN.md section 4, paper 3.1). Loops that neither cross nor touch (the
 // usual glyph) are triangulated by one plane sweep (sweep.cpp), first with

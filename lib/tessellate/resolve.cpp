@@ -15,8 +15,10 @@
 // rounded to doubles and snapped to vertices within 1e-12 of the outline's
 // size), conics the rounding pushed into conflict are split further (the
 // loop in resolve_crossings), coincident edges merged with a net direction
-// count, and each edge's left/right winding number obtained by a ray cast from
-// its midpoint against the other edges (binned by span; exact orient2d). An edge bounds the fill when exactly one
+// count, and each edge's left/right winding numbers obtained by a ray cast from
+// its midpoint against the other edges (binned by span; exact orient2d) for
+// one edge per connected part, and passed on to the others along chains and
+// around crossing vertices (side_windings). An edge bounds the fill when exactly one
 // side has winding != 0; it is kept, directed with the fill on its left, and
 // the kept edges are linked into loops turning at every vertex to the first
 // edge clockwise from the one we came along (which traces face boundaries, so
@@ -491,8 +493,9 @@ bool angle_less(Vec2 v, Vec2 p, Vec2 q) {
 // either side of one continue on the same sides of the other (the plane
 // around the vertex is cut in two), so their windings are equal, sides
 // swapped when the two edges point both into or both out of the vertex.
-// Most vertices are such joints; only crossings and touches end a chain, so
-// a glyph with two crossings casts a handful of rays instead of one per edge.
+// Most vertices are such joints; only crossings and touches end a chain, and
+// there the windings pass from chain to chain too (below), so one ray is cast
+// per connected part of the arrangement instead of one per edge.
 void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::vector<int>& right) {
   const std::size_t n = edges.size();
   left.assign(n, 0);
