@@ -176,30 +176,14 @@ bool all_collinear(const Ring& ring) {
 
 namespace {
 
-// True when some position occurs twice among `count` points given by `at`.
-// The positions are canonical (no -0.0; finite), so equal positions have
-// equal bits: an open-addressing hash set on the bits answers in one pass.
-template <class PointAt>
-bool has_repeated_position(std::size_t count, PointAt at) {
-  thread_local std::vector<std::uint32_t> slots;  // scratch: index + 1 of the point there, 0 empty
-  const int bits = position_table_bits(count);
-  slots.assign(std::size_t{1} << bits, 0);
-  const std::size_t mask = slots.size() - 1;
-  for (std::size_t i = 0; i < count; ++i) {
-    const Vec2 p = at(i);
-    std::size_t slot = position_hash(p, bits);
-    while (slots[slot] != 0) {
-      if (at(slots[slot] - 1) == p) return true;
-      slot = (slot + 1) & mask;
-    }
-    slots[slot] = static_cast<std::uint32_t>(i + 1);
-  }
-  return false;
-}
-
-// True when the ring passes through some vertex twice.
+// True when the ring passes through some vertex twice: a piece whose start
+// is not the first at its position, in one pass over a hash table.
 bool repeats_a_vertex(const Ring& ring) {
-  return has_repeated_position(ring.size(), [&](std::size_t i) { return ring[i].a; });
+  thread_local std::vector<std::int32_t> slots;  // scratch
+  FirstAtPosition starts(slots, ring.size(), [&](std::uint32_t i) { return ring[i].a; });
+  for (std::uint32_t i = 0; i < ring.size(); ++i)
+    if (starts.add(i) != i) return true;
+  return false;
 }
 
 }  // namespace
@@ -1267,7 +1251,7 @@ class PointIndex {
   PointIndex(std::vector<Vec2>& points_out, std::size_t expected) : points(points_out) {
     std::size_t capacity = 16;
     bits_ = 4;
-    while (capacity < 4 * expected + 16) {  // at most a quarter full, as in has_repeated_position
+    while (capacity < 4 * expected + 16) {  // at most a quarter full, as position_table_bits
       capacity *= 2;
       ++bits_;
     }

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <vector>
 
 #include "curvetext/geometry.hpp"
 
@@ -36,6 +37,48 @@ inline int position_table_bits(std::size_t count) {
   while ((std::size_t{1} << bits) < 4 * count) ++bits;
   return bits;
 }
+
+// Items 0, 1, ... at positions at(i), looked up by position: the first item
+// added at each position. Open addressing with linear probing over the
+// caller's scratch `slots` (an item, or -1; the table is valid until they are
+// resized), sized by position_table_bits for `count` items.
+template <class PositionOf>
+class FirstAtPosition {
+ public:
+  FirstAtPosition(std::vector<std::int32_t>& slots, std::size_t count, PositionOf at)
+      : at_(at), bits_(position_table_bits(count)), mask_((std::size_t{1} << bits_) - 1) {
+    slots.assign(mask_ + 1, -1);
+    slots_ = slots.data();
+  }
+
+  // Item i, unless an earlier item holds its position: the first item there
+  // (i itself when it is new).
+  std::uint32_t add(std::uint32_t i) {
+    const Vec2 p = at_(i);
+    for (std::size_t slot = position_hash(canonical(p), bits_);; slot = (slot + 1) & mask_) {
+      const std::int32_t first = slots_[slot];
+      if (first < 0) {
+        slots_[slot] = static_cast<std::int32_t>(i);
+        return i;
+      }
+      if (at_(static_cast<std::uint32_t>(first)) == p) return static_cast<std::uint32_t>(first);
+    }
+  }
+
+  // The first item added at p, or -1.
+  std::int32_t find(Vec2 p) const {
+    for (std::size_t slot = position_hash(canonical(p), bits_);; slot = (slot + 1) & mask_) {
+      const std::int32_t first = slots_[slot];
+      if (first < 0 || at_(static_cast<std::uint32_t>(first)) == p) return first;
+    }
+  }
+
+ private:
+  std::int32_t* slots_;  // the caller's storage
+  PositionOf at_;
+  int bits_;
+  std::size_t mask_;
+};
 
 // A 128-bit unsigned integer (a GCC and Clang extension; marked so that
 // -Wpedantic accepts it).

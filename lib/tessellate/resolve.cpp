@@ -519,29 +519,15 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
   thread_local std::vector<std::uint32_t> first_of, ends_at;
   first_of.resize(2 * n);
   {
-    const int bits = position_table_bits(2 * n);
-    const std::size_t mask = (std::size_t{1} << bits) - 1;
-    thread_local std::vector<std::int32_t> slots;  // a position's first end, or -1
+    thread_local std::vector<std::int32_t> slots;        // scratch
     thread_local std::vector<std::uint32_t> second_end;  // per first end
-    slots.assign(mask + 1, -1);
+    FirstAtPosition ends(slots, 2 * n, end_point);
     ends_at.assign(2 * n, 0);
     second_end.resize(2 * n);
-    for (std::size_t k = 0; k < 2 * n; ++k) {
-      const Vec2 p = end_point(k);
-      for (std::size_t slot = position_hash(canonical(p), bits);; slot = (slot + 1) & mask) {
-        const std::int32_t first = slots[slot];
-        if (first < 0) {
-          slots[slot] = static_cast<std::int32_t>(k);
-          ends_at[k] = 1;
-          first_of[k] = static_cast<std::uint32_t>(k);
-          break;
-        }
-        if (end_point(static_cast<std::size_t>(first)) == p) {
-          first_of[k] = static_cast<std::uint32_t>(first);
-          if (++ends_at[static_cast<std::size_t>(first)] == 2) second_end[static_cast<std::size_t>(first)] = static_cast<std::uint32_t>(k);
-          break;
-        }
-      }
+    for (std::uint32_t k = 0; k < 2 * n; ++k) {
+      const std::uint32_t first = ends.add(k);
+      first_of[k] = first;
+      if (++ends_at[first] == 2) second_end[first] = k;
     }
     for (std::size_t k = 0; k < 2 * n; ++k) {
       if (ends_at[k] != 2) continue;
@@ -921,37 +907,28 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, bool hulls_s
   // (counted, then filled in edge order).
   const std::size_t kept_count = kept.size();
   constexpr std::uint32_t kNoVertex = UINT32_MAX;
-  thread_local std::vector<std::int32_t> slots;  // a vertex, or -1
-  thread_local std::vector<Vec2> vertex_at;
+  thread_local std::vector<std::int32_t> slots;  // scratch
   thread_local std::vector<std::uint32_t> start_vertex, end_vertex, out_first, out_edges;
   {
-    const int bits = position_table_bits(kept_count);
-    const std::size_t mask = (std::size_t{1} << bits) - 1;
-    slots.assign(mask + 1, -1);
-    vertex_at.clear();
-    auto vertex_of = [&](Vec2 p, bool add) {
-      for (std::size_t slot = position_hash(canonical(p), bits);; slot = (slot + 1) & mask) {
-        const std::int32_t v = slots[slot];
-        if (v < 0) {
-          if (!add) return kNoVertex;
-          slots[slot] = static_cast<std::int32_t>(vertex_at.size());
-          vertex_at.push_back(p);
-          return static_cast<std::uint32_t>(vertex_at.size() - 1);
-        }
-        if (vertex_at[static_cast<std::size_t>(v)] == p) return static_cast<std::uint32_t>(v);
-      }
-    };
+    FirstAtPosition starts(slots, kept_count, [&](std::uint32_t i) { return kept[i].a; });
+    std::uint32_t vertices = 0;
     start_vertex.resize(kept_count);
-    for (std::size_t i = 0; i < kept_count; ++i) start_vertex[i] = vertex_of(kept[i].a, true);
+    for (std::uint32_t i = 0; i < kept_count; ++i) {
+      const std::uint32_t first = starts.add(i);
+      start_vertex[i] = first == i ? vertices++ : start_vertex[first];
+    }
     end_vertex.resize(kept_count);
-    for (std::size_t i = 0; i < kept_count; ++i) end_vertex[i] = vertex_of(kept[i].b, false);
-    out_first.assign(vertex_at.size() + 1, 0);
+    for (std::size_t i = 0; i < kept_count; ++i) {
+      const std::int32_t first = starts.find(kept[i].b);
+      end_vertex[i] = first < 0 ? kNoVertex : start_vertex[static_cast<std::size_t>(first)];
+    }
+    out_first.assign(vertices + 1, 0);
     for (std::size_t i = 0; i < kept_count; ++i) ++out_first[start_vertex[i] + 1];
-    for (std::size_t v = 0; v < vertex_at.size(); ++v) out_first[v + 1] += out_first[v];
+    for (std::size_t v = 0; v < vertices; ++v) out_first[v + 1] += out_first[v];
     out_edges.resize(kept_count);
     for (std::size_t i = 0; i < kept_count; ++i) out_edges[out_first[start_vertex[i]]++] = static_cast<std::uint32_t>(i);
     // (Filling moved each vertex's first to its end: shift back.)
-    for (std::size_t v = vertex_at.size(); v > 0; --v) out_first[v] = out_first[v - 1];
+    for (std::size_t v = vertices; v > 0; --v) out_first[v] = out_first[v - 1];
     out_first[0] = 0;
   }
   auto out_degree = [&](std::uint32_t v) { return v == kNoVertex ? 0u : out_first[v + 1] - out_first[v]; };
