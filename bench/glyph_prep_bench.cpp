@@ -273,9 +273,10 @@ void print_notes(const std::vector<std::pair<const FontCase*, PrepResult>>& rows
 
 // Where the mesh side's time goes (CURVETEXT_STAGE_TIMING builds).
 void print_stages(const std::vector<std::pair<const FontCase*, PrepResult>>& rows) {
-  std::printf("mesh time by stage, us per glyph (median over glyphs of each glyph's fastest time per stage; the\n"
-              "clock reads inside add a little to the mesh column above; sum = sum of the stage medians,\n"
-              "total = median of the glyphs' summed stages):\n");
+  std::printf(
+      "mesh time by stage, us per glyph (median over glyphs of each glyph's fastest time per stage; the\n"
+      "clock reads inside add a little to the mesh column above; sum = sum of the stage medians,\n"
+      "total = median of the glyphs' summed stages):\n");
   std::printf("%-12s %9s", "font", "outline");
   for (const char* name : curvetext::detail::kMeshStageNames) std::printf(" %9s", name);
   std::printf(" %9s %9s %9s\n", "pack", "sum", "total");
@@ -371,14 +372,15 @@ int main(int argc, char** argv) {
     benchmark::RunSpecifiedBenchmarks();
   }
 
-  std::printf("\nmesh = outline load + build_mesh + gpu::pack_mesh (cubic tolerance of the 32 px level of detail);\n"
-              "FT32 = FT_Load_Glyph + FT_Render_Glyph, AA, 32 px. Fastest of %d rounds per glyph, median over glyphs;\n"
-              "ratio = FT32 / mesh (>= 1: the mesh is prepared at least as fast); faster = share of glyphs whose\n"
-              "mesh is faster than their bitmap; triangles, GPU bytes (%zu-byte vertices and 16-bit indices) and\n"
-              "atlas cells (atlN: mean FreeType bitmap width x rows at N px, 1 byte per pixel, no padding) are\n"
-              "means over all glyphs of the row, empty ones included.%s\n",
-              rounds, sizeof(curvetext::gpu::Vertex),
-              warm ? "\n--warm: each glyph's rounds back to back (predictors and caches trained on it)." : "");
+  std::printf(
+      "\nmesh = outline load + build_mesh + gpu::pack_mesh (cubic tolerance of the 32 px level of detail);\n"
+      "FT32 = FT_Load_Glyph + FT_Render_Glyph, AA, 32 px. Fastest of %d rounds per glyph, median over glyphs;\n"
+      "ratio = FT32 / mesh (>= 1: the mesh is prepared at least as fast); faster = share of glyphs whose\n"
+      "mesh is faster than their bitmap; triangles, GPU bytes (%zu-byte vertices and 16-bit indices) and\n"
+      "atlas cells (atlN: mean FreeType bitmap width x rows at N px, 1 byte per pixel, no padding) are\n"
+      "means over all glyphs of the row, empty ones included.%s\n",
+      rounds, sizeof(curvetext::gpu::Vertex),
+      warm ? "\n--warm: each glyph's rounds back to back (predictors and caches trained on it)." : "");
 
   std::printf("\nLatin glyphs (U+0020..U+024F)  [target: ratio >= 1.0 and mesh < 5 us]\n");
   print_header();

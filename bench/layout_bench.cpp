@@ -70,7 +70,6 @@ const std::vector<std::string>& german() {
   return t;
 }
 
-
 // Other scripts, each in a Noto face (fonts-noto-core, fonts-noto-cjk), with
 // Noto Sans for the Latin letters and digits the Arabic and Hebrew faces lack.
 constexpr const char* kNoto = "/usr/share/fonts/truetype/noto/";
@@ -121,9 +120,12 @@ const std::vector<ScriptSet>& script_sets() {
       {"CJK (Chinese, Japanese)",
        {"/usr/share/fonts/opentype/noto/NotoSansCJK-Regular.ttc#2"},
        "Noto Sans CJK SC",
-       {"北京是中华人民共和国的首都，也是全国的政治、文化和国际交往中心。这座城市有三千多年的建城史，故宫、天坛和长城都是世界文化遗产。",
-        "汉字是世界上最古老的文字之一，现代汉语常用字大约有三千五百个。计算机排版时，每个汉字之间都可以换行，但标点符号不能出现在行首。",
-        "東京は日本の首都であり、世界有数の大都市です。電車やバスなどの公共交通機関が発達していて、毎日何百万人もの人々が通勤しています。"}},
+       {"北京是中华人民共和国的首都，也是全国的政治、文化和国际交往中心。这座城市有三千多年的建城史，故宫、天坛和长城都"
+        "是世界文化遗产。",
+        "汉字是世界上最古老的文字之一，现代汉语常用字大约有三千五百个。计算机排版时，每个汉字之间都可以换行，但标点符号"
+        "不能出现在行首。",
+        "東京は日本の首都であり、世界有数の大都市です。電車やバスなどの公共交通機関が発達していて、毎日何百万人もの人々"
+        "が通勤しています。"}},
   };
   return sets;
 }
@@ -278,8 +280,8 @@ int check_breaks() {
           glong n = 0;
           gunichar* cps = g_utf8_to_ucs4_fast(text.c_str(), -1, &n);
           const std::size_t at = static_cast<std::size_t>(g_utf8_strlen(head, -1));
-          const std::vector<curvetext::BreakAction> opportunities =
-              curvetext::line_breaks(std::u32string(reinterpret_cast<const char32_t*>(cps), static_cast<std::size_t>(n)));
+          const std::vector<curvetext::BreakAction> opportunities = curvetext::line_breaks(
+              std::u32string(reinterpret_cast<const char32_t*>(cps), static_cast<std::size_t>(n)));
           inside_word = at > 0 && opportunities[at - 1] == curvetext::BreakAction::None;
           g_free(cps);
           g_free(head);
@@ -291,10 +293,12 @@ int check_breaks() {
         show(text, "pango    ", hyphenated);
       }
   std::printf("line breaks (widths 160, 240, 330, 420, 560 px; %d Pango line breaks):\n", breaks);
-  std::printf("  %d of %d paragraph layouts identical to Pango's with insert-hyphens off\n", total - differ_plain, total);
-  std::printf("  %d of %d identical to Pango's default (insert-hyphens on); %d differ only where Pango hyphenates "
-              "a word longer than the line, %d unexplained\n",
-              total - differ_hyphen, total, differ_hyphen - unexplained, unexplained);
+  std::printf("  %d of %d paragraph layouts identical to Pango's with insert-hyphens off\n", total - differ_plain,
+              total);
+  std::printf(
+      "  %d of %d identical to Pango's default (insert-hyphens on); %d differ only where Pango hyphenates "
+      "a word longer than the line, %d unexplained\n",
+      total - differ_hyphen, total, differ_hyphen - unexplained, unexplained);
   return differ_plain == 0 && unexplained == 0 ? 0 : 1;
 }
 
@@ -357,7 +361,8 @@ int main(int argc, char** argv) {
       const curvetext::Paragraph p = curvetext::Paragraph::layout(fonts, t, {}, style(kWidth, set.files));
       lines_ours += static_cast<int>(p.lines().size());
       for (const auto& line : p.lines())
-        for (const auto& run : line.runs) ours_files.insert(run.font->path() + "#" + std::to_string(run.font->face_index()));
+        for (const auto& run : line.runs)
+          ours_files.insert(run.font->path() + "#" + std::to_string(run.font->face_index()));
       int n = 0;
       with.line_starts(t, &n);
       lines_pango += n;
@@ -376,7 +381,8 @@ int main(int argc, char** argv) {
     const auto [x, y] = measure(set.texts, set.files, with);
     rows.push_back({set.name, set.texts.size(), lines_ours, lines_pango, x, y});
   }
-  std::printf("\n| script | paragraphs | lines curvetext / Pango | curvetext paragraphs/s | Pango paragraphs/s | ratio |\n");
+  std::printf(
+      "\n| script | paragraphs | lines curvetext / Pango | curvetext paragraphs/s | Pango paragraphs/s | ratio |\n");
   std::printf("|---|---|---|---|---|---|\n");
   std::printf("| Latin (English, German; DejaVu Sans) | %zu | | %.0f | %.0f | %.2fx |\n", texts.size(), a, b, a / b);
   for (const Row& r : rows)

@@ -126,8 +126,10 @@ class Atlas {
       // The quad, one texel larger on every side (the cell's transparent border).
       const double x0 = ox + (c.left - 1) * k, x1 = ox + (c.left + c.width + 1) * k;
       const double y0 = oy - (c.top + 1) * k, y1 = oy + (c.height - c.top + 1) * k;
-      const int px0 = std::max(0, static_cast<int>(std::floor(x0))), px1 = std::min(out.width, static_cast<int>(std::ceil(x1)));
-      const int py0 = std::max(0, static_cast<int>(std::floor(y0))), py1 = std::min(out.height, static_cast<int>(std::ceil(y1)));
+      const int px0 = std::max(0, static_cast<int>(std::floor(x0))),
+                px1 = std::min(out.width, static_cast<int>(std::ceil(x1)));
+      const int py0 = std::max(0, static_cast<int>(std::floor(y0))),
+                py1 = std::min(out.height, static_cast<int>(std::ceil(y1)));
       for (int y = py0; y < py1; ++y) {
         const double cy = y + 0.5;
         if (cy < y0 || cy >= y1) continue;
@@ -205,7 +207,8 @@ int main(int argc, char** argv) {
     } else if (a == "--quick") {
       quick = true;
     } else {
-      std::fprintf(stderr, "usage: quality_bench [--sizes LIST] [--modes LIST] [--quick] [--check] [--dump] [--worst E]\n");
+      std::fprintf(stderr,
+                   "usage: quality_bench [--sizes LIST] [--modes LIST] [--quick] [--check] [--dump] [--worst E]\n");
       return 2;
     }
   }
@@ -236,8 +239,7 @@ int main(int argc, char** argv) {
           TextImageOptions options;
           options.size_px = size;
           const TextImageLayout layout = layout_text_image(font, kStrings[si], options);
-          const Outline pixel_outline =
-              test::place_outline(test::line_outline(font, layout.line), layout.placement);
+          const Outline pixel_outline = test::place_outline(test::line_outline(font, layout.line), layout.placement);
           const test::Coverage reference = test::union_coverage(pixel_outline, layout.width, layout.height);
           for (const std::string& m : modes) {
             // "vbaa-ringR": vbaa with DrawOptions::vbaa_ring = R.
@@ -253,8 +255,8 @@ int main(int argc, char** argv) {
                 for (int x = 0; x < result.width; ++x) {
                   const double e = result.at(x, y) - reference.at(x, y);
                   if (std::abs(e) <= worst) continue;
-                  std::printf("worst %s font %zu string %zu size %g pixel (%d,%d) got %.3f want %.3f\n", m.c_str(), fi, si,
-                              size, x, y, result.at(x, y), reference.at(x, y));
+                  std::printf("worst %s font %zu string %zu size %g pixel (%d,%d) got %.3f want %.3f\n", m.c_str(), fi,
+                              si, size, x, y, result.at(x, y), reference.at(x, y));
                   for (int dy = -1; dy <= 1; ++dy) {
                     std::printf("   ");
                     for (int dx = -1; dx <= 1; ++dx) {
@@ -281,7 +283,8 @@ int main(int argc, char** argv) {
             if (dump && st.max_abs > 0.15) {
               const std::string name = "quality-" + m + "-" + std::to_string(fi) + "-" + std::to_string(si) + "-" +
                                        std::to_string(static_cast<int>(size));
-              std::printf("%s: max %.3f -> %s\n", name.c_str(), st.max_abs, test::write_comparison(name, result, reference).c_str());
+              std::printf("%s: max %.3f -> %s\n", name.c_str(), st.max_abs,
+                          test::write_comparison(name, result, reference).c_str());
             }
           }
           test::Coverage a(layout.width, layout.height), b(layout.width, layout.height);
@@ -295,7 +298,8 @@ int main(int argc, char** argv) {
     FT_Done_FreeType(ft);
 
     std::printf("fonts:");
-    for (std::size_t fi = 0; fi < font_count; ++fi) std::printf(" %s%s", kFonts[fi].name, fi + 1 < font_count ? "," : "");
+    for (std::size_t fi = 0; fi < font_count; ++fi)
+      std::printf(" %s%s", kFonts[fi].name, fi + 1 < font_count ? "," : "");
     std::printf("; strings:");
     for (std::size_t si = 0; si < string_count; ++si) std::printf(" \"%s\"", kStrings[si]);
     std::printf("\nworst case over fonts and strings; reference: exact nonzero-union area coverage\n\n");
@@ -319,7 +323,8 @@ int main(int argc, char** argv) {
     };
     table("Edge-band mean absolute coverage error", [&](const Cellstat& c) { return fmt("%.4f", c.edge); });
     table("Largest single-pixel error", [&](const Cellstat& c) { return fmt("%.3f", c.max); });
-    table("Ink ratio (sum of coverage / reference; the one furthest from 1)", [&](const Cellstat& c) { return fmt("%.4f", c.ink); });
+    table("Ink ratio (sum of coverage / reference; the one furthest from 1)",
+          [&](const Cellstat& c) { return fmt("%.4f", c.ink); });
 
     // Targets of issue 4.
     int missed = 0;
@@ -355,7 +360,10 @@ int main(int argc, char** argv) {
         const double best_atlas = std::min(results["atlas-bitmap32"][s].edge, results["atlas-sdf64"][s].edge);
         const bool ok = e < best_atlas;
         if (!ok && counted) ++missed;
-        std::printf("%s %-6s %5g px edge %.4f < best atlas %.4f%s\n", ok ? "ok  " : counted ? "MISS" : "info",
+        std::printf("%s %-6s %5g px edge %.4f < best atlas %.4f%s\n",
+                    ok        ? "ok  "
+                    : counted ? "MISS"
+                              : "info",
                     m.c_str(), s, e, best_atlas, counted ? "" : "  (msaa: the context's samples, not a target)");
       }
     }

@@ -115,11 +115,13 @@ TEST_P(CorpusSubset, MeshesPassInvariantsAndDrawWithinCoverageTolerances) {
   const test::CorpusResult r = test::check_corpus(g.renderer, font, test::every_nth_glyph(font, spec.stride), options);
   std::printf(
       "[corpus] %-22s %4zu glyphs (%zu empty) %zu failed; area error %.2g; edge mean %.4f, worst %.4f@%u; "
-      "3x3 %.3f@%u; line %.3f@%u; pixel %.3f@%u; ink %.2f px^2@%u; slowest %.1f ms; %.2f s mesh, %.2f s draw, %.2f s reference\n",
+      "3x3 %.3f@%u; line %.3f@%u; pixel %.3f@%u; ink %.2f px^2@%u; slowest %.1f ms; %.2f s mesh, %.2f s draw, %.2f s "
+      "reference\n",
       spec.name, r.glyphs, r.empty, r.failed_glyphs, r.max_area_error,
       r.compared ? r.sum_edge_mean / static_cast<double>(r.compared) : 0.0, r.worst_edge_mean, r.worst_edge_glyph,
-      r.worst_blurred, r.worst_blurred_glyph, r.worst_crack, r.worst_crack_glyph, r.worst_pixel, r.worst_pixel_glyph, r.worst_ink, r.worst_ink_glyph,
-      r.slowest_glyph_seconds * 1e3, r.seconds_mesh, r.seconds_render, r.seconds_reference);
+      r.worst_blurred, r.worst_blurred_glyph, r.worst_crack, r.worst_crack_glyph, r.worst_pixel, r.worst_pixel_glyph,
+      r.worst_ink, r.worst_ink_glyph, r.slowest_glyph_seconds * 1e3, r.seconds_mesh, r.seconds_render,
+      r.seconds_reference);
   for (const test::GlyphFailure& f : r.failures) {
     if (const KnownFailure* k = known_failure(spec.name, f.glyph)) {
       std::printf("[corpus]   known failure, glyph %u (%s): %s\n", f.glyph, k->why, f.reason.c_str());
@@ -139,7 +141,9 @@ TEST_P(CorpusSubset, MeshesPassInvariantsAndDrawWithinCoverageTolerances) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Fonts, CorpusSubset, ::testing::ValuesIn(subsets()),
-                         [](const ::testing::TestParamInfo<Subset>& param_info) { return std::string(param_info.param.name); });
+                         [](const ::testing::TestParamInfo<Subset>& param_info) {
+                           return std::string(param_info.param.name);
+                         });
 
 // --- The comparison fails on wrong meshes --------------------------------------
 
@@ -150,8 +154,12 @@ Outline reversed_contour(const Outline& outline, std::size_t which) {
   for (auto it = c.segments.rbegin(); it != c.segments.rend(); ++it) {
     Segment s = *it;
     switch (s.kind) {
-      case Segment::Kind::Line: std::swap(s.p[0], s.p[1]); break;
-      case Segment::Kind::Conic: std::swap(s.p[0], s.p[2]); break;
+      case Segment::Kind::Line:
+        std::swap(s.p[0], s.p[1]);
+        break;
+      case Segment::Kind::Conic:
+        std::swap(s.p[0], s.p[2]);
+        break;
       case Segment::Kind::Cubic:
         std::swap(s.p[0], s.p[3]);
         std::swap(s.p[1], s.p[2]);
@@ -169,8 +177,8 @@ double union_area_px(const Outline& outline, double scale) {
   for (Contour& c : px.contours())
     for (Segment& s : c.segments)
       for (Vec2& p : s.p) p = Vec2{scale * (p.x - box.min.x) + 1, scale * (box.max.y - p.y) + 1};
-  const test::Coverage c = test::union_coverage(
-      px, static_cast<int>(scale * (box.max.x - box.min.x)) + 3, static_cast<int>(scale * (box.max.y - box.min.y)) + 3);
+  const test::Coverage c = test::union_coverage(px, static_cast<int>(scale * (box.max.x - box.min.x)) + 3,
+                                                static_cast<int>(scale * (box.max.y - box.min.y)) + 3);
   double sum = 0;
   for (float v : c.value) sum += v;
   return sum;
@@ -251,8 +259,8 @@ TEST(BrokenMesh, WrongFillOfOverlapOrHoleIsCaught) {
   options.label = "broken-hole";
   const test::CorpusResult c = test::compare_meshes(g.renderer, dejavu_scale_upem, holes_right, options);
   const test::CorpusResult d = test::compare_meshes(g.renderer, dejavu_scale_upem, holes_filled, options);
-  std::printf("[corpus] overlaps meshed as XOR: %zu of %zu caught; holes filled: %zu of %zu caught\n",
-              b.failed_glyphs, wrong.size(), d.failed_glyphs, holes_filled.size());
+  std::printf("[corpus] overlaps meshed as XOR: %zu of %zu caught; holes filled: %zu of %zu caught\n", b.failed_glyphs,
+              wrong.size(), d.failed_glyphs, holes_filled.size());
   EXPECT_EQ(a.failed_glyphs, 0u);
   EXPECT_EQ(b.failed_glyphs, wrong.size());
   EXPECT_EQ(c.failed_glyphs, 0u);

@@ -152,8 +152,8 @@ TEST(Conic, SplitIsExact) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> coord(-100, 100), weight(0.05, 6.0), param(0.05, 0.95);
   for (int iter = 0; iter < 200; ++iter) {
-    const Segment s = Segment::conic({coord(rng), coord(rng)}, {coord(rng), coord(rng)},
-                                     {coord(rng), coord(rng)}, weight(rng));
+    const Segment s =
+        Segment::conic({coord(rng), coord(rng)}, {coord(rng), coord(rng)}, {coord(rng), coord(rng)}, weight(rng));
     if (std::abs(cross(s.p[1] - s.p[0], s.p[2] - s.p[0])) < 100) continue;  // near-degenerate
     const double t = param(rng);
     const auto [left, right] = split(s, t);
@@ -167,8 +167,8 @@ TEST(Conic, SplitIsExact) {
     // Areas add up: the two halves' chord areas plus the triangle between
     // the three split points equal the whole.
     const double whole = conic_chord_area(s);
-    const double parts = conic_chord_area(left) + conic_chord_area(right) -
-                         0.5 * cross(left.p[2] - s.p[0], s.p[2] - s.p[0]);
+    const double parts =
+        conic_chord_area(left) + conic_chord_area(right) - 0.5 * cross(left.p[2] - s.p[0], s.p[2] - s.p[0]);
     EXPECT_NEAR(parts, whole, 1e-9 * (std::abs(whole) + 1));
   }
 }
@@ -177,9 +177,7 @@ TEST(Conic, SplitIsExact) {
 // squared distance from the best samples.
 double distance_to_quadratic(const Segment& q, Vec2 p) {
   auto pos = [&](double t) { return evaluate(q, t); };
-  auto d1 = [&](double t) {
-    return (q.p[1] - q.p[0]) * (2 * (1 - t)) + (q.p[2] - q.p[1]) * (2 * t);
-  };
+  auto d1 = [&](double t) { return (q.p[1] - q.p[0]) * (2 * (1 - t)) + (q.p[2] - q.p[1]) * (2 * t); };
   const Vec2 d2 = (q.p[2] - q.p[1] * 2.0 + q.p[0]) * 2.0;
   double best = std::min(distance(pos(0), p), distance(pos(1), p));
   const int samples = 48;
@@ -204,8 +202,8 @@ double distance_to_cubic(const Segment& c, Vec2 p) {
     for (int it = 0; it < 30; ++it) {
       const double u = 1 - t;
       const Vec2 diff = evaluate(c, t) - p;
-      const Vec2 der = (c.p[1] - c.p[0]) * (3 * u * u) + (c.p[2] - c.p[1]) * (6 * u * t) +
-                       (c.p[3] - c.p[2]) * (3 * t * t);
+      const Vec2 der =
+          (c.p[1] - c.p[0]) * (3 * u * u) + (c.p[2] - c.p[1]) * (6 * u * t) + (c.p[3] - c.p[2]) * (3 * t * t);
       const Vec2 der2 = (c.p[2] - c.p[1] * 2.0 + c.p[0]) * (6 * u) + (c.p[3] - c.p[2] * 2.0 + c.p[1]) * (6 * t);
       const double g = dot(diff, der), h = dot(der, der) + dot(diff, der2);
       if (h <= 0) break;
@@ -222,8 +220,8 @@ TEST(CubicToQuadratics, BoundHoldsOnRandomCubics) {
   std::uniform_real_distribution<double> log_tol(-1.0, 1.5);  // 0.1 .. 30 units: 1..35 pieces
   double worst_ratio = 0.0, best_ratio = 1.0;
   for (int iter = 0; iter < 300; ++iter) {
-    const Segment cubic = Segment::cubic({coord(rng), coord(rng)}, {coord(rng), coord(rng)},
-                                         {coord(rng), coord(rng)}, {coord(rng), coord(rng)});
+    const Segment cubic = Segment::cubic({coord(rng), coord(rng)}, {coord(rng), coord(rng)}, {coord(rng), coord(rng)},
+                                         {coord(rng), coord(rng)});
     const double tol = std::pow(10.0, log_tol(rng));
     std::vector<Segment> quads;
     const int n = cubic_to_quadratics(cubic, tol, quads);

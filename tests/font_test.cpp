@@ -210,7 +210,9 @@ TEST(Font, Cff2StaticKeepsFractionalCoordinates) {
   EXPECT_EQ(font.metrics().ascender, 800.0);
   EXPECT_EQ(font.metrics().descender, -200.0);
   EXPECT_EQ(font.metrics().line_gap, 90.0);
-  EXPECT_EQ(error_code_of([&] { const_cast<ct::Font&>(font).set_variations({{"wght", 700}}); }),
+  EXPECT_EQ(error_code_of([&] {
+              const_cast<ct::Font&>(font).set_variations({{"wght", 700}});
+            }),
             ct::ErrorCode::FontInvalid);
 }
 
@@ -399,8 +401,8 @@ TEST(Shaping, KerningChangesAdvance) {
   for (const auto& g : b.glyphs) sum += g.x_advance;
   EXPECT_EQ(b.advance, sum);
   // Unkerned advances are the hmtx advances in font units.
-  EXPECT_EQ(b.glyphs[0].x_advance, static_cast<double>(hb_font_get_glyph_h_advance(font.impl().hb_font,
-                                                                                     b.glyphs[0].glyph_id)));
+  EXPECT_EQ(b.glyphs[0].x_advance,
+            static_cast<double>(hb_font_get_glyph_h_advance(font.impl().hb_font, b.glyphs[0].glyph_id)));
 }
 
 TEST(Shaping, Ligatures) {
@@ -466,7 +468,8 @@ TEST(Shaping, InvalidUtf8) {
       std::string("\xF4\x90\x80\x80"),  // U+110000
       std::string("\xF5\x80\x80\x80"),  // lead byte past U+10FFFF
       std::string("\x80"),              // stray continuation
-      std::string("a\xE2\x82" "b"),     // truncated in the middle
+      std::string("a\xE2\x82"
+                  "b"),  // truncated in the middle
   };
   for (const std::string& text : cases) {
     EXPECT_EQ(error_code_of([&] { ct::validate_utf8(text); }), ct::ErrorCode::InvalidText);

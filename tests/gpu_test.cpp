@@ -52,8 +52,7 @@ Coverage render(const Mesh& mesh, AntiAliasing aa, CurveMode mode = CurveMode::E
   Image img = renderer.read_pixels();
   Coverage cov(static_cast<std::size_t>(kW) * kH);
   for (int y = 0; y < kH; ++y)
-    for (int x = 0; x < kW; ++x)
-      cov[static_cast<std::size_t>(y) * kW + x] = 1.0 - img.pixel(x, y)[0] / 255.0;
+    for (int x = 0; x < kW; ++x) cov[static_cast<std::size_t>(y) * kW + x] = 1.0 - img.pixel(x, y)[0] / 255.0;
   return cov;
 }
 
@@ -176,8 +175,8 @@ TEST(Coverage, AxisAlignedSquareFullIsExactArea) {
     for (int x = 0; x < kW; ++x)
       want[static_cast<std::size_t>(y) * kW + x] = overlap(x, x + 1, x0, x1) * overlap(y, y + 1, y0, y1);
   const Stats s = compare(got, want);
-  std::printf("aligned square full: max error %.5f, mean edge error %.5f over %zu pixels\n", s.max_error,
-              s.mean_edge, s.edge_pixels);
+  std::printf("aligned square full: max error %.5f, mean edge error %.5f over %zu pixels\n", s.max_error, s.mean_edge,
+              s.edge_pixels);
   const double tol = 1.0 / 255.0 + 0.002;
   for (int y = 0; y < kH; ++y)
     for (int x = 0; x < kW; ++x) {
@@ -336,8 +335,8 @@ TEST(Coverage, FlatSkewedCurveNextToInteriorTriangle) {
   straight.curves.clear();
   straight.boundary_lines.push_back({1, 0});
   const Stats line = compare(render(straight, AntiAliasing::Full), want);
-  std::printf("flat skewed curve: edge %.4f, max %.4f (as a line: edge %.4f, max %.4f)\n", s.mean_edge,
-              s.max_error, line.mean_edge, line.max_error);
+  std::printf("flat skewed curve: edge %.4f, max %.4f (as a line: edge %.4f, max %.4f)\n", s.mean_edge, s.max_error,
+              line.mean_edge, line.max_error);
   EXPECT_LE(s.max_error, std::max(0.1, line.max_error + 0.02));
   EXPECT_LE(s.mean_edge, line.mean_edge + 0.01);
   if (s.max_error > 0.1) save_failure("flat_skewed_curve", got, want);
@@ -364,8 +363,8 @@ TEST(Coverage, FanIsWatertightUnderTranslucentColor) {
   Renderer renderer;
   renderer.begin(kW, kH, Color{1, 1, 1, 1});
   DrawBatch batch = DrawBatch::from_mesh(m);
-  renderer.draw(batch, Placement{1.0, 0.0, kH}, DrawOptions{Color{0, 0, 0, 0.5f}, AntiAliasing::Full,
-                                                            CurveMode::Exact});
+  renderer.draw(batch, Placement{1.0, 0.0, kH},
+                DrawOptions{Color{0, 0, 0, 0.5f}, AntiAliasing::Full, CurveMode::Exact});
   const Image img = renderer.read_pixels();
   int checked = 0, bad = 0;
   for (int y = 0; y < kH; ++y)
@@ -401,8 +400,8 @@ TEST(Text, GlyphBatchMatchesFreeTypeReference) {
 
   const test::Coverage want = test::freetype_reference(test::line_outline(font, line), placement, width, height, 8);
   const test::CoverageStats s = test::compare(got, want);
-  std::printf("text 24px: edge mean %.4f, max %.4f, ink ratio %.4f over %zu edge pixels\n", s.edge_mean_abs,
-              s.max_abs, s.ink_ratio, s.edge_pixels);
+  std::printf("text 24px: edge mean %.4f, max %.4f, ink ratio %.4f over %zu edge pixels\n", s.edge_mean_abs, s.max_abs,
+              s.ink_ratio, s.edge_pixels);
   // Interior triangles next to curves evaluate them (kinds 3, 4) and curve
   // coverage accounts for curvature, so ink is right to the 3%.
   EXPECT_LE(s.edge_mean_abs, 0.03);
@@ -559,9 +558,10 @@ TEST(DrawBatchUpload, SixteenBitThirtyTwoBitAndArraysDrawTheSame) {
   std::vector<Image> images;
   for (gpu::IndexUpload how : {gpu::IndexUpload::Bits16, gpu::IndexUpload::Bits32, gpu::IndexUpload::Arrays}) {
     DrawBatch batch = DrawBatchAccess::make(gpu::upload(packed, how));
-    const std::size_t expected = how == gpu::IndexUpload::Bits16 ? packed.vertices.size() * 32 + packed.indices.size() * 2
-                                 : how == gpu::IndexUpload::Bits32 ? packed.vertices.size() * 32 + packed.indices.size() * 4
-                                                                   : packed.indices.size() * 32;
+    const std::size_t expected =
+        how == gpu::IndexUpload::Bits16   ? packed.vertices.size() * 32 + packed.indices.size() * 2
+        : how == gpu::IndexUpload::Bits32 ? packed.vertices.size() * 32 + packed.indices.size() * 4
+                                          : packed.indices.size() * 32;
     EXPECT_EQ(batch.gpu_bytes(), expected);
     for (AntiAliasing aa : {AntiAliasing::Full, AntiAliasing::Curves}) {
       renderer.begin(160, 44, Color{1, 1, 1, 1});

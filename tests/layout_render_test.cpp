@@ -72,21 +72,52 @@ std::vector<Case> cases() {
       {"MixedDirectionJustified",
        "Hello \u0645\u0631\u062D\u0628\u0627 \u0628\u0627\u0644\u0639\u0627\u0644\u0645 world, the paragraph goes on "
        "\u0648\u0647\u0630\u0627 \u0646\u0635 \u0639\u0631\u0628\u064A and ends here.",
-       {test::kDejaVuSans, test::kNotoArabic}, 18, 220, Align::Justify, 0, Ellipsis::None, 2},
+       {test::kDejaVuSans, test::kNotoArabic},
+       18,
+       220,
+       Align::Justify,
+       0,
+       Ellipsis::None,
+       2},
       {"DevanagariCentered",
        "\u0928\u092E\u0938\u094D\u0924\u0947 \u0926\u0941\u0928\u093F\u092F\u093E, \u092F\u0939 \u090F\u0915 "
        "\u0935\u093E\u0915\u094D\u092F \u0939\u0948\u0964",
-       {test::kNotoDevanagari}, 24, 160, Align::Center, 0, Ellipsis::None, 2},
+       {test::kNotoDevanagari},
+       24,
+       160,
+       Align::Center,
+       0,
+       Ellipsis::None,
+       2},
       {"CjkFallbackEllipsis",
        "Kanji: \u6F22\u5B57\u306F\u4E2D\u56FD\u304B\u3089\u6765\u305F\u6587\u5B57\u3067\u3059\u3002\u4ECA\u65E5\u306F"
        "\u826F\u3044\u5929\u6C17\u3067\u3059\u3002",
-       {test::kDejaVuSans}, 20, 150, Align::Start, 2, Ellipsis::End, 2},
+       {test::kDejaVuSans},
+       20,
+       150,
+       Align::Start,
+       2,
+       Ellipsis::End,
+       2},
       {"ThaiRightAligned",
        "\u0E20\u0E32\u0E29\u0E32\u0E44\u0E17\u0E22\u0E40\u0E1B\u0E47\u0E19\u0E20\u0E32\u0E29\u0E32\u0E17\u0E35\u0E48"
        "\u0E2A\u0E27\u0E22\u0E07\u0E32\u0E21 \u0E21\u0E32\u0E01",
-       {test::kNotoThai}, 20, 120, Align::Right, 0, Ellipsis::None, 2},
-      {"TabsAndLatin", "Name\tValue\tUnit\nwidth\t420\tpx\nsize\t16\tpx",
-       {test::kDejaVuSans}, 16, 0, Align::Start, 0, Ellipsis::None, 3},
+       {test::kNotoThai},
+       20,
+       120,
+       Align::Right,
+       0,
+       Ellipsis::None,
+       2},
+      {"TabsAndLatin",
+       "Name\tValue\tUnit\nwidth\t420\tpx\nsize\t16\tpx",
+       {test::kDejaVuSans},
+       16,
+       0,
+       Align::Start,
+       0,
+       Ellipsis::None,
+       3},
   };
 }
 
@@ -110,8 +141,8 @@ TEST_P(RenderedParagraph, MatchesExactCoverageOfItsGlyphs) {
   const test::Coverage reference =
       test::union_coverage(paragraph_outline(p, options.margin_px), result.width, result.height);
   const test::CoverageStats s = test::compare(result, reference);
-  std::printf("%-26s %zu lines  edge %.4f  mean %.5f  max %.3f  ink %.4f\n", c.name, p.lines().size(),
-              s.edge_mean_abs, s.mean_abs, s.max_abs, s.ink_ratio);
+  std::printf("%-26s %zu lines  edge %.4f  mean %.5f  max %.3f  ink %.4f\n", c.name, p.lines().size(), s.edge_mean_abs,
+              s.mean_abs, s.max_abs, s.ink_ratio);
   const bool ok = s.edge_mean_abs <= kEdgeMeanLimit && std::abs(s.ink_ratio - 1.0) <= kInkLimit;
   if (!ok) test::write_comparison(std::string("paragraph-") + c.name, result, reference);
   EXPECT_GT(s.edge_pixels, 100u) << "nothing was drawn";
@@ -128,8 +159,9 @@ TEST_P(RenderedParagraph, MatchesExactCoverageOfItsGlyphs) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Paragraphs, RenderedParagraph, ::testing::ValuesIn(cases()),
-                         [](const ::testing::TestParamInfo<Case>& param_info) { return std::string(param_info.param.name); });
-
+                         [](const ::testing::TestParamInfo<Case>& param_info) {
+                           return std::string(param_info.param.name);
+                         });
 
 // --- the options single lines have, on paragraphs (ImageStyle) -------------
 

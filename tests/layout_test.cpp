@@ -112,7 +112,8 @@ TEST(Layout, MixedDirectionRtlParagraphArabic) {
 
 TEST(Layout, DevanagariShapesConjuncts) {
   FontCollection fonts;
-  const std::string text = "\u0928\u092E\u0938\u094D\u0924\u0947 \u0926\u0941\u0928\u093F\u092F\u093E";  // namaste duniya
+  const std::string text =
+      "\u0928\u092E\u0938\u094D\u0924\u0947 \u0926\u0941\u0928\u093F\u092F\u093E";  // namaste duniya
   const Paragraph p = Paragraph::layout(fonts, text, {}, style_with({test::kNotoDevanagari}, 24));
   ASSERT_EQ(p.lines().size(), 1u);
   std::size_t glyphs = 0;
@@ -160,7 +161,8 @@ TEST(Layout, ThaiWrapsWithinWidth) {
 
 TEST(Layout, CjkFallbackThroughFontconfigAndBreaksBetweenIdeographs) {
   FontCollection fonts;
-  const std::string text = "Kanji: \u6F22\u5B57\u306F\u4E2D\u56FD\u304B\u3089\u6765\u305F\u6587\u5B57\u3067\u3059\u3002";
+  const std::string text =
+      "Kanji: \u6F22\u5B57\u306F\u4E2D\u56FD\u304B\u3089\u6765\u305F\u6587\u5B57\u3067\u3059\u3002";
   const Paragraph p = Paragraph::layout(fonts, text, {}, style_with({test::kDejaVuSans}, 20, 120));
   ASSERT_GE(p.lines().size(), 2u);
   bool cjk = false;
@@ -224,8 +226,7 @@ TEST(Layout, EmojiFallsBackToOutlineFaceElseMissingGlyph) {
   const double nv = size / noto.metrics().units_per_em;
   EXPECT_NEAR(seen[5].advance, hb_font_get_glyph_h_advance(noto.impl().hb_font, 0) * nv, 1e-9);
   // Pen positions: each glyph starts where the previous one's advance ends.
-  for (std::size_t k = 1; k < seen.size(); ++k)
-    EXPECT_NEAR(seen[k].x, seen[k - 1].x + seen[k - 1].advance, 1e-9) << k;
+  for (std::size_t k = 1; k < seen.size(); ++k) EXPECT_NEAR(seen[k].x, seen[k - 1].x + seen[k - 1].advance, 1e-9) << k;
   EXPECT_NEAR(seen[0].x, 0.0, 1e-9);
 }
 
@@ -313,15 +314,18 @@ TEST(Layout, JustifyStretchesSpacesOnly) {
   FontCollection fonts;
   ParagraphStyle s = style_with({test::kDejaVuSans}, 18, 260);
   s.align = Align::Justify;
-  const std::string text = "Justified text stretches the spaces between words so that both edges line up, except "
-                           "on the last line.";
+  const std::string text =
+      "Justified text stretches the spaces between words so that both edges line up, except "
+      "on the last line.";
   const Paragraph p = Paragraph::layout(fonts, text, {}, s);
   ASSERT_GE(p.lines().size(), 3u);
   const Paragraph plain = Paragraph::layout(fonts, text, {}, style_with({test::kDejaVuSans}, 18, 260));
   for (std::size_t k = 0; k < p.lines().size(); ++k) {
     const LayoutLine& l = p.lines()[k];
-    if (k + 1 < p.lines().size()) EXPECT_NEAR(l.x + l.width, 260.0, 1e-6) << k;
-    else EXPECT_LT(l.x + l.width, 259.0);
+    if (k + 1 < p.lines().size())
+      EXPECT_NEAR(l.x + l.width, 260.0, 1e-6) << k;
+    else
+      EXPECT_LT(l.x + l.width, 259.0);
     // Letters keep their advances: every non-space glyph has the unjustified advance.
     const LayoutLine& u = plain.lines()[k];
     ASSERT_EQ(l.start, u.start);
@@ -341,7 +345,8 @@ TEST(Layout, SoftHyphenDrawsHyphenWhenUsed) {
   EXPECT_TRUE(p.lines()[0].hyphenated);
   EXPECT_EQ(p.lines()[1].start, 7u);
   const Font f = Font::open(test::kDejaVuSans);
-  const std::uint32_t hyphen = f.glyph_for_codepoint(0x2010) ? f.glyph_for_codepoint(0x2010) : f.glyph_for_codepoint('-');
+  const std::uint32_t hyphen =
+      f.glyph_for_codepoint(0x2010) ? f.glyph_for_codepoint(0x2010) : f.glyph_for_codepoint('-');
   EXPECT_EQ(count_glyph(p.lines()[0], hyphen), 1u);
   // Unused soft hyphens draw nothing visible.
   const Paragraph wide = Paragraph::layout(fonts, text, {}, style_with({test::kDejaVuSans}, 20, 0));

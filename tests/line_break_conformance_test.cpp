@@ -73,8 +73,8 @@ const std::map<std::string, std::string>& rule_names() {
 
 struct Case {
   std::u32string text;
-  std::vector<bool> breaks;       // break after code point i
-  std::vector<std::string> rules; // rule cited after code point i
+  std::vector<bool> breaks;        // break after code point i
+  std::vector<std::string> rules;  // rule cited after code point i
 };
 
 Case parse(const std::string& line) {

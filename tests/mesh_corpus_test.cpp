@@ -80,7 +80,8 @@ Contact contours_cross_or_touch(const Outline& quadratic) {
           // Consecutive pieces share one end; folding back over each other counts.
           const Vec2 shared = (p.b == q.a) ? p.b : p.a;
           const Vec2 pf = (p.a == shared) ? p.b : p.a, qf = (q.a == shared) ? q.b : q.a;
-          if (detail::point_on_segment(shared, pf, qf) || detail::point_on_segment(shared, qf, pf)) return Contact::Cross;
+          if (detail::point_on_segment(shared, pf, qf) || detail::point_on_segment(shared, qf, pf))
+            return Contact::Cross;
           continue;
         }
       }
@@ -95,8 +96,8 @@ Contact contours_cross_or_touch(const Outline& quadratic) {
 struct CorpusFont {
   const char* name;
   const char* path;
-  double cubic_tolerance_per_em;  // cubic tolerance as a fraction of units per em
-  float wght = 0.0f;              // variable fonts: the weight instance (0: default)
+  double cubic_tolerance_per_em;        // cubic tolerance as a fraction of units per em
+  float wght = 0.0f;                    // variable fonts: the weight instance (0: default)
   const char* fallback_path = nullptr;  // where Debian's package puts it otherwise
 };
 
@@ -182,14 +183,15 @@ TEST_P(MeshCorpus, EveryGlyphPassesTheMeshInvariants) {
   EXPECT_EQ(failures, 0u);
 }
 
-INSTANTIATE_TEST_SUITE_P(Fonts, MeshCorpus,
-                         ::testing::Values(CorpusFont{"DejaVuSans", test::kDejaVuSans, 1.0 / 1000.0},
-                                           CorpusFont{"NotoSans", test::kNotoSans, 1.0 / 1000.0},
-                                           CorpusFont{"NimbusRoman", test::kNimbusRoman, 1.0 / 1000.0},
-                                           CorpusFont{"InterWght100", test::kInterVariable, 1.0 / 1000.0, 100.0f, kInterFallback},
-                                           CorpusFont{"InterWght400", test::kInterVariable, 1.0 / 1000.0, 400.0f, kInterFallback},
-                                           CorpusFont{"InterWght900", test::kInterVariable, 1.0 / 1000.0, 900.0f, kInterFallback}),
-                         [](const ::testing::TestParamInfo<CorpusFont>& param_info) { return std::string(param_info.param.name); });
+INSTANTIATE_TEST_SUITE_P(
+    Fonts, MeshCorpus,
+    ::testing::Values(CorpusFont{"DejaVuSans", test::kDejaVuSans, 1.0 / 1000.0},
+                      CorpusFont{"NotoSans", test::kNotoSans, 1.0 / 1000.0},
+                      CorpusFont{"NimbusRoman", test::kNimbusRoman, 1.0 / 1000.0},
+                      CorpusFont{"InterWght100", test::kInterVariable, 1.0 / 1000.0, 100.0f, kInterFallback},
+                      CorpusFont{"InterWght400", test::kInterVariable, 1.0 / 1000.0, 400.0f, kInterFallback},
+                      CorpusFont{"InterWght900", test::kInterVariable, 1.0 / 1000.0, 900.0f, kInterFallback}),
+    [](const ::testing::TestParamInfo<CorpusFont>& param_info) { return std::string(param_info.param.name); });
 
 }  // namespace
 }  // namespace curvetext

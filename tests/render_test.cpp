@@ -43,7 +43,8 @@ struct Case {
 };
 
 std::string case_name(const Case& c, const char* mode) {
-  std::string n = std::string(c.font_name) + "_" + c.script + "_" + std::to_string(static_cast<int>(c.size)) + "px_" + mode;
+  std::string n =
+      std::string(c.font_name) + "_" + c.script + "_" + std::to_string(static_cast<int>(c.size)) + "px_" + mode;
   return n;
 }
 
@@ -65,8 +66,8 @@ Rendered render_case(const Case& c, AntiAliasing aa) {
   // 16x supersampling below 48 px, 4x above: FreeType's chord and 1/64 px
   // rounding errors shrink by that factor.
   const int supersample = c.size < 48 ? 16 : 4;
-  r.reference = test::freetype_reference(line_outline(font, layout.line), layout.placement, layout.width,
-                                         layout.height, supersample);
+  r.reference = test::freetype_reference(line_outline(font, layout.line), layout.placement, layout.width, layout.height,
+                                         supersample);
   r.stats = test::compare(r.result, r.reference);
   return r;
 }
@@ -99,8 +100,8 @@ TEST_P(FullAntialiasing, MatchesExactCoverage) {
   const Case& c = GetParam();
   const Rendered r = render_case(c, AntiAliasing::Full);
   const double limit = c.size <= 16 ? 0.04 : 0.03;
-  std::printf("%-34s edge %.4f  mean %.5f  max %.3f  ink %.4f\n", case_name(c, "full").c_str(),
-              r.stats.edge_mean_abs, r.stats.mean_abs, r.stats.max_abs, r.stats.ink_ratio);
+  std::printf("%-34s edge %.4f  mean %.5f  max %.3f  ink %.4f\n", case_name(c, "full").c_str(), r.stats.edge_mean_abs,
+              r.stats.mean_abs, r.stats.max_abs, r.stats.ink_ratio);
   const bool ok = r.stats.edge_mean_abs <= limit && std::abs(r.stats.ink_ratio - 1.0) <= 0.03;
   if (!ok) test::write_comparison(case_name(c, "full"), r.result, r.reference);
   EXPECT_LE(r.stats.edge_mean_abs, limit);
@@ -205,7 +206,8 @@ TEST(DrawBatchTransform, MovingAndScalingChangeOnlyUniforms) {
   const test::Coverage b = draw({scale, 13.25, 45.5}, 220, 80);
   double worst = 0;
   for (int y = 0; y + 5 < 80; ++y)
-    for (int x = 0; x + 3 < 220; ++x) worst = std::max(worst, static_cast<double>(std::abs(a.at(x, y) - b.at(x + 3, y + 5))));
+    for (int x = 0; x + 3 < 220; ++x)
+      worst = std::max(worst, static_cast<double>(std::abs(a.at(x, y) - b.at(x + 3, y + 5))));
   EXPECT_LE(worst, 1.0 / 255 + 1e-6) << "a whole-pixel move changed pixel values";
   EXPECT_EQ(batch.vertex_count(), vertices);
 
@@ -333,13 +335,13 @@ TEST(FullAntialiasingGrowth, SharpTrianglesGetEveryPixelTheyTouch) {
     shapes.line_to(c);
     shapes.close();
   };
-  triangle({2.3, 2.6}, {40.7, 4.1}, {2.9, 3.4});     // a needle of about 1 degree
-  triangle({3.1, 9.2}, {41.4, 13.7}, {3.6, 12.8});   // about 5 degrees
-  triangle({44.2, 2.3}, {80.6, 12.9}, {47.5, 14.1}); // about 22 degrees, clockwise below
-  triangle({6.2, 18.4}, {44.9, 18.55}, {6.2, 18.7}); // a sliver 0.3 px high
-  triangle({50.3, 18.2}, {78.4, 18.2}, {50.3, 38.9}); // a right triangle
-  triangle({4.4, 24.1}, {12.5, 38.6}, {20.6, 24.3}); // an acute isosceles one
-  triangle({24.7, 38.3}, {45.1, 36.2}, {26.0, 23.4}); // a clockwise one
+  triangle({2.3, 2.6}, {40.7, 4.1}, {2.9, 3.4});       // a needle of about 1 degree
+  triangle({3.1, 9.2}, {41.4, 13.7}, {3.6, 12.8});     // about 5 degrees
+  triangle({44.2, 2.3}, {80.6, 12.9}, {47.5, 14.1});   // about 22 degrees, clockwise below
+  triangle({6.2, 18.4}, {44.9, 18.55}, {6.2, 18.7});   // a sliver 0.3 px high
+  triangle({50.3, 18.2}, {78.4, 18.2}, {50.3, 38.9});  // a right triangle
+  triangle({4.4, 24.1}, {12.5, 38.6}, {20.6, 24.3});   // an acute isosceles one
+  triangle({24.7, 38.3}, {45.1, 36.2}, {26.0, 23.4});  // a clockwise one
   const Mesh mesh = build_mesh(shapes);
   for (double scale : {1.0, 0.37, 2.6}) {
     Gpu& g = gpu();
@@ -422,8 +424,8 @@ TEST(FullAntialiasingSlivers, NearlyFlatTrianglesAddNoStrayCoverage) {
   interior.triangles = {{0, 1, 2}};
   const Outline triangle = triangle_outline(points);
   for (const auto& [mesh, name] : {std::pair{&curves, "curved"}, std::pair{&interior, "interior"}}) {
-    const double worst = worst_sliver_error(*mesh, triangle, {0.032, 0.4, 3.0}, {575.0, 267.0}, 0.0,
-                                            std::string("sliver-") + name);
+    const double worst =
+        worst_sliver_error(*mesh, triangle, {0.032, 0.4, 3.0}, {575.0, 267.0}, 0.0, std::string("sliver-") + name);
     std::printf("nearly flat %s triangles: largest pixel error %.4f\n", name, worst);
     EXPECT_LE(worst, 3.0 / 255.0) << name;
   }
@@ -438,9 +440,8 @@ TEST(FullAntialiasingSlivers, NearlyFlatTrianglesAddNoStrayCoverage) {
 // (shaders/area.frag.glsl). Pixels must match the exact
 // coverage within 3/255 at 32 and 48 px/em, convex and concave.
 TEST(FullAntialiasingSlivers, LongFlatCurvesAddNoStrayCoverage) {
-  const std::vector<Vec2> points = {{391.99999999999994, 7.9629629629629628},
-                                    {511.41666666666652, 10.75925925925926},
-                                    {754.0, 17.0}};
+  const std::vector<Vec2> points = {
+      {391.99999999999994, 7.9629629629629628}, {511.41666666666652, 10.75925925925926}, {754.0, 17.0}};
   Mesh mesh;
   mesh.points = points;
   mesh.curves = {CurvedTriangle{0, 1, 2, 1.0, true}, CurvedTriangle{2, 1, 0, 1.0, false}};

@@ -88,9 +88,7 @@ TEST(Json, SyntaxCases) {
 
 // --- Shape documents: errors ------------------------------------------------------
 
-std::string with_item(const std::string& item) {
-  return R"({"shapes": [{"contours": [[)" + item + "]]}]}";
-}
+std::string with_item(const std::string& item) { return R"({"shapes": [{"contours": [[)" + item + "]]}]}"; }
 
 TEST(ShapeJson, BadInputGivesClearErrors) {
   const std::pair<std::string, const char*> cases[] = {
@@ -107,8 +105,10 @@ TEST(ShapeJson, BadInputGivesClearErrors) {
       {with_item(R"({"line": [[0, 0], ["1", 0]]})"), "expected a number"},
       {with_item(R"({"arc": {}})"), "unknown contour item \"arc\""},
       {with_item(R"({"line": [[0,0],[1,1]], "nurbs": {}})"), "a contour item is one of"},
-      {with_item(R"({"bezier": {"points": [[0,0],[1,1],[2,0]], "weights": [0, 1, 1]}})"), "middle weight of a quadratic"},
-      {with_item(R"({"bezier": {"points": [[0,0],[1,1],[2,0],[3,0]], "weights": [1, 0, 1, 1]}})"), "weight 0 is allowed only"},
+      {with_item(R"({"bezier": {"points": [[0,0],[1,1],[2,0]], "weights": [0, 1, 1]}})"),
+       "middle weight of a quadratic"},
+      {with_item(R"({"bezier": {"points": [[0,0],[1,1],[2,0],[3,0]], "weights": [1, 0, 1, 1]}})"),
+       "weight 0 is allowed only"},
       {with_item(R"({"bezier": {"points": [[0,0],[1,1],[2,0]], "weights": [1, -0.5, 1]}})"), "must be a positive"},
       {with_item(R"({"bezier": {"points": [[0,0],[1,1],[2,0]], "weights": [1, -2, 1]}})"), "must be a positive"},
       {with_item(R"({"bezier": {"points": [[0,0],[1,1],[2,0]], "weights": [1, 1]}})"), "need as many weights"},
@@ -119,14 +119,15 @@ TEST(ShapeJson, BadInputGivesClearErrors) {
        "knot vector has 5 values; 3 control points of degree 2 need 6"},
       {with_item(R"({"nurbs": {"degree": 2, "points": [[0,0],[1,1],[2,0]], "knots": [0,0,1,0,1,1]}})"),
        "non-decreasing"},
-      {with_item(R"({"nurbs": {"degree": 2, "points": [[0,0],[1,1],[2,0]], "knots": [0,0,0,0,0,0]}})"),
-       "domain"},
+      {with_item(R"({"nurbs": {"degree": 2, "points": [[0,0],[1,1],[2,0]], "knots": [0,0,0,0,0,0]}})"), "domain"},
       {with_item(R"({"nurbs": {"degree": 1, "points": [[0,0],[1,1],[2,0],[3,3]], "knots": [0,0,0.5,0.5,1,1]}})"),
        "multiplicity 2 > degree 1"},
       {with_item(R"({"nurbs": {"degree": 2, "points": [[0,0],[1,1],[2,0]], "weights": [0, 1, 1]}})"), "weight 0"},
-      {with_item(R"({"nurbs": {"degree": 3, "points": [[0,0],[1,1],[2,0],[3,0]], "weights": [1, 0, 1, 1]}})"), "weight 0"},
+      {with_item(R"({"nurbs": {"degree": 3, "points": [[0,0],[1,1],[2,0],[3,0]], "weights": [1, 0, 1, 1]}})"),
+       "weight 0"},
       {with_item(R"({"nurbs": {"degree": 2, "points": [[0,0],[1,1],[2,0],[3,-1],[4,0]], "weights": [1, 1, 0, 1, 1],
-                     "knots": [0,0,0,1,1,2,2,2]}})"), "an end at infinity"},
+                     "knots": [0,0,0,1,1,2,2,2]}})"),
+       "an end at infinity"},
       {with_item(R"({"nurbs": {"degree": 2, "points": [[0,0],[1,1],[2,0]], "wieghts": [1, 1, 1]}})"),
        "unknown key \"wieghts\""},
   };
@@ -207,20 +208,20 @@ std::string signature(const std::vector<ShapeContour>& contours) {
 TEST(SvgPath, Cases) {
   const std::pair<const char*, const char*> cases[] = {
       {"M0 0 L10 0 L10 10 Z", "11 (10,10)"},
-      {"M0 0 10 0 10 10z", "11 (10,10)"},                      // implicit lineto after M
-      {"m1 1 l2 0 0 2 h-2 v-2 z", "1111 (1,1)"},               // relative, implicit repeats
+      {"M0 0 10 0 10 10z", "11 (10,10)"},         // implicit lineto after M
+      {"m1 1 l2 0 0 2 h-2 v-2 z", "1111 (1,1)"},  // relative, implicit repeats
       {"M0,0C1,2 3,4 5,6S9,10 11,12", "33 (11,12)"},
       {"M0 0Q1 1 2 0T4 0", "22 (4,0)"},
-      {"M.5.5L1e-3-2", "1 (0.001,-2)"},                         // compact numbers
+      {"M.5.5L1e-3-2", "1 (0.001,-2)"},  // compact numbers
       {"M0 0L1E+1 2e0", "1 (10,2)"},
-      {"M0 0A10 10 0 0 1 20 0", "22 (20,0)"},                   // half circle: two 90 degree conics
-      {"M0 0A5 5 0 0 1 20 0", "22 (20,0)"},                     // radii too small: scaled up
-      {"M0 0A0 5 0 0 1 20 0", "1 (20,0)"},                      // zero radius: a line
-      {"M0 0A5 5 0 0 1 0 0", ""},                               // same end point: omitted
-      {"M0 0a10 10 0 0010 10", "2 (10,10)"},                    // compact flags
-      {"M0 0a10 10 0 1010 10", "222 (10,10)"},                  // large arc: 270 degrees, three pieces
+      {"M0 0A10 10 0 0 1 20 0", "22 (20,0)"},   // half circle: two 90 degree conics
+      {"M0 0A5 5 0 0 1 20 0", "22 (20,0)"},     // radii too small: scaled up
+      {"M0 0A0 5 0 0 1 20 0", "1 (20,0)"},      // zero radius: a line
+      {"M0 0A5 5 0 0 1 0 0", ""},               // same end point: omitted
+      {"M0 0a10 10 0 0010 10", "2 (10,10)"},    // compact flags
+      {"M0 0a10 10 0 1010 10", "222 (10,10)"},  // large arc: 270 degrees, three pieces
       {"M0 0 L10 0 M20 20 L30 20 L30 30", "1|11 (30,30)"},
-      {"M0 0 L10 0 Z L5 5", "1|1 (5,5)"},                       // after Z: new subpath from the start
+      {"M0 0 L10 0 Z L5 5", "1|1 (5,5)"},  // after Z: new subpath from the start
       {"M 0 0", ""},
   };
   for (const auto& [d, want] : cases) {
@@ -450,8 +451,10 @@ TEST(Nurbs, CubicNonUniformWithinTheBound) {
   const double exact = bezier_vs_de_boor(cubic);
   std::size_t count = 0;
   const double d = hausdorff_to_approximation(cubic, kBoundPx, &count);
-  std::printf("cubic NURBS (non-uniform knots): Bezier pieces vs de Boor %.2e px; %zu conics, Hausdorff %.4f px "
-              "(bound %.4f px)\n", exact, count, d, kBoundPx);
+  std::printf(
+      "cubic NURBS (non-uniform knots): Bezier pieces vs de Boor %.2e px; %zu conics, Hausdorff %.4f px "
+      "(bound %.4f px)\n",
+      exact, count, d, kBoundPx);
   EXPECT_LE(exact, kExactRelative * 300);
   EXPECT_LE(d, kBoundPx + kPolylineSlackPx);
 
@@ -481,8 +484,10 @@ Outline pentagram(double r, Vec2 c = {0, 0}) {
   for (int k = 0; k < 5; ++k) {
     const double a = (90 + 144 * k) * std::numbers::pi / 180;
     const Vec2 p = c + Vec2{r * std::cos(a), r * std::sin(a)};
-    if (k == 0) o.move_to(p);
-    else o.line_to(p);
+    if (k == 0)
+      o.move_to(p);
+    else
+      o.line_to(p);
   }
   o.close();
   return o;
@@ -593,8 +598,10 @@ TEST(ShapeRender, CircleOfRadius1000WithinASixteenthPixel) {
   const test::Coverage ref = test::sampled_reference(
       [&](double x, double y) { return (x - cx) * (x - cx) + (y - cy) * (y - cy) < r * r; }, 160, 200, 16);
   const test::CoverageStats s = test::compare(cov, ref);
-  std::printf("circle r=1000 (JSON NURBS): largest radial offset %.4f px (bound %.4f); vs 16x16 sampling: edge "
-              "%.4f, max %.3f\n", worst, kBoundPx, s.edge_mean_abs, s.max_abs);
+  std::printf(
+      "circle r=1000 (JSON NURBS): largest radial offset %.4f px (bound %.4f); vs 16x16 sampling: edge "
+      "%.4f, max %.3f\n",
+      worst, kBoundPx, s.edge_mean_abs, s.max_abs);
   if (worst > kBoundPx) test::write_comparison("shape-circle-1000", cov, ref);
   EXPECT_GT(s.edge_pixels, 150u);
   EXPECT_LE(worst, kBoundPx);
@@ -655,8 +662,10 @@ TEST(ShapeRender, RotatedEllipseFromSvgArcs) {
       },
       layout.width, layout.height, 16);
   const test::CoverageStats s = test::compare(cov, ref);
-  std::printf("rotated ellipse (SVG arcs): largest mean edge offset per row %.4f px (bound %.4f); vs 16x16 "
-              "sampling: edge %.4f, max %.3f, ink %.5f\n", worst, kBoundPx, s.edge_mean_abs, s.max_abs, s.ink_ratio);
+  std::printf(
+      "rotated ellipse (SVG arcs): largest mean edge offset per row %.4f px (bound %.4f); vs 16x16 "
+      "sampling: edge %.4f, max %.3f, ink %.5f\n",
+      worst, kBoundPx, s.edge_mean_abs, s.max_abs, s.ink_ratio);
   if (worst > kBoundPx) test::write_comparison("shape-ellipse", cov, ref);
   EXPECT_LE(worst, kBoundPx);
   // 16x16 point sampling quantises coverage to 1/256 per sample row crossed.

@@ -513,7 +513,8 @@ TEST(BuildMesh, ContoursTouchingAtVertices) {
   {  // The same holes drawn as one clockwise contour around the centre.
     Outline o;
     add_polygon(o, {{0, 0}, {5, -1}, {10, 0}, {11, 5}, {10, 10}, {5, 11}, {0, 10}, {-1, 5}});
-    add_polygon(o, {{5, 5}, {5, -1}, {3, 2}, {5, 5}, {-1, 5}, {2, 7}, {5, 5}, {5, 11}, {7, 8}, {5, 5}, {11, 5}, {8, 3}});
+    add_polygon(o,
+                {{5, 5}, {5, -1}, {3, 2}, {5, 5}, {-1, 5}, {2, 7}, {5, 5}, {5, 11}, {7, 8}, {5, 5}, {11, 5}, {8, 3}});
     build_and_check(o, 120.0 - 24.0);
   }
 }
@@ -747,7 +748,8 @@ TEST(Crossing, CurvesAreSplitWhereTheyCross) {
   const Mesh square_and_circle = build_and_check(o, 100.0 + 25.0 * std::numbers::pi - segment, 1e-7);
   for (const Vec2 crossing : {Vec2{10, 5 - std::sqrt(21.0)}, Vec2{10, 5 + std::sqrt(21.0)}}) {
     double nearest = 1e300;
-    for (const Vec2 p : square_and_circle.points) nearest = std::min(nearest, std::hypot(p.x - crossing.x, p.y - crossing.y));
+    for (const Vec2 p : square_and_circle.points)
+      nearest = std::min(nearest, std::hypot(p.x - crossing.x, p.y - crossing.y));
     EXPECT_LT(nearest, 1e-12) << "crossing (" << crossing.x << ", " << crossing.y << ")";
   }
   EXPECT_LE(square_and_circle.curves.size(), 6u);  // (5; 8 before)
@@ -1059,8 +1061,8 @@ TEST(Sweep, AxisAlignedShapesWithEqualHeights) {
   Loops e;
   e.add({{0, 0}, {10, 0}, {10, 2}, {2, 2}, {2, 4}, {8, 4}, {8, 6}, {2, 6}, {2, 8}, {10, 8}, {10, 10}, {0, 10}}, false);
   Loops comb;
-  comb.add({{0, 0}, {9, 0}, {9, 5}, {8, 5}, {8, 1}, {7, 1}, {7, 5}, {6, 5}, {6, 1}, {5, 1}, {5, 5}, {4, 5},
-            {4, 1}, {3, 1}, {3, 5}, {2, 5}, {2, 1}, {1, 1}, {1, 5}, {0, 5}},
+  comb.add({{0, 0}, {9, 0}, {9, 5}, {8, 5}, {8, 1}, {7, 1}, {7, 5}, {6, 5}, {6, 1}, {5, 1},
+            {5, 5}, {4, 5}, {4, 1}, {3, 1}, {3, 5}, {2, 5}, {2, 1}, {1, 1}, {1, 5}, {0, 5}},
            false);
   Loops frame;
   frame.add(square(0, 0, 10, true), false);
@@ -1233,8 +1235,8 @@ TEST(DelaunayFlipsManifold, AgreesWithTheGeneralFlips) {
       for (int k = 0; k < 3; ++k) opposite[{t[k], t[(k + 1) % 3]}] = t[(k + 2) % 3];
     for (const auto& [edge, c] : opposite) {
       const auto other = opposite.find({edge.second, edge.first});
-      if (other == opposite.end() || std::binary_search(constrained.begin(), constrained.end(),
-                                                        detail::edge_key(edge.first, edge.second)))
+      if (other == opposite.end() ||
+          std::binary_search(constrained.begin(), constrained.end(), detail::edge_key(edge.first, edge.second)))
         continue;
       EXPECT_LE(detail::incircle_sign(loops.points[edge.first], loops.points[edge.second], loops.points[c],
                                       loops.points[other->second]),

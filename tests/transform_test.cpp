@@ -47,7 +47,8 @@ Result render(const char* font_path, const char* text, double size, const Transf
   Placement untransformed = layout.placement;
   untransformed.transform = Transform{};
   const Outline pixels = test::place_outline(test::line_outline(font, layout.line), untransformed);
-  r.reference = test::union_coverage(transform_outline(pixels, layout.placement.transform), layout.width, layout.height);
+  r.reference =
+      test::union_coverage(transform_outline(pixels, layout.placement.transform), layout.width, layout.height);
   r.stats = test::compare(r.result, r.reference);
   return r;
 }
@@ -83,9 +84,11 @@ TEST(Perspective, TiltedPlaneMatchesExactCoverage) {
 }
 
 TEST(AffineMaps, NonUniformScaleAndSkew) {
-  const Result scaled = render(test::kNotoSans, "Hamburgefontsiv", 24.0, Transform::scale(2.0, 0.75), AntiAliasing::Full);
+  const Result scaled =
+      render(test::kNotoSans, "Hamburgefontsiv", 24.0, Transform::scale(2.0, 0.75), AntiAliasing::Full);
   expect_close("scale2x0.75_Noto_24px", scaled, 0.015, 0.02);
-  const Result skewed = render(test::kNotoSans, "Hamburgefontsiv", 24.0, Transform::skew(-15.0, 5.0), AntiAliasing::Full);
+  const Result skewed =
+      render(test::kNotoSans, "Hamburgefontsiv", 24.0, Transform::skew(-15.0, 5.0), AntiAliasing::Full);
   expect_close("skew-15,5_Noto_24px", skewed, 0.015, 0.02);
 }
 
@@ -107,7 +110,8 @@ TEST(Vbaa, SmallTextMatchesExactCoverage) {
       expect_close("vbaa_" + std::to_string(static_cast<int>(size)) + "px", r, 0.02, 0.03);
     }
   }
-  const Result rotated = render(test::kDejaVuSans, "Hamburgefontsiv", 12.0, Transform::rotation(30.0), AntiAliasing::Vbaa);
+  const Result rotated =
+      render(test::kDejaVuSans, "Hamburgefontsiv", 12.0, Transform::rotation(30.0), AntiAliasing::Vbaa);
   expect_close("vbaa_rotate30_12px", rotated, 0.02, 0.03);
 }
 
@@ -166,7 +170,8 @@ TEST(Vbaa, ColumnsPast1024PxAreKept) {
 TEST(Msaa, SamplesGiveRightInk) {
   if (gpu().renderer.msaa_samples() < 2) GTEST_SKIP() << "no multisampled renderbuffers";
   const Result r = render(test::kDejaVuSans, "Hamburgefontsiv", 24.0, Transform{}, AntiAliasing::Msaa);
-  std::printf("msaa x%d 24px edge %.4f ink %.4f\n", gpu().renderer.msaa_samples(), r.stats.edge_mean_abs, r.stats.ink_ratio);
+  std::printf("msaa x%d 24px edge %.4f ink %.4f\n", gpu().renderer.msaa_samples(), r.stats.edge_mean_abs,
+              r.stats.ink_ratio);
   EXPECT_LE(r.stats.edge_mean_abs, 0.08);
   EXPECT_NEAR(r.stats.ink_ratio, 1.0, 0.03);
 }

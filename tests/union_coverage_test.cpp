@@ -57,7 +57,8 @@ double total(const test::Coverage& c) {
 
 double max_difference(const test::Coverage& a, const test::Coverage& b) {
   double m = 0;
-  for (std::size_t i = 0; i < a.value.size(); ++i) m = std::max(m, std::abs(static_cast<double>(a.value[i]) - b.value[i]));
+  for (std::size_t i = 0; i < a.value.size(); ++i)
+    m = std::max(m, std::abs(static_cast<double>(a.value[i]) - b.value[i]));
   return m;
 }
 
@@ -65,7 +66,8 @@ TEST(UnionCoverage, SquareAtAFractionalPositionIsExactPerPixel) {
   const double x0 = 2.3, y0 = 3.7, x1 = 12.3, y1 = 13.7;
   const test::Coverage c = test::union_coverage(rectangle(x0, y0, x1, y1), 16, 16);
   for (int y = 0; y < 16; ++y)
-    for (int x = 0; x < 16; ++x) EXPECT_NEAR(c.at(x, y), box_in_pixel(x0, y0, x1, y1, x, y), kRoundingTolerance) << x << "," << y;
+    for (int x = 0; x < 16; ++x)
+      EXPECT_NEAR(c.at(x, y), box_in_pixel(x0, y0, x1, y1, x, y), kRoundingTolerance) << x << "," << y;
   EXPECT_NEAR(total(c), 100.0, 1e-4);
 }
 
@@ -82,7 +84,9 @@ TEST(UnionCoverage, SlantedTriangleMatchesItsArea) {
   EXPECT_NEAR(total(c), area, 1e-4);
   const test::Coverage sampled = test::sampled_reference(
       [](double x, double y) {
-        auto side = [&](double ax, double ay, double bx, double by) { return (bx - ax) * (y - ay) - (by - ay) * (x - ax); };
+        auto side = [&](double ax, double ay, double bx, double by) {
+          return (bx - ax) * (y - ay) - (by - ay) * (x - ax);
+        };
         const double s1 = side(1.2, 1.7, 17.9, 5.3), s2 = side(17.9, 5.3, 6.4, 18.8), s3 = side(6.4, 18.8, 1.2, 1.7);
         return (s1 > 0 && s2 > 0 && s3 > 0) || (s1 < 0 && s2 < 0 && s3 < 0);
       },
@@ -166,16 +170,20 @@ TEST(UnionCoverage, SelfIntersectingStarFillsItsCentre) {
   for (int k = 0; k < 5; ++k) {
     const double t = std::numbers::pi / 2 + k * 4 * std::numbers::pi / 5;
     const Vec2 p{cx + R * std::cos(t), cy + R * std::sin(t)};
-    if (k == 0) star.move_to(p);
-    else star.line_to(p);
+    if (k == 0)
+      star.move_to(p);
+    else
+      star.line_to(p);
   }
   star.close();
   for (int k = 0; k < 10; ++k) {
     const double t = std::numbers::pi / 2 + k * std::numbers::pi / 5;
     const double rr = k % 2 ? r : R;
     const Vec2 p{cx + rr * std::cos(t), cy + rr * std::sin(t)};
-    if (k == 0) decagon.move_to(p);
-    else decagon.line_to(p);
+    if (k == 0)
+      decagon.move_to(p);
+    else
+      decagon.line_to(p);
   }
   decagon.close();
   const test::Coverage a = test::union_coverage(star, 40, 40), b = test::union_coverage(decagon, 40, 40);
@@ -210,8 +218,8 @@ TEST(UnionCoverage, HorizontalStepPastAnotherContourInsideARow) {
   l.close();
   const test::Coverage c = test::union_coverage(join(l, rectangle(6, 3.2, 8, 8.7)), 12, 12);
   EXPECT_NEAR(total(c), 73.0 + 11.0 - 4.6, 1e-4);
-  EXPECT_NEAR(c.at(7, 5), 1.0, kRoundingTolerance);   // L above 5.5, the square below
-  EXPECT_NEAR(c.at(9, 5), 0.5, kRoundingTolerance);   // only the L, above 5.5
+  EXPECT_NEAR(c.at(7, 5), 1.0, kRoundingTolerance);  // L above 5.5, the square below
+  EXPECT_NEAR(c.at(9, 5), 0.5, kRoundingTolerance);  // only the L, above 5.5
   EXPECT_NEAR(c.at(5, 5), 0.5, kRoundingTolerance);
   EXPECT_NEAR(c.at(5, 7), 0.0, kRoundingTolerance);
   EXPECT_NEAR(c.at(3, 7), 1.0, kRoundingTolerance);

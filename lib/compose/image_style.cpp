@@ -45,7 +45,8 @@ ImageFrame transform_frame(double w, double h, const Transform& transform) {
     const double cw = t.w(c) / t.m[8];
     if (!(cw > tolerance::kMinPerspectiveW))
       throw Error(ErrorCode::InvalidArgument,
-                  "the transform puts part of the image behind the viewer (use a smaller perspective angle or a larger distance)");
+                  "the transform puts part of the image behind the viewer (use a smaller perspective angle or a larger "
+                  "distance)");
     box.add(t.apply(c));
     stretch = std::max(stretch, t.largest_stretch(c));
   }
@@ -53,8 +54,8 @@ ImageFrame transform_frame(double w, double h, const Transform& transform) {
   constexpr double kSlack = 1e-7;
   const double tw = std::ceil(box.max.x - box.min.x - kSlack), th = std::ceil(box.max.y - box.min.y - kSlack);
   if (!(tw >= 1.0 && th >= 1.0) || tw > tolerance::kMaxImageSidePx || th > tolerance::kMaxImageSidePx)
-    throw Error(ErrorCode::InvalidArgument, "the transformed image would be " + detail::format_number(tw) + "x" + detail::format_number(th) +
-                                                " px; the largest side allowed is " +
+    throw Error(ErrorCode::InvalidArgument, "the transformed image would be " + detail::format_number(tw) + "x" +
+                                                detail::format_number(th) + " px; the largest side allowed is " +
                                                 std::to_string(static_cast<int>(tolerance::kMaxImageSidePx)));
   frame.width = static_cast<int>(tw);
   frame.height = static_cast<int>(th);

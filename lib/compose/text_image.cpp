@@ -13,9 +13,11 @@ namespace curvetext {
 
 TextImageLayout layout_text_image(const Font& font, std::string_view text, const TextImageOptions& options) {
   if (!std::isfinite(options.size_px) || options.size_px <= 0.0)
-    throw Error(ErrorCode::InvalidArgument, "size must be a positive number of pixels, got " + detail::format_number(options.size_px));
+    throw Error(ErrorCode::InvalidArgument,
+                "size must be a positive number of pixels, got " + detail::format_number(options.size_px));
   if (options.size_px > tolerance::kMaxPixelsPerEm)
-    throw Error(ErrorCode::InvalidArgument, "size " + detail::format_number(options.size_px) + " px is above the limit of " +
+    throw Error(ErrorCode::InvalidArgument, "size " + detail::format_number(options.size_px) +
+                                                " px is above the limit of " +
                                                 detail::format_number(tolerance::kMaxPixelsPerEm) + " px");
   if (!std::isfinite(options.margin_px) || options.margin_px < 0.0 || options.margin_px > tolerance::kMaxImageSidePx)
     throw Error(ErrorCode::InvalidArgument, "margin must be between 0 and the largest image side");

@@ -73,18 +73,17 @@ double Transform::smallest_stretch(Vec2 p) const {
 void Transform::validate() const {
   double largest = 0.0;
   for (double v : m) {
-    if (!std::isfinite(v))
-      throw Error(ErrorCode::InvalidArgument, "the transform has a NaN or infinite entry");
+    if (!std::isfinite(v)) throw Error(ErrorCode::InvalidArgument, "the transform has a NaN or infinite entry");
     largest = std::max(largest, std::abs(v));
   }
-  if (largest > tolerance::kMaxTransformEntry)
-  {
+  if (largest > tolerance::kMaxTransformEntry) {
     char buf[96];
-    std::snprintf(buf, sizeof buf, "a transform entry is %g, above the limit of %g", largest, tolerance::kMaxTransformEntry);
+    std::snprintf(buf, sizeof buf, "a transform entry is %g, above the limit of %g", largest,
+                  tolerance::kMaxTransformEntry);
     throw Error(ErrorCode::InvalidArgument, buf);
   }
-  const double det = m[0] * (m[4] * m[8] - m[5] * m[7]) - m[1] * (m[3] * m[8] - m[5] * m[6]) +
-                     m[2] * (m[3] * m[7] - m[4] * m[6]);
+  const double det =
+      m[0] * (m[4] * m[8] - m[5] * m[7]) - m[1] * (m[3] * m[8] - m[5] * m[6]) + m[2] * (m[3] * m[7] - m[4] * m[6]);
   if (std::abs(det) <= tolerance::kMinTransformDeterminant * largest * largest * largest)
     throw Error(ErrorCode::InvalidArgument, "the transform is singular (it flattens the text to a line or a point)");
 }

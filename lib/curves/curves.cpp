@@ -17,8 +17,7 @@ Vec2 evaluate(const Segment& s, double t) {
       return (s.p[0] * b0 + s.p[1] * b1 + s.p[2] * b2) / (b0 + b1 + b2);
     }
     case Segment::Kind::Cubic:
-      return s.p[0] * (u * u * u) + s.p[1] * (3 * u * u * t) + s.p[2] * (3 * u * t * t) +
-             s.p[3] * (t * t * t);
+      return s.p[0] * (u * u * u) + s.p[1] * (3 * u * u * t) + s.p[2] * (3 * u * t * t) + s.p[3] * (t * t * t);
   }
   return s.p[0];
 }
@@ -64,8 +63,7 @@ std::pair<Segment, Segment> split(const Segment& s, double t) {
       const double rw = (1.0 - t) * q0w + t * q1w;
       const Vec2 mid = r / rw;
       const double root = std::sqrt(rw);
-      return {Segment::conic(s.p[0], q0 / q0w, mid, q0w / root),
-              Segment::conic(mid, q1 / q1w, s.p[2], q1w / root)};
+      return {Segment::conic(s.p[0], q0 / q0w, mid, q0w / root), Segment::conic(mid, q1 / q1w, s.p[2], q1w / root)};
     }
     case Segment::Kind::Cubic: {
       Vec2 head[4], tail[4];

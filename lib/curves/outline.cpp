@@ -36,9 +36,12 @@ Segment Segment::cubic(Vec2 a, Vec2 c1, Vec2 c2, Vec2 b) {
 
 Vec2 Segment::end() const {
   switch (kind) {
-    case Kind::Line: return p[1];
-    case Kind::Conic: return p[2];
-    case Kind::Cubic: return p[3];
+    case Kind::Line:
+      return p[1];
+    case Kind::Conic:
+      return p[2];
+    case Kind::Cubic:
+      return p[3];
   }
   return p[1];
 }
@@ -137,9 +140,12 @@ bool Outline::has_cubics() const {
 
 static int point_count(const Segment& s) {
   switch (s.kind) {
-    case Segment::Kind::Line: return 2;
-    case Segment::Kind::Conic: return 3;
-    case Segment::Kind::Cubic: return 4;
+    case Segment::Kind::Line:
+      return 2;
+    case Segment::Kind::Conic:
+      return 3;
+    case Segment::Kind::Cubic:
+      return 4;
   }
   return 2;
 }

@@ -40,8 +40,7 @@ std::string ft_error_text(FT_Error error) {
 FontBytes read_file(const std::string& path) {
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(status))
-    throw Error(ErrorCode::FontNotFound, "font file not found: " + path);
+  if (ec || !std::filesystem::exists(status)) throw Error(ErrorCode::FontNotFound, "font file not found: " + path);
   if (!std::filesystem::is_regular_file(status))
     throw Error(ErrorCode::FontNotFound, "font path is not a regular file: " + path);
 
@@ -205,11 +204,12 @@ std::vector<Variation> parse_variations(std::string_view text) {
     quoted.append(item).push_back('\'');
     const std::size_t eq = item.find('=');
     if (item.empty() || eq == std::string_view::npos)
-      throw Error(ErrorCode::InvalidArgument, "bad variation " + quoted + " in '" + std::string(text) +
-                                                  "': expected tag=value, e.g. wght=700");
+      throw Error(ErrorCode::InvalidArgument,
+                  "bad variation " + quoted + " in '" + std::string(text) + "': expected tag=value, e.g. wght=700");
     const std::string tag = normalise_tag(trim(item.substr(0, eq)));
     if (tag.empty())
-      throw Error(ErrorCode::InvalidArgument, "bad variation axis tag in " + quoted + ": expected 1-4 ASCII characters");
+      throw Error(ErrorCode::InvalidArgument,
+                  "bad variation axis tag in " + quoted + ": expected 1-4 ASCII characters");
     const std::string_view number = trim(item.substr(eq + 1));
     double value = 0.0;
     const auto [end, ec] = std::from_chars(number.data(), number.data() + number.size(), value);
@@ -250,8 +250,8 @@ Font Font::open(const std::string& path, int face_index) {
   FT_Face face = nullptr;
   if (FT_Error error = FT_New_Memory_Face(impl->library_owner.get(), impl->bytes->data(),
                                           static_cast<FT_Long>(impl->bytes->size()), face_index, &face))
-    throw Error(ErrorCode::FontInvalid, "cannot open face " + std::to_string(face_index) + " (" + ft_error_text(error) +
-                                            "): " + path);
+    throw Error(ErrorCode::FontInvalid,
+                "cannot open face " + std::to_string(face_index) + " (" + ft_error_text(error) + "): " + path);
   impl->face_owner.reset(face);
   impl->ft_face = face;
   // HarfBuzz only reads sfnt containers (TrueType/OpenType/collections); a
@@ -345,8 +345,8 @@ void Font::set_variations(const std::vector<Variation>& variations) {
     std::lock_guard<std::mutex> lock(im.ft_mutex);
     // FreeType applies avar itself to design coordinates, as HarfBuzz does in
     // hb_font_set_variations, so both see the same normalised position.
-    if (FT_Error error = FT_Set_Var_Design_Coordinates(im.ft_face, static_cast<FT_UInt>(coordinates.size()),
-                                                       coordinates.data()))
+    if (FT_Error error =
+            FT_Set_Var_Design_Coordinates(im.ft_face, static_cast<FT_UInt>(coordinates.size()), coordinates.data()))
       throw Error(ErrorCode::FontInvalid, "cannot set variations (" + ft_error_text(error) + "): " + im.path);
     // Changing the instance may reset size objects (MVAR); re-assert the scale.
     set_unit_scale(im);
@@ -502,8 +502,8 @@ void Font::glyph_outline(std::uint32_t glyph_id, Outline& outline) const {
 
   std::lock_guard<std::mutex> lock(im.ft_mutex);
   if (FT_Error error = FT_Load_Glyph(im.ft_face, glyph_id, FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP))
-    throw Error(ErrorCode::FontInvalid, "cannot load glyph " + std::to_string(glyph_id) + " (" + ft_error_text(error) +
-                                            "): " + im.path);
+    throw Error(ErrorCode::FontInvalid,
+                "cannot load glyph " + std::to_string(glyph_id) + " (" + ft_error_text(error) + "): " + im.path);
   const FT_GlyphSlot slot = im.ft_face->glyph;
   if (slot->format != FT_GLYPH_FORMAT_OUTLINE)
     throw Error(ErrorCode::FontInvalid, "glyph " + std::to_string(glyph_id) + " has no outline: " + im.path);
@@ -522,8 +522,8 @@ void Font::glyph_outline(std::uint32_t glyph_id, Outline& outline) const {
   funcs.shift = 0;
   funcs.delta = 0;
   if (FT_Error error = FT_Outline_Decompose(&slot->outline, &funcs, &state))
-    throw Error(ErrorCode::FontInvalid, "cannot decompose glyph " + std::to_string(glyph_id) + " (" +
-                                            ft_error_text(error) + "): " + im.path);
+    throw Error(ErrorCode::FontInvalid,
+                "cannot decompose glyph " + std::to_string(glyph_id) + " (" + ft_error_text(error) + "): " + im.path);
   outline.close();
 }
 

@@ -11,8 +11,7 @@
 
 namespace curvetext {
 
-GlyphCache::Impl::Packed GlyphCache::Impl::get(const Font& font, std::uint32_t glyph_id,
-                                                 double pixels_per_em) {
+GlyphCache::Impl::Packed GlyphCache::Impl::get(const Font& font, std::uint32_t glyph_id, double pixels_per_em) {
   const int upem = font.metrics().units_per_em;
   if (!(pixels_per_em > 0) || !std::isfinite(pixels_per_em) || upem <= 0) {
     throw Error(ErrorCode::InvalidArgument, "glyph size must be a positive number of pixels per em");
@@ -114,8 +113,8 @@ std::unique_ptr<DrawBatch::Impl> upload(PackedMesh packed, IndexUpload how) {
     throw Error(ErrorCode::InvalidArgument, "16-bit indices cannot reach past 65,536 vertices");
   if (how == IndexUpload::Auto)
     how = packed.vertices.size() <= kMaxShortIndexedVertices ? IndexUpload::Bits16
-          : has_32bit_indices()                 ? IndexUpload::Bits32
-                                                : IndexUpload::Arrays;
+          : has_32bit_indices()                              ? IndexUpload::Bits32
+                                                             : IndexUpload::Arrays;
   if (how == IndexUpload::Arrays) {
     std::vector<Vertex> expanded;
     expanded.reserve(packed.indices.size());
@@ -140,8 +139,7 @@ std::unique_ptr<DrawBatch::Impl> upload(PackedMesh packed, IndexUpload how) {
 
 }  // namespace gpu
 
-DrawBatch DrawBatch::from_text(GlyphCache& cache, const Font& font, const ShapedLine& line,
-                               double pixels_per_em) {
+DrawBatch DrawBatch::from_text(GlyphCache& cache, const Font& font, const ShapedLine& line, double pixels_per_em) {
   gpu::PackedMesh packed;
   double pen_x = 0.0, pen_y = 0.0;
   for (const ShapedGlyph& g : line.glyphs) {
@@ -163,7 +161,9 @@ DrawBatch::~DrawBatch() = default;
 std::size_t DrawBatch::vertex_count() const { return impl_ ? impl_->vertex_count : 0; }
 std::size_t DrawBatch::gpu_bytes() const {
   if (!impl_) return 0;
-  const std::size_t index_bytes = impl_->index_type == GL_UNSIGNED_SHORT ? 2 : impl_->index_type == GL_UNSIGNED_INT ? 4 : 0;
+  const std::size_t index_bytes = impl_->index_type == GL_UNSIGNED_SHORT ? 2
+                                  : impl_->index_type == GL_UNSIGNED_INT ? 4
+                                                                         : 0;
   return impl_->vertex_count * sizeof(gpu::Vertex) + impl_->index_count * index_bytes;
 }
 

@@ -20,8 +20,8 @@ struct DrawBatch::Impl {
   std::size_t vertex_count = 0;
   std::size_t index_count = 0;  // with index_type 0: vertex_count (3 per triangle)
   GLenum index_type = 0;        // GL_UNSIGNED_SHORT, GL_UNSIGNED_INT, or 0: no index buffer
-  Box bounds;  // of the vertices' base positions (outline units; growth offsets not included)
-  std::uint64_t serial = 0;  // unique per upload: the vbaa pass is reused while it and the transform match
+  Box bounds;                   // of the vertices' base positions (outline units; growth offsets not included)
+  std::uint64_t serial = 0;     // unique per upload: the vbaa pass is reused while it and the transform match
 
   Impl() = default;
   Impl(const Impl&) = delete;

@@ -43,8 +43,8 @@ float parse_vbaa_filter(std::string_view text) {
   double v = 0.0;
   const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
   if (ec != std::errc() || ptr != text.data() + text.size() || !std::isfinite(v) || v < 0.0 || v > 1.0)
-    throw Error(ErrorCode::InvalidArgument, "unknown vbaa filter '" + std::string(text) +
-                                                "' (use box, paper, or a ring weight from 0 to 1)");
+    throw Error(ErrorCode::InvalidArgument,
+                "unknown vbaa filter '" + std::string(text) + "' (use box, paper, or a ring weight from 0 to 1)");
   return static_cast<float>(v);
 }
 
@@ -60,8 +60,7 @@ void check_coverage_gamma(double gamma, std::string_view what) {
 CurveMode parse_curve_mode(std::string_view text) {
   if (text == "exact") return CurveMode::Exact;
   if (text == "paper") return CurveMode::Paper;
-  throw Error(ErrorCode::InvalidArgument,
-              "unknown curve mode '" + std::string(text) + "' (use exact or paper)");
+  throw Error(ErrorCode::InvalidArgument, "unknown curve mode '" + std::string(text) + "' (use exact or paper)");
 }
 
 namespace {
@@ -106,7 +105,8 @@ void compile(const Shader& shader, GLenum type, const char* source, bool gles) {
   // Tolerances the shaders share with the library (tolerances.hpp), named
   // there only; preprocessor lines may precede #extension.
   char defines[160];
-  std::snprintf(defines, sizeof defines, "#define CURVETEXT_PIXEL_REACH_PX %.7f\n#define CURVETEXT_THIN_TRIANGLE_PX %.9f\n",
+  std::snprintf(defines, sizeof defines,
+                "#define CURVETEXT_PIXEL_REACH_PX %.7f\n#define CURVETEXT_THIN_TRIANGLE_PX %.9f\n",
                 static_cast<double>(tolerance::kFringeWidthPx), static_cast<double>(tolerance::kThinTrianglePx));
   text += defines;
   // #extension must precede other statements but follow #version; on desktop
@@ -124,8 +124,8 @@ void compile(const Shader& shader, GLenum type, const char* source, bool gles) {
     glGetShaderInfoLog(shader.id, len, nullptr, log.data());
     log.resize(std::strlen(log.c_str()));
     std::replace(log.begin(), log.end(), '\n', ' ');
-    throw Error(ErrorCode::Gl, std::string(type == GL_VERTEX_SHADER ? "vertex" : "fragment") +
-                                   " shader failed to compile: " + log);
+    throw Error(ErrorCode::Gl,
+                std::string(type == GL_VERTEX_SHADER ? "vertex" : "fragment") + " shader failed to compile: " + log);
   }
 }
 
@@ -156,12 +156,8 @@ GLuint link_program(const Shader& vs, const Shader& fs, std::initializer_list<co
 }
 
 // sRGB transfer functions (IEC 61966-2-1), on values in [0, 1].
-float srgb_to_linear(float c) {
-  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
-float linear_to_srgb(float c) {
-  return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-}
+float srgb_to_linear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
+float linear_to_srgb(float c) { return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f; }
 
 // `c` premultiplied, in the space the framebuffer blends in.
 std::array<float, 4> premultiplied(const Color& c, Blending blending) {
@@ -209,8 +205,8 @@ struct Renderer::Impl {
 
   // vbaa / msaa: the second pass's program and offscreen targets.
   GLuint resolve_program = 0;
-  GLint u_r_texture = -1, u_r_texture_size = -1, u_r_rect_origin = -1, u_r_r = -1,
-        u_r_ring = -1, u_r_color = -1, u_r_coverage_exponent = -1;
+  GLint u_r_texture = -1, u_r_texture_size = -1, u_r_rect_origin = -1, u_r_r = -1, u_r_ring = -1, u_r_color = -1,
+        u_r_coverage_exponent = -1;
   GLuint quad_vbo = 0;
   GLuint off_fbo = 0, off_tex = 0;
   int off_w = 0, off_h = 0;
@@ -370,9 +366,9 @@ void Renderer::begin(int width, int height, Color background, Blending blending)
   int limit = std::min({max_texture, max_renderbuffer, max_viewport[0], max_viewport[1]});
   limit = std::min(limit, static_cast<int>(tolerance::kMaxImageSidePx));
   if (width > limit || height > limit) {
-    throw Error(ErrorCode::InvalidArgument, "image size " + std::to_string(width) + "x" +
-                                                std::to_string(height) + " exceeds the GL maximum of " +
-                                                std::to_string(limit) + " pixels per side");
+    throw Error(ErrorCode::InvalidArgument, "image size " + std::to_string(width) + "x" + std::to_string(height) +
+                                                " exceeds the GL maximum of " + std::to_string(limit) +
+                                                " pixels per side");
   }
   if (r.framebuffer == 0 || r.width != width || r.height != height || r.blending != blending) {
     r.release_target();
@@ -409,8 +405,10 @@ void Renderer::begin(int width, int height, Color background, Blending blending)
   }
   if (!r.gles) {
     constexpr GLenum kFramebufferSrgb = 0x8DB9;  // GL_FRAMEBUFFER_SRGB (desktop GL only)
-    if (blending == Blending::Linear) glEnable(kFramebufferSrgb);
-    else glDisable(kFramebufferSrgb);
+    if (blending == Blending::Linear)
+      glEnable(kFramebufferSrgb);
+    else
+      glDisable(kFramebufferSrgb);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, r.framebuffer);
   glViewport(0, 0, width, height);
@@ -492,7 +490,8 @@ void bind_vertices(const DrawBatch::Impl& b) {
   const GLsizei stride = static_cast<GLsizei>(sizeof(gpu::Vertex));
   for (GLuint i = 0; i < gpu::kVertexAttributes; ++i) {
     glEnableVertexAttribArray(i);
-    glVertexAttribPointer(i, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(static_cast<std::uintptr_t>(i) * 16u));
+    glVertexAttribPointer(i, 4, GL_FLOAT, GL_FALSE, stride,
+                          reinterpret_cast<const void*>(static_cast<std::uintptr_t>(i) * 16u));
   }
 }
 
@@ -534,8 +533,10 @@ void Renderer::draw_area(const DrawBatch::Impl& b, const Transform& full, float 
   glUniform1f(r.area_u.coverage_exponent, coverage_exponent(gamma));
   glUniform1i(r.area_u.curve_mode, curve_mode == CurveMode::Paper ? 1 : 0);
   glEnable(GL_BLEND);
-  if (accumulate) glBlendFunc(GL_ONE, GL_ONE);
-  else glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  if (accumulate)
+    glBlendFunc(GL_ONE, GL_ONE);
+  else
+    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   draw_triangles(b);
 }
 
@@ -567,8 +568,8 @@ int Renderer::msaa_samples() const { return impl_->max_samples; }
 // kept and reused while the batch, its transform, the box and the mode stay
 // the same. False when it cannot be done here (the caller blends the areas
 // directly).
-bool Renderer::draw_offscreen(const DrawBatch::Impl& b, const Transform& full, float vw, float vh,
-                              GLuint target_fbo, const DrawOptions& options) {
+bool Renderer::draw_offscreen(const DrawBatch::Impl& b, const Transform& full, float vw, float vh, GLuint target_fbo,
+                              const DrawOptions& options) {
   Impl& r = *impl_;
   const bool msaa = options.antialiasing == AntiAliasing::Msaa && r.max_samples >= 2;
   const bool vbaa = options.antialiasing == AntiAliasing::Vbaa;
@@ -577,7 +578,8 @@ bool Renderer::draw_offscreen(const DrawBatch::Impl& b, const Transform& full, f
   // sets convex, so the corners' box holds the block), plus a border for
   // the triangles' growth and the filter's ring.
   Box box;
-  const Vec2 corners[4] = {b.bounds.min, {b.bounds.max.x, b.bounds.min.y}, {b.bounds.min.x, b.bounds.max.y}, b.bounds.max};
+  const Vec2 corners[4] = {
+      b.bounds.min, {b.bounds.max.x, b.bounds.min.y}, {b.bounds.min.x, b.bounds.max.y}, b.bounds.max};
   for (Vec2 c : corners) {
     if (!(full.w(c) > 0.0)) return false;
     box.add(full.apply(c));
@@ -663,7 +665,10 @@ bool Renderer::draw_offscreen(const DrawBatch::Impl& b, const Transform& full, f
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   glBindTexture(GL_TEXTURE_2D, 0);
   if (GLenum err = glGetError(); err != GL_NO_ERROR) {
-    throw Error(ErrorCode::Gl, std::string(msaa ? "msaa" : vbaa ? "vbaa" : "full antialiasing") + " pass failed (GL error " + hex(err) + ")");
+    throw Error(ErrorCode::Gl, std::string(msaa   ? "msaa"
+                                           : vbaa ? "vbaa"
+                                                  : "full antialiasing") +
+                                   " pass failed (GL error " + hex(err) + ")");
   }
   return true;
 }
@@ -710,7 +715,8 @@ Image Renderer::read_pixels() {
         // alpha: decode, divide by alpha, encode.
         for (std::size_t k = 0; k < 3; ++k) {
           const float lin = srgb_to_linear(src[i + k] / 255.0f) * 255.0f / static_cast<float>(a);
-          dst[i + k] = static_cast<std::uint8_t>(std::lround(std::clamp(linear_to_srgb(std::min(lin, 1.0f)), 0.0f, 1.0f) * 255.0f));
+          dst[i + k] = static_cast<std::uint8_t>(
+              std::lround(std::clamp(linear_to_srgb(std::min(lin, 1.0f)), 0.0f, 1.0f) * 255.0f));
         }
         dst[i + 3] = static_cast<std::uint8_t>(a);
         continue;

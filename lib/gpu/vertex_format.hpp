@@ -76,9 +76,7 @@ struct PackedMesh {
     return vertices.size() * sizeof(Vertex) + indices.size() * (vertices.size() <= kMaxShortIndexedVertices ? 2 : 4);
   }
   // Bytes this object holds in CPU memory (the glyph cache's budget).
-  std::size_t memory_bytes() const {
-    return vertices.size() * sizeof(Vertex) + indices.size() * sizeof(std::uint32_t);
-  }
+  std::size_t memory_bytes() const { return vertices.size() * sizeof(Vertex) + indices.size() * sizeof(std::uint32_t); }
 };
 
 // Appends the packed triangles (interior and curved) of `mesh`.

@@ -23,22 +23,38 @@ namespace {
 
 const char* egl_error_name(EGLint e) {
   switch (e) {
-    case EGL_SUCCESS: return "EGL_SUCCESS";
-    case EGL_NOT_INITIALIZED: return "EGL_NOT_INITIALIZED";
-    case EGL_BAD_ACCESS: return "EGL_BAD_ACCESS";
-    case EGL_BAD_ALLOC: return "EGL_BAD_ALLOC";
-    case EGL_BAD_ATTRIBUTE: return "EGL_BAD_ATTRIBUTE";
-    case EGL_BAD_CONTEXT: return "EGL_BAD_CONTEXT";
-    case EGL_BAD_CONFIG: return "EGL_BAD_CONFIG";
-    case EGL_BAD_CURRENT_SURFACE: return "EGL_BAD_CURRENT_SURFACE";
-    case EGL_BAD_DISPLAY: return "EGL_BAD_DISPLAY";
-    case EGL_BAD_SURFACE: return "EGL_BAD_SURFACE";
-    case EGL_BAD_MATCH: return "EGL_BAD_MATCH";
-    case EGL_BAD_PARAMETER: return "EGL_BAD_PARAMETER";
-    case EGL_BAD_NATIVE_PIXMAP: return "EGL_BAD_NATIVE_PIXMAP";
-    case EGL_BAD_NATIVE_WINDOW: return "EGL_BAD_NATIVE_WINDOW";
-    case EGL_CONTEXT_LOST: return "EGL_CONTEXT_LOST";
-    default: return "unknown EGL error";
+    case EGL_SUCCESS:
+      return "EGL_SUCCESS";
+    case EGL_NOT_INITIALIZED:
+      return "EGL_NOT_INITIALIZED";
+    case EGL_BAD_ACCESS:
+      return "EGL_BAD_ACCESS";
+    case EGL_BAD_ALLOC:
+      return "EGL_BAD_ALLOC";
+    case EGL_BAD_ATTRIBUTE:
+      return "EGL_BAD_ATTRIBUTE";
+    case EGL_BAD_CONTEXT:
+      return "EGL_BAD_CONTEXT";
+    case EGL_BAD_CONFIG:
+      return "EGL_BAD_CONFIG";
+    case EGL_BAD_CURRENT_SURFACE:
+      return "EGL_BAD_CURRENT_SURFACE";
+    case EGL_BAD_DISPLAY:
+      return "EGL_BAD_DISPLAY";
+    case EGL_BAD_SURFACE:
+      return "EGL_BAD_SURFACE";
+    case EGL_BAD_MATCH:
+      return "EGL_BAD_MATCH";
+    case EGL_BAD_PARAMETER:
+      return "EGL_BAD_PARAMETER";
+    case EGL_BAD_NATIVE_PIXMAP:
+      return "EGL_BAD_NATIVE_PIXMAP";
+    case EGL_BAD_NATIVE_WINDOW:
+      return "EGL_BAD_NATIVE_WINDOW";
+    case EGL_CONTEXT_LOST:
+      return "EGL_CONTEXT_LOST";
+    default:
+      return "unknown EGL error";
   }
 }
 
@@ -73,28 +89,25 @@ EGLDisplay open_display(std::string& why) {
   // Client extensions (EGL 1.5 / EGL_EXT_client_extensions): queried with no display.
   const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
   if (client == nullptr) eglGetError();  // clear EGL_BAD_DISPLAY from old implementations
-  auto get_platform_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
-      eglGetProcAddress("eglGetPlatformDisplayEXT"));
+  auto get_platform_display =
+      reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
 
   if (get_platform_display != nullptr && has_extension(client, "EGL_MESA_platform_surfaceless")) {
-    EGLDisplay d = try_initialize(
-        get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr), why,
-        "surfaceless platform");
+    EGLDisplay d = try_initialize(get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr),
+                                  why, "surfaceless platform");
     if (d != EGL_NO_DISPLAY) return d;
   }
 
   if (get_platform_display != nullptr && has_extension(client, "EGL_EXT_platform_device")) {
-    auto query_devices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(
-        eglGetProcAddress("eglQueryDevicesEXT"));
+    auto query_devices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
     EGLint count = 0;
     if (query_devices != nullptr && query_devices(0, nullptr, &count) == EGL_TRUE && count > 0) {
       std::vector<EGLDeviceEXT> devices(static_cast<std::size_t>(count));
       if (query_devices(count, devices.data(), &count) == EGL_TRUE) {
         for (EGLint i = 0; i < count; ++i) {
           EGLDisplay d = try_initialize(
-              get_platform_display(EGL_PLATFORM_DEVICE_EXT, devices[static_cast<std::size_t>(i)],
-                                   nullptr),
-              why, "device platform");
+              get_platform_display(EGL_PLATFORM_DEVICE_EXT, devices[static_cast<std::size_t>(i)], nullptr), why,
+              "device platform");
           if (d != EGL_NO_DISPLAY) return d;
         }
       }
@@ -106,9 +119,7 @@ EGLDisplay open_display(std::string& why) {
   return try_initialize(eglGetDisplay(EGL_DEFAULT_DISPLAY), why, "default display");
 }
 
-[[noreturn]] void fail(const std::string& message) {
-  throw Error(ErrorCode::NoDevice, "no EGL display: " + message);
-}
+[[noreturn]] void fail(const std::string& message) { throw Error(ErrorCode::NoDevice, "no EGL display: " + message); }
 
 }  // namespace
 
@@ -144,15 +155,22 @@ HeadlessContext HeadlessContext::create() {
   const char* display_ext = eglQueryString(impl->display, EGL_EXTENSIONS);
   const bool surfaceless = has_extension(display_ext, "EGL_KHR_surfaceless_context");
 
-  const EGLint config_attribs[] = {
-      EGL_RENDERABLE_TYPE, EGL_OPENGL_ES2_BIT,
-      EGL_SURFACE_TYPE, surfaceless ? 0 : EGL_PBUFFER_BIT,
-      EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_ALPHA_SIZE, 8,
-      EGL_NONE};
+  const EGLint config_attribs[] = {EGL_RENDERABLE_TYPE,
+                                   EGL_OPENGL_ES2_BIT,
+                                   EGL_SURFACE_TYPE,
+                                   surfaceless ? 0 : EGL_PBUFFER_BIT,
+                                   EGL_RED_SIZE,
+                                   8,
+                                   EGL_GREEN_SIZE,
+                                   8,
+                                   EGL_BLUE_SIZE,
+                                   8,
+                                   EGL_ALPHA_SIZE,
+                                   8,
+                                   EGL_NONE};
   EGLConfig config = nullptr;
   EGLint num_configs = 0;
-  if (eglChooseConfig(impl->display, config_attribs, &config, 1, &num_configs) != EGL_TRUE ||
-      num_configs < 1) {
+  if (eglChooseConfig(impl->display, config_attribs, &config, 1, &num_configs) != EGL_TRUE || num_configs < 1) {
     fail("no GLES2 config (" + last_egl_error() + ")");
   }
 

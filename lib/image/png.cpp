@@ -21,9 +21,7 @@ using FilePtr = std::unique_ptr<std::FILE, FileCloser>;
 // png_image owns internal state once a begin_read call succeeded.
 struct PngImage {
   png_image image{};
-  PngImage() {
-    image.version = PNG_IMAGE_VERSION;
-  }
+  PngImage() { image.version = PNG_IMAGE_VERSION; }
   PngImage(const PngImage&) = delete;
   PngImage& operator=(const PngImage&) = delete;
   ~PngImage() { png_image_free(&image); }
@@ -60,8 +58,7 @@ Image read_png(const std::string& path) {
     throw Error(ErrorCode::Io, "cannot read " + path + ": image too large");
   }
   Image out(static_cast<int>(png.image.width), static_cast<int>(png.image.height));
-  if (!png_image_finish_read(&png.image, nullptr, out.rgba.data(),
-                             static_cast<png_int_32>(out.width) * 4, nullptr)) {
+  if (!png_image_finish_read(&png.image, nullptr, out.rgba.data(), static_cast<png_int_32>(out.width) * 4, nullptr)) {
     throw Error(ErrorCode::Io, "cannot read " + path + ": " + png.image.message);
   }
   return out;

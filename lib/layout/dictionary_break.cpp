@@ -32,8 +32,8 @@ ThBrk* breaker() {
 
 }  // namespace
 
-bool add_dictionary_breaks(std::u32string_view text, std::vector<BreakAction>& breaks, std::size_t from,
-                           std::size_t to, std::vector<bool>& done) {
+bool add_dictionary_breaks(std::u32string_view text, std::vector<BreakAction>& breaks, std::size_t from, std::size_t to,
+                           std::vector<bool>& done) {
   if (breaks.size() != text.size() || done.size() != text.size()) return false;
   to = std::min(to, text.size());
   // Back to the start of a run that reaches into [from, to).

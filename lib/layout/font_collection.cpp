@@ -134,7 +134,8 @@ bool FontCollection::has_glyph(const Font& font, char32_t c) {
 
 std::shared_ptr<const Font> FontCollection::fallback(char32_t c, const std::string& language,
                                                      const std::vector<Variation>& variations) {
-  const std::string key = std::to_string(static_cast<unsigned long>(c)) + "|" + language + "|" + variations_key(variations);
+  const std::string key =
+      std::to_string(static_cast<unsigned long>(c)) + "|" + language + "|" + variations_key(variations);
   if (auto it = fallback_.find(key); it != fallback_.end()) {
     ++stats_.fallback_hits;
     return it->second;

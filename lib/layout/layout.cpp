@@ -48,8 +48,8 @@ bool is_whitespace(char32_t c) {
 // Characters that need no glyph of their own when choosing a font.
 bool ignorable_for_coverage(char32_t c) {
   return c < 0x20 || c == 0x7F || c == 0xAD || (c >= 0x200B && c <= 0x200F) || (c >= 0x2028 && c <= 0x202E) ||
-         (c >= 0x2060 && c <= 0x206F) || c == 0xFEFF || (c >= 0xFE00 && c <= 0xFE0F) || (c >= 0xE0000 && c <= 0xE0FFF) ||
-         c == 0x034F;
+         (c >= 0x2060 && c <= 0x206F) || c == 0xFEFF || (c >= 0xFE00 && c <= 0xFE0F) ||
+         (c >= 0xE0000 && c <= 0xE0FFF) || c == 0x034F;
 }
 
 hb_script_t script_of(char32_t c) {
@@ -57,16 +57,17 @@ hb_script_t script_of(char32_t c) {
   return hb_unicode_script(unicode_funcs(), c);
 }
 
-
 void check_finite(double v, double lo, double hi, const char* what) {
   if (!std::isfinite(v) || v < lo || v > hi)
-    throw Error(ErrorCode::InvalidArgument,
-                std::string(what) + " must be between " + detail::format_number(lo) + " and " + detail::format_number(hi) + ", got " + detail::format_number(v));
+    throw Error(ErrorCode::InvalidArgument, std::string(what) + " must be between " + detail::format_number(lo) +
+                                                " and " + detail::format_number(hi) + ", got " +
+                                                detail::format_number(v));
 }
 
 void validate_style(const TextStyle& s) {
   if (!std::isfinite(s.size_px) || s.size_px <= 0.0)
-    throw Error(ErrorCode::InvalidArgument, "size must be a positive number of pixels, got " + detail::format_number(s.size_px));
+    throw Error(ErrorCode::InvalidArgument,
+                "size must be a positive number of pixels, got " + detail::format_number(s.size_px));
   check_finite(s.size_px, 0.0, tolerance::kMaxPixelsPerEm, "size (px)");
   check_finite(s.letter_spacing, -1e4, 1e4, "letter spacing (px)");
   check_finite(s.word_spacing, -1e4, 1e4, "word spacing (px)");
@@ -124,8 +125,8 @@ struct ParagraphBuilder {
   FontCollection& fonts;
   const ParagraphStyle& pstyle;
   Paragraph& out;
-  std::u32string cps;               // whole text
-  std::vector<std::size_t> bytes;   // byte offset of each code point, plus the end
+  std::u32string cps;              // whole text
+  std::vector<std::size_t> bytes;  // byte offset of each code point, plus the end
   std::vector<std::size_t> style_of;
   std::vector<ResolvedStyle> resolved;
   std::size_t lines_left = std::numeric_limits<std::size_t>::max();
@@ -177,7 +178,8 @@ struct ParagraphBuilder {
           throw Error(ErrorCode::InvalidArgument, "bad BCP 47 language tag '" + r.language_tag + "'");
       }
       for (const Feature& f : s.features) {
-        if (f.tag.empty() || f.tag.size() > 4) throw Error(ErrorCode::InvalidArgument, "bad feature tag '" + f.tag + "'");
+        if (f.tag.empty() || f.tag.size() > 4)
+          throw Error(ErrorCode::InvalidArgument, "bad feature tag '" + f.tag + "'");
         r.features.push_back({hb_tag_from_string(f.tag.c_str(), static_cast<int>(f.tag.size())), f.value,
                               HB_FEATURE_GLOBAL_START, HB_FEATURE_GLOBAL_END});
       }
@@ -270,8 +272,10 @@ struct ParagraphBuilder {
     }
     hb_script_t next = HB_SCRIPT_COMMON;
     for (std::size_t i = n; i-- > 0;) {
-      if (script[i] != HB_SCRIPT_COMMON) next = script[i];
-      else script[i] = next;
+      if (script[i] != HB_SCRIPT_COMMON)
+        next = script[i];
+      else
+        script[i] = next;
     }
     // A font per grapheme cluster.
     // Fonts by index (a few per paragraph), not a shared_ptr per code point;
@@ -296,8 +300,7 @@ struct ParagraphBuilder {
       const bool neutral = neutral_script[a] || ignorable_for_coverage(para[a]);
       // Spaces, digits and punctuation stay with the font before them when it
       // has them, so a run of Arabic words is not cut at every space.
-      if (neutral && previous < used.size() && previous_style == si && covers(*used[previous], a, b))
-        chosen = previous;
+      if (neutral && previous < used.size() && previous_style == si && covers(*used[previous], a, b)) chosen = previous;
       for (std::size_t k = 0; chosen == static_cast<std::size_t>(-1) && k < r.chain.size(); ++k)
         if (covers(*r.chain[k], a, b)) chosen = index_of(r.chain[k]);
       if (chosen == static_cast<std::size_t>(-1)) {
@@ -431,8 +434,7 @@ struct ParagraphBuilder {
 
   std::vector<Glyph> slice(const Item& it, std::size_t a, std::size_t b, std::uint8_t level) const {
     if (a == it.start && b == it.end && level == it.level) return it.glyphs;
-    const bool safe =
-        level == it.level && (a == it.start || safe_cut(it, a)) && (b == it.end || safe_cut(it, b));
+    const bool safe = level == it.level && (a == it.start || safe_cut(it, a)) && (b == it.end || safe_cut(it, b));
     if (!safe) return shape(a, b, level, it.script, *it.font, it.style);
     std::size_t lo = glyph_bound(it, a), hi = glyph_bound(it, b);
     if (lo > hi) std::swap(lo, hi);
@@ -645,8 +647,8 @@ struct ParagraphBuilder {
     boxes.reserve(boxes.size() + clusters.size());
     for (std::size_t k = 0; k < clusters.size(); ++k) {
       const auto& [cluster, span] = clusters[k];
-      const std::size_t end = rtl ? (k > 0 ? clusters[k - 1].first : p.end)
-                                  : (k + 1 < clusters.size() ? clusters[k + 1].first : p.end);
+      const std::size_t end =
+          rtl ? (k > 0 ? clusters[k - 1].first : p.end) : (k + 1 < clusters.size() ? clusters[k + 1].first : p.end);
       // Graphemes inside the cluster (a ligature "fi" holds two) share its width.
       std::size_t count = 1;
       for (std::size_t i = cluster + 1; i < end; ++i) count += grapheme[i] ? 1 : 0;
@@ -682,8 +684,10 @@ struct ParagraphBuilder {
     // characters as zero width spaces, so neither draws a missing glyph.
     shaped_text = para;
     for (char32_t& c : shaped_text) {
-      if (c == U'\t') c = U' ';
-      else if (c < 0x20 || c == 0x7F || c == 0x85 || c == 0x2028 || c == 0x2029) c = 0x200B;
+      if (c == U'\t')
+        c = U' ';
+      else if (c < 0x20 || c == 0x7F || c == 0x85 || c == 0x2028 || c == 0x2029)
+        c = 0x200B;
     }
     bidi = resolve_bidi(para, pstyle.direction);
     grapheme = grapheme_starts(para);
@@ -869,8 +873,7 @@ struct ParagraphBuilder {
   void finish() {
     double box = pstyle.width;
     if (box <= 0)
-      for (std::size_t k = 0; k < out.lines_.size(); ++k)
-        box = std::max(box, out.lines_[k].width + line_indent_[k]);
+      for (std::size_t k = 0; k < out.lines_.size(); ++k) box = std::max(box, out.lines_[k].width + line_indent_[k]);
     out.width_ = box;
     for (std::size_t k = 0; k < out.lines_.size(); ++k) {
       LayoutLine& line = out.lines_[k];
@@ -891,10 +894,17 @@ struct ParagraphBuilder {
       }
       double left = 0.0;
       switch (align) {
-        case Align::Left: left = rtl ? 0.0 : indent; break;
-        case Align::Right: left = box - line.width - (rtl ? indent : 0.0); break;
-        case Align::Center: left = (box - line.width) / 2.0; break;
-        default: break;
+        case Align::Left:
+          left = rtl ? 0.0 : indent;
+          break;
+        case Align::Right:
+          left = box - line.width - (rtl ? indent : 0.0);
+          break;
+        case Align::Center:
+          left = (box - line.width) / 2.0;
+          break;
+        default:
+          break;
       }
       const double shift = left - content_left;
       line.x = left;
@@ -960,8 +970,7 @@ struct ParagraphBuilder {
       paragraphs.push_back({start, i + 1});
       start = i + 1;
     }
-    if (start < cps.size() || paragraphs.empty() ||
-        (!cps.empty() && is_paragraph_separator(cps.back())))
+    if (start < cps.size() || paragraphs.empty() || (!cps.empty() && is_paragraph_separator(cps.back())))
       paragraphs.push_back({start, cps.size()});
     for (std::size_t k = 0; k < paragraphs.size() && !stop; ++k) {
       last_paragraph_ = k + 1 == paragraphs.size();

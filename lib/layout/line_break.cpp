@@ -31,8 +31,49 @@ namespace {
 // UAX #14 Line_Break classes after LB1, in the generator's order
 // (tools/gen_line_break_table.cpp).
 enum class Lb : std::uint8_t {
-  BK, CR, LF, NL, SP, ZW, WJ, GL, CM, ZWJ, OP, CL, CP, QU, IS, SY, NS, EX, BA, BB, B2, HY, CB, HL,
-  AL, NU, PR, PO, ID, EB, EM, IN, H2, H3, JL, JV, JT, RI, AK, AP, AS, VI, VF
+  BK,
+  CR,
+  LF,
+  NL,
+  SP,
+  ZW,
+  WJ,
+  GL,
+  CM,
+  ZWJ,
+  OP,
+  CL,
+  CP,
+  QU,
+  IS,
+  SY,
+  NS,
+  EX,
+  BA,
+  BB,
+  B2,
+  HY,
+  CB,
+  HL,
+  AL,
+  NU,
+  PR,
+  PO,
+  ID,
+  EB,
+  EM,
+  IN,
+  H2,
+  H3,
+  JL,
+  JV,
+  JT,
+  RI,
+  AK,
+  AP,
+  AS,
+  VI,
+  VF
 };
 constexpr std::uint8_t kClassMask = 0x3F;
 constexpr std::uint8_t kWide = 0x40;                    // East_Asian_Width F, W or H
@@ -47,11 +88,47 @@ std::uint8_t properties(char32_t c) {
 // classes outside LB1's result are resolved as LB1 does (SA as AL: its
 // tailorings contain none).
 Lb from_libunibreak(int c) {
-  static constexpr Lb map[] = {Lb::AL /*Undefined*/, Lb::OP, Lb::CL, Lb::CP, Lb::QU, Lb::GL, Lb::NS, Lb::EX, Lb::SY,
-                               Lb::IS, Lb::PR, Lb::PO, Lb::NU, Lb::AL, Lb::HL, Lb::ID, Lb::IN, Lb::HY, Lb::BA,
-                               Lb::BB, Lb::B2, Lb::ZW, Lb::CM, Lb::WJ, Lb::H2, Lb::H3, Lb::JL, Lb::JV, Lb::JT,
-                               Lb::RI, Lb::AL /*AI*/, Lb::BK, Lb::CB, Lb::NS /*CJ*/, Lb::CR, Lb::LF, Lb::NL,
-                               Lb::AL /*SA*/, Lb::AL /*SG*/, Lb::SP, Lb::AL /*XX*/};
+  static constexpr Lb map[] = {Lb::AL /*Undefined*/,
+                               Lb::OP,
+                               Lb::CL,
+                               Lb::CP,
+                               Lb::QU,
+                               Lb::GL,
+                               Lb::NS,
+                               Lb::EX,
+                               Lb::SY,
+                               Lb::IS,
+                               Lb::PR,
+                               Lb::PO,
+                               Lb::NU,
+                               Lb::AL,
+                               Lb::HL,
+                               Lb::ID,
+                               Lb::IN,
+                               Lb::HY,
+                               Lb::BA,
+                               Lb::BB,
+                               Lb::B2,
+                               Lb::ZW,
+                               Lb::CM,
+                               Lb::WJ,
+                               Lb::H2,
+                               Lb::H3,
+                               Lb::JL,
+                               Lb::JV,
+                               Lb::JT,
+                               Lb::RI,
+                               Lb::AL /*AI*/,
+                               Lb::BK,
+                               Lb::CB,
+                               Lb::NS /*CJ*/,
+                               Lb::CR,
+                               Lb::LF,
+                               Lb::NL,
+                               Lb::AL /*SA*/,
+                               Lb::AL /*SG*/,
+                               Lb::SP,
+                               Lb::AL /*XX*/};
   return c >= 0 && c < static_cast<int>(std::size(map)) ? map[c] : Lb::AL;
 }
 
@@ -70,8 +147,8 @@ void apply_tailoring(std::u32string_view text, std::string_view language, std::v
   for (std::size_t i = 0; i < text.size(); ++i)
     for (const LineBreakProperties* p = table; p->prop != LBP_Undefined; ++p)
       if (text[i] >= p->start && text[i] <= p->end) {
-        props[i] = static_cast<std::uint8_t>((props[i] & ~kClassMask) |
-                                             static_cast<std::uint8_t>(from_libunibreak(p->prop)));
+        props[i] =
+            static_cast<std::uint8_t>((props[i] & ~kClassMask) | static_cast<std::uint8_t>(from_libunibreak(p->prop)));
         break;
       }
 }
@@ -141,11 +218,11 @@ std::vector<BreakAction> line_breaks(std::u32string_view text, std::string_view 
 
   // State after character i-1, all on the sequence after LB9/LB10 (a base
   // and the marks it carries count as the base):
-  Lb eff = cls(0);  // effective class
+  Lb eff = cls(0);                                    // effective class
   if (eff == Lb::CM || eff == Lb::ZWJ) eff = Lb::AL;  // LB10
   std::uint8_t a_props = props[0];
   char32_t a_char = text[0];
-  Lb a_prev = Lb::BK;        // the effective class before eff (sot reads as BK: matches no rule)
+  Lb a_prev = Lb::BK;  // the effective class before eff (sot reads as BK: matches no rule)
   char32_t a_prev_char = 0;
   Lb before_spaces = Lb::BK;  // when eff is SP: the effective class before the spaces
   std::size_t ri_run = eff == Lb::RI ? 1 : 0;
@@ -155,50 +232,49 @@ std::vector<BreakAction> line_breaks(std::u32string_view text, std::string_view 
   // LB11-LB31 between effective classes a and b (b at index i).
   const auto pair_action = [&](Lb a, Lb b, std::size_t i, Lb sp_base) {
     constexpr BreakAction no = BreakAction::None, yes = BreakAction::Allowed;
-    if (a == Lb::WJ || b == Lb::WJ) return no;                                                  // LB11
-    if (a == Lb::GL) return no;                                                                 // LB12
-    if (b == Lb::GL && a != Lb::SP && a != Lb::BA && a != Lb::HY) return no;                    // LB12a
-    if (b == Lb::CL || b == Lb::CP || b == Lb::EX || b == Lb::IS || b == Lb::SY) return no;      // LB13
-    if (sp_base == Lb::OP) return no;                                                           // LB14
-    if (b == Lb::OP && sp_base == Lb::QU) return no;                                            // LB15
-    if (b == Lb::NS && (sp_base == Lb::CL || sp_base == Lb::CP)) return no;                     // LB16
-    if (b == Lb::B2 && sp_base == Lb::B2) return no;                                            // LB17
-    if (a == Lb::SP) return yes;                                                                // LB18
-    if (a == Lb::QU || b == Lb::QU) return no;                                                  // LB19
-    if (a == Lb::CB || b == Lb::CB) return yes;                                                 // LB20
-    if (b == Lb::BA || b == Lb::HY || b == Lb::NS || a == Lb::BB) return no;                    // LB21
-    if ((a == Lb::HY || a == Lb::BA) && a_prev == Lb::HL) return no;                            // LB21a
-    if (a == Lb::SY && b == Lb::HL) return no;                                                  // LB21b
-    if (b == Lb::IN) return no;                                                                 // LB22
+    if (a == Lb::WJ || b == Lb::WJ) return no;                                               // LB11
+    if (a == Lb::GL) return no;                                                              // LB12
+    if (b == Lb::GL && a != Lb::SP && a != Lb::BA && a != Lb::HY) return no;                 // LB12a
+    if (b == Lb::CL || b == Lb::CP || b == Lb::EX || b == Lb::IS || b == Lb::SY) return no;  // LB13
+    if (sp_base == Lb::OP) return no;                                                        // LB14
+    if (b == Lb::OP && sp_base == Lb::QU) return no;                                         // LB15
+    if (b == Lb::NS && (sp_base == Lb::CL || sp_base == Lb::CP)) return no;                  // LB16
+    if (b == Lb::B2 && sp_base == Lb::B2) return no;                                         // LB17
+    if (a == Lb::SP) return yes;                                                             // LB18
+    if (a == Lb::QU || b == Lb::QU) return no;                                               // LB19
+    if (a == Lb::CB || b == Lb::CB) return yes;                                              // LB20
+    if (b == Lb::BA || b == Lb::HY || b == Lb::NS || a == Lb::BB) return no;                 // LB21
+    if ((a == Lb::HY || a == Lb::BA) && a_prev == Lb::HL) return no;                         // LB21a
+    if (a == Lb::SY && b == Lb::HL) return no;                                               // LB21b
+    if (b == Lb::IN) return no;                                                              // LB22
     const bool a_letter = a == Lb::AL || a == Lb::HL, b_letter = b == Lb::AL || b == Lb::HL;
-    if ((a_letter && b == Lb::NU) || (a == Lb::NU && b_letter)) return no;                      // LB23
+    if ((a_letter && b == Lb::NU) || (a == Lb::NU && b_letter)) return no;  // LB23
     const bool b_ideo = b == Lb::ID || b == Lb::EB || b == Lb::EM;
     if ((a == Lb::PR && b_ideo) || ((a == Lb::ID || a == Lb::EB || a == Lb::EM) && b == Lb::PO)) return no;  // LB23a
     const bool a_prpo = a == Lb::PR || a == Lb::PO, b_prpo = b == Lb::PR || b == Lb::PO;
-    if ((a_prpo && b_letter) || (a_letter && b_prpo)) return no;                                // LB24
+    if ((a_prpo && b_letter) || (a_letter && b_prpo)) return no;                                             // LB24
     if (a_prpo && (b == Lb::NU || ((b == Lb::OP || b == Lb::HY) && next_base(i + 1) == Lb::NU))) return no;  // LB25
     if ((a == Lb::OP || a == Lb::HY) && b == Lb::NU) return no;
     if (numeric && (b == Lb::NU || b == Lb::SY || b == Lb::IS || b == Lb::CL || b == Lb::CP)) return no;
     if ((numeric || numeric_close) && b_prpo) return no;
-    if ((a == Lb::JL && (b == Lb::JL || b == Lb::JV || b == Lb::H2 || b == Lb::H3)) ||         // LB26
-        ((a == Lb::JV || a == Lb::H2) && (b == Lb::JV || b == Lb::JT)) ||
-        ((a == Lb::JT || a == Lb::H3) && b == Lb::JT))
+    if ((a == Lb::JL && (b == Lb::JL || b == Lb::JV || b == Lb::H2 || b == Lb::H3)) ||  // LB26
+        ((a == Lb::JV || a == Lb::H2) && (b == Lb::JV || b == Lb::JT)) || ((a == Lb::JT || a == Lb::H3) && b == Lb::JT))
       return no;
     const bool a_korean = a == Lb::JL || a == Lb::JV || a == Lb::JT || a == Lb::H2 || a == Lb::H3;
     const bool b_korean = b == Lb::JL || b == Lb::JV || b == Lb::JT || b == Lb::H2 || b == Lb::H3;
-    if ((a_korean && b == Lb::PO) || (a == Lb::PR && b_korean)) return no;                      // LB27
-    if (a_letter && b_letter) return no;                                                        // LB28
-    const bool a_aksara = is_aksara(a, a_char), b_aksara = is_aksara(b, text[i]);              // LB28a
+    if ((a_korean && b == Lb::PO) || (a == Lb::PR && b_korean)) return no;         // LB27
+    if (a_letter && b_letter) return no;                                           // LB28
+    const bool a_aksara = is_aksara(a, a_char), b_aksara = is_aksara(b, text[i]);  // LB28a
     if (a == Lb::AP && b_aksara) return no;
     if (a_aksara && (b == Lb::VF || b == Lb::VI)) return no;
     if (a == Lb::VI && is_aksara(a_prev, a_prev_char) && (b == Lb::AK || text[i] == 0x25CC)) return no;
     if (a_aksara && b_aksara && next_base(i + 1) == Lb::VF) return no;
-    if (a == Lb::IS && b_letter) return no;                                                     // LB29
-    if ((a_letter || a == Lb::NU) && b == Lb::OP && !(props[i] & kWide)) return no;            // LB30
+    if (a == Lb::IS && b_letter) return no;                                          // LB29
+    if ((a_letter || a == Lb::NU) && b == Lb::OP && !(props[i] & kWide)) return no;  // LB30
     if (a == Lb::CP && !(a_props & kWide) && (b_letter || b == Lb::NU)) return no;
-    if (a == Lb::RI && b == Lb::RI && ri_run % 2 == 1) return no;                               // LB30a
-    if (b == Lb::EM && (a == Lb::EB || (a_props & kPictographicUnassigned))) return no;         // LB30b
-    return yes;                                                                                 // LB31
+    if (a == Lb::RI && b == Lb::RI && ri_run % 2 == 1) return no;                        // LB30a
+    if (b == Lb::EM && (a == Lb::EB || (a_props & kPictographicUnassigned))) return no;  // LB30b
+    return yes;                                                                          // LB31
   };
 
   for (std::size_t i = 1; i < n; ++i) {
@@ -207,13 +283,20 @@ std::vector<BreakAction> line_breaks(std::u32string_view text, std::string_view 
     BreakAction action;
     bool absorbed = false;
     const Lb sp_base = eff == Lb::SP ? before_spaces : eff;
-    if (raw_a == Lb::BK) action = BreakAction::Mandatory;                                         // LB4
-    else if (raw_a == Lb::CR && cb == Lb::LF) action = BreakAction::None;                          // LB5
-    else if (raw_a == Lb::CR || raw_a == Lb::LF || raw_a == Lb::NL) action = BreakAction::Mandatory;
-    else if (cb == Lb::BK || cb == Lb::CR || cb == Lb::LF || cb == Lb::NL) action = BreakAction::None;  // LB6
-    else if (cb == Lb::SP || cb == Lb::ZW) action = BreakAction::None;                              // LB7
-    else if (sp_base == Lb::ZW) action = BreakAction::Allowed;                                    // LB8
-    else if (raw_a == Lb::ZWJ) action = BreakAction::None;                                        // LB8a
+    if (raw_a == Lb::BK)
+      action = BreakAction::Mandatory;  // LB4
+    else if (raw_a == Lb::CR && cb == Lb::LF)
+      action = BreakAction::None;  // LB5
+    else if (raw_a == Lb::CR || raw_a == Lb::LF || raw_a == Lb::NL)
+      action = BreakAction::Mandatory;
+    else if (cb == Lb::BK || cb == Lb::CR || cb == Lb::LF || cb == Lb::NL)
+      action = BreakAction::None;  // LB6
+    else if (cb == Lb::SP || cb == Lb::ZW)
+      action = BreakAction::None;  // LB7
+    else if (sp_base == Lb::ZW)
+      action = BreakAction::Allowed;  // LB8
+    else if (raw_a == Lb::ZWJ)
+      action = BreakAction::None;  // LB8a
     else if ((cb == Lb::CM || cb == Lb::ZWJ) && eff != Lb::SP) {
       action = BreakAction::None;  // LB9 (eff is never BK, CR, LF, NL or ZW here)
       absorbed = true;
@@ -259,11 +342,16 @@ std::vector<bool> grapheme_starts(std::u32string_view text) {
       continue;
     }
     bool join = false;
-    if (a == U'\r' && b == U'\n') join = true;                                       // GB3
-    else if (is_control(a) || is_control(b)) join = false;                           // GB4-5
-    else if (is_mark(b) || b == 0x200D || is_variation_selector(b) || is_emoji_modifier(b)) join = true;  // GB9, 9a
-    else if (a == 0x200D && is_pictographic(b)) join = true;                         // GB11
-    else if (is_regional_indicator(a) && is_regional_indicator(b)) join = ri_run % 2 == 1;  // GB12-13
+    if (a == U'\r' && b == U'\n')
+      join = true;  // GB3
+    else if (is_control(a) || is_control(b))
+      join = false;  // GB4-5
+    else if (is_mark(b) || b == 0x200D || is_variation_selector(b) || is_emoji_modifier(b))
+      join = true;  // GB9, 9a
+    else if (a == 0x200D && is_pictographic(b))
+      join = true;  // GB11
+    else if (is_regional_indicator(a) && is_regional_indicator(b))
+      join = ri_run % 2 == 1;  // GB12-13
     else {
       const Hangul ha = hangul(a), hb = hangul(b);  // GB6-8
       join = (ha == Hangul::L && hb != Hangul::None && hb != Hangul::T) ||

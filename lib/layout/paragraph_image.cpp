@@ -70,7 +70,7 @@ Image render_paragraph_image(Renderer& renderer, GlyphCache& cache, const Paragr
                                ? offset * scale
                                : fallback_offset * run.size_px;
         double t = hb_ot_metrics_get_position(run.font->impl().hb_font, size_tag, &thickness) ? thickness * scale
-                                                                                                  : upem * 0.05 * scale;
+                                                                                              : upem * 0.05 * scale;
         t = std::max(t, 1.0);
         // Outline y is up: y_px = margin - y  =>  y = margin - y_px (placement scale 1).
         const double top = line.baseline - off - t / 2.0;
@@ -83,8 +83,8 @@ Image render_paragraph_image(Renderer& renderer, GlyphCache& cache, const Paragr
       };
       if (style.underline) bar(HB_OT_METRICS_TAG_UNDERLINE_OFFSET, HB_OT_METRICS_TAG_UNDERLINE_SIZE, -0.1);
       if (style.strikethrough) bar(HB_OT_METRICS_TAG_STRIKEOUT_OFFSET, HB_OT_METRICS_TAG_STRIKEOUT_SIZE, 0.3);
-      renderer.draw(DrawBatch::from_mesh(build_mesh(bars)), Placement{1.0, options.margin_px, options.margin_px, frame.transform},
-                    draw);
+      renderer.draw(DrawBatch::from_mesh(build_mesh(bars)),
+                    Placement{1.0, options.margin_px, options.margin_px, frame.transform}, draw);
     }
   }
   return renderer.read_pixels();

@@ -126,8 +126,8 @@ void validate_nurbs(const Nurbs& c) {
     std::size_t j = i;
     while (j < c.knots.size() && c.knots[j] == c.knots[i]) ++j;
     if (c.knots[i] > lo && c.knots[i] < hi && j - i > p)
-      fail("interior knot " + number_text(c.knots[i]) + " has multiplicity " + std::to_string(j - i) +
-           " > degree " + std::to_string(p) + " (the curve would be disconnected)");
+      fail("interior knot " + number_text(c.knots[i]) + " has multiplicity " + std::to_string(j - i) + " > degree " +
+           std::to_string(p) + " (the curve would be disconnected)");
     i = j;
   }
 }
@@ -171,9 +171,12 @@ std::vector<RationalBezier> nurbs_to_beziers(const Nurbs& c) {
       // that end at infinity. Weights from [kMinWeight, kMaxWeight] blend to
       // at least kMinWeight, so only a zero weight gets below it.
       if (bez[0].w < shapes_detail::kMinWeight || bez[2].w < shapes_detail::kMinWeight)
-        throw Error(ErrorCode::InvalidArgument, "NURBS: a weight of 0 gives the piece over knots [" + number_text(u[span]) + ", " + number_text(u[span + 1]) +
-             "] an end at infinity; 0 is allowed only where a control point is a piece's middle point (its knots "
-             "doubled)");
+        throw Error(
+            ErrorCode::InvalidArgument,
+            "NURBS: a weight of 0 gives the piece over knots [" + number_text(u[span]) + ", " +
+                number_text(u[span + 1]) +
+                "] an end at infinity; 0 is allowed only where a control point is a piece's middle point (its knots "
+                "doubled)");
       if (bez[1].w < shapes_detail::kMinWeight) {
         out.push_back(RationalBezier::line(from_h(bez[0]), from_h(bez[2])));
         continue;
@@ -206,9 +209,15 @@ bool fit_conic(const RationalBezier& piece, Segment& conic) {
   const double tiny = 1e-12 * size;
   Vec2 t0{}, t1{};
   for (std::size_t i = 1; i < piece.points.size(); ++i)
-    if (distance(piece.points[i], p0) > tiny) { t0 = piece.points[i] - p0; break; }
+    if (distance(piece.points[i], p0) > tiny) {
+      t0 = piece.points[i] - p0;
+      break;
+    }
   for (std::size_t i = piece.points.size() - 1; i-- > 0;)
-    if (distance(piece.points[i], p2) > tiny) { t1 = p2 - piece.points[i]; break; }
+    if (distance(piece.points[i], p2) > tiny) {
+      t1 = p2 - piece.points[i];
+      break;
+    }
   // p0 + s t0 = p2 - v t1
   const double det = cross(t0, t1);
   if (std::abs(det) <= 1e-12 * length(t0) * length(t1)) return false;
@@ -255,8 +264,7 @@ constexpr int kErrorSamples = 32;
 constexpr double kSafety = 1.5;
 constexpr int kMaxDepth = 30;
 
-void approximate(const RationalBezier& piece, double tolerance, int depth, std::vector<Segment>& out,
-                 int& budget) {
+void approximate(const RationalBezier& piece, double tolerance, int depth, std::vector<Segment>& out, int& budget) {
   const Vec2 p0 = piece.points.front(), p2 = piece.points.back();
   // Convex hull property (weights > 0): the piece lies in the hull of its
   // control points, so when they are all within `tolerance` of the chord,
@@ -310,7 +318,8 @@ void append_quadratics(const RationalBezier& curve, double tolerance, std::vecto
     throw Error(ErrorCode::InvalidArgument, "tolerance must be positive, got " + number_text(tolerance));
   for (Vec2 p : curve.points) check_point(p, "curve piece");
   for (std::size_t i = 0; i < curve.weights.size(); ++i)
-    if (!shapes_detail::is_zero_middle_weight(static_cast<std::size_t>(curve.degree()), i, curve.weights.size(), curve.weights[i]))
+    if (!shapes_detail::is_zero_middle_weight(static_cast<std::size_t>(curve.degree()), i, curve.weights.size(),
+                                              curve.weights[i]))
       check_weight(curve.weights[i], "curve piece");
   const Vec2 p0 = curve.points.front(), p2 = curve.points.back();
   switch (curve.degree()) {
@@ -324,8 +333,8 @@ void append_quadratics(const RationalBezier& curve, double tolerance, std::vecto
       }
       // Reparametrising t -> t / (t + k (1 - t)) moves the end weights to 1
       // and leaves the middle weight w1 / sqrt(w0 w2): the same curve.
-      out.push_back(Segment::conic(p0, curve.points[1], p2,
-                                   curve.weights[1] / std::sqrt(curve.weights[0] * curve.weights[2])));
+      out.push_back(
+          Segment::conic(p0, curve.points[1], p2, curve.weights[1] / std::sqrt(curve.weights[0] * curve.weights[2])));
       return;
     case 3:
       if (curve.is_polynomial()) {
@@ -351,8 +360,10 @@ Outline shape_outline(const Shape& shape, double tolerance) {
       append_quadratics(piece, tolerance, segs);
       o.line_to(piece.points.front());  // joins a gap between pieces; nothing when there is none
       for (const Segment& s : segs) {
-        if (s.kind == Segment::Kind::Line) o.line_to(s.p[1]);
-        else o.conic_to(s.p[1], s.p[2], s.weight);
+        if (s.kind == Segment::Kind::Line)
+          o.line_to(s.p[1]);
+        else
+          o.conic_to(s.p[1], s.p[2], s.weight);
       }
     }
     o.close();

@@ -53,7 +53,7 @@ Bernstein multiply(const Bernstein& a, const Bernstein& b) {
   for (int i = 0; i <= m; ++i)
     for (int j = 0; j <= n; ++j)
       c[static_cast<std::size_t>(i + j)] += binomial(m, i) * binomial(n, j) / binomial(m + n, i + j) *
-                                             a[static_cast<std::size_t>(i)] * b[static_cast<std::size_t>(j)];
+                                            a[static_cast<std::size_t>(i)] * b[static_cast<std::size_t>(j)];
   return c;
 }
 
@@ -175,10 +175,14 @@ void intersect(const Segment& a, const Segment& b, std::vector<Hit>& hits_a, std
     ta = std::clamp(ta, 0.0, 1.0);
     // A hit at an end of one segment is that end exactly, so every segment
     // through the point ends or splits at the same coordinates.
-    if (ta <= kParamEps) x = a.start();
-    else if (ta >= 1.0 - kParamEps) x = a.end();
-    else if (tb <= kParamEps) x = b.start();
-    else if (tb >= 1.0 - kParamEps) x = b.end();
+    if (ta <= kParamEps)
+      x = a.start();
+    else if (ta >= 1.0 - kParamEps)
+      x = a.end();
+    else if (tb <= kParamEps)
+      x = b.start();
+    else if (tb >= 1.0 - kParamEps)
+      x = b.end();
     hits_a.push_back({ta, x});
     hits_b.push_back({tb, x});
   }
@@ -302,16 +306,17 @@ Outline even_odd_to_nonzero(const Outline& outline) {
     vertex_of[i] = static_cast<int>(vertices.size());
     vertices.push_back(ends[i]);
     for (std::size_t m = k + 1; m < order.size() && ends[order[m]].x - ends[i].x <= merge; ++m)
-      if (vertex_of[order[m]] < 0 && distance(ends[order[m]], ends[i]) <= merge)
-        vertex_of[order[m]] = vertex_of[i];
+      if (vertex_of[order[m]] < 0 && distance(ends[order[m]], ends[i]) <= merge) vertex_of[order[m]] = vertex_of[i];
   }
   std::vector<Piece> arr;
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     Piece p{pieces[i], vertex_of[2 * i], vertex_of[2 * i + 1]};
     if (p.from == p.to) continue;
     p.seg.p[0] = vertices[static_cast<std::size_t>(p.from)];
-    if (p.seg.kind == Segment::Kind::Line) p.seg.p[1] = vertices[static_cast<std::size_t>(p.to)];
-    else p.seg.p[2] = vertices[static_cast<std::size_t>(p.to)];
+    if (p.seg.kind == Segment::Kind::Line)
+      p.seg.p[1] = vertices[static_cast<std::size_t>(p.to)];
+    else
+      p.seg.p[2] = vertices[static_cast<std::size_t>(p.to)];
     arr.push_back(p);
   }
 
@@ -346,8 +351,10 @@ Outline even_odd_to_nonzero(const Outline& outline) {
     result.move_to(arr[loop.front()].seg.start());
     for (std::size_t e : loop) {
       const Segment& s = arr[e].seg;
-      if (s.kind == Segment::Kind::Line) result.line_to(s.p[1]);
-      else result.conic_to(s.p[1], s.p[2], s.weight);
+      if (s.kind == Segment::Kind::Line)
+        result.line_to(s.p[1]);
+      else
+        result.conic_to(s.p[1], s.p[2], s.weight);
     }
     result.close();
   };

@@ -59,14 +59,16 @@ std::vector<Vec2> points(const Value& v, const std::string& path, std::size_t at
   if (v.array.size() < at_least)
     fail(v, path, "needs at least " + std::to_string(at_least) + " points, got " + std::to_string(v.array.size()));
   std::vector<Vec2> out;
-  for (std::size_t i = 0; i < v.array.size(); ++i) out.push_back(point(v.array[i], path + "[" + std::to_string(i) + "]"));
+  for (std::size_t i = 0; i < v.array.size(); ++i)
+    out.push_back(point(v.array[i], path + "[" + std::to_string(i) + "]"));
   return out;
 }
 
 std::vector<double> numbers(const Value& v, const std::string& path) {
   expect(v, Value::Type::Array, path);
   std::vector<double> out;
-  for (std::size_t i = 0; i < v.array.size(); ++i) out.push_back(number(v.array[i], path + "[" + std::to_string(i) + "]"));
+  for (std::size_t i = 0; i < v.array.size(); ++i)
+    out.push_back(number(v.array[i], path + "[" + std::to_string(i) + "]"));
   return out;
 }
 
@@ -93,8 +95,8 @@ void read_item(const Value& item, const std::string& path, ShapeContour& contour
     if (const Value* w = body.find("weights")) {
       b.weights = numbers(*w, p + ".weights");
       if (b.weights.size() != b.points.size())
-        fail(*w, p + ".weights", std::to_string(b.points.size()) + " points need as many weights, got " +
-                                     std::to_string(b.weights.size()));
+        fail(*w, p + ".weights",
+             std::to_string(b.points.size()) + " points need as many weights, got " + std::to_string(b.weights.size()));
       for (std::size_t i = 0; i < b.weights.size(); ++i) {
         try {
           if (shapes_detail::is_zero_middle_weight(b.points.size() - 1, i, b.weights.size(), b.weights[i])) continue;

@@ -43,11 +43,16 @@ std::string decode_entities(std::string_view s) {
     const std::size_t end = s.find(';', i);
     if (end == std::string_view::npos) fail("unterminated entity in an attribute");
     const std::string_view name = s.substr(i + 1, end - i - 1);
-    if (name == "amp") out += '&';
-    else if (name == "lt") out += '<';
-    else if (name == "gt") out += '>';
-    else if (name == "quot") out += '"';
-    else if (name == "apos") out += '\'';
+    if (name == "amp")
+      out += '&';
+    else if (name == "lt")
+      out += '<';
+    else if (name == "gt")
+      out += '>';
+    else if (name == "quot")
+      out += '"';
+    else if (name == "apos")
+      out += '\'';
     else if (!name.empty() && name[0] == '#') {
       unsigned cp = 0;
       const bool hex = name.size() > 1 && (name[1] == 'x' || name[1] == 'X');
@@ -79,7 +84,7 @@ class XmlScanner {
         skip_past("-->");
       } else if (s_.substr(pos_, 9) == "<![CDATA[") {
         skip_past("]]>");
-      } else if (s_.substr(pos_, 2) == "<?" ) {
+      } else if (s_.substr(pos_, 2) == "<?") {
         skip_past("?>");
       } else if (s_.substr(pos_, 2) == "<!") {
         skip_past(">");
@@ -173,8 +178,10 @@ void apply_paint(const Tag& tag, Paint& paint) {
       const std::size_t colon = decl.find(':');
       if (colon == std::string_view::npos) continue;
       const std::string key = trim(decl.substr(0, colon)), value = trim(decl.substr(colon + 1));
-      if (key == "fill") paint.fill = value;
-      else if (key == "fill-rule") paint.fill_rule = value;
+      if (key == "fill")
+        paint.fill = value;
+      else if (key == "fill-rule")
+        paint.fill_rule = value;
     }
   }
   if (tag.find("transform")) fail("<" + tag.name + "> has a transform attribute, which is not supported");
@@ -191,7 +198,8 @@ Color svg_color(const std::string& text) {
       const std::string part = trim(inner.substr(0, comma));
       int v = -1;
       const auto [p, ec] = std::from_chars(part.data(), part.data() + part.size(), v);
-      if (ec != std::errc() || p != part.data() + part.size() || v < 0 || v > 255 || (i < 2) == (comma == std::string_view::npos))
+      if (ec != std::errc() || p != part.data() + part.size() || v < 0 || v > 255 ||
+          (i < 2) == (comma == std::string_view::npos))
         fail("unsupported colour '" + text + "'");
       c[i] = static_cast<float>(v) / 255.0f;
       inner = comma == std::string_view::npos ? std::string_view{} : inner.substr(comma + 1);
@@ -314,7 +322,7 @@ ShapeDocument parse_svg(std::string_view text) {
       doc.shapes.push_back(std::move(shape));
       continue;
     }
-    static const char* const kRefused[] = {"rect", "circle", "ellipse", "line", "polyline", "polygon",
+    static const char* const kRefused[] = {"rect", "circle", "ellipse", "line",   "polyline", "polygon",
                                            "text", "image",  "use",     "switch", "a"};
     for (const char* name : kRefused)
       if (tag.name == name)

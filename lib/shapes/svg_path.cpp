@@ -66,14 +66,31 @@ class PathParser {
   char last_ = 0;
 
   [[noreturn]] void fail(const std::string& message) const {
-    throw Error(ErrorCode::InvalidArgument,
-                "SVG path data, character " + std::to_string(pos_ + 1) + ": " + message);
+    throw Error(ErrorCode::InvalidArgument, "SVG path data, character " + std::to_string(pos_ + 1) + ": " + message);
   }
 
   static bool is_command(char c) {
     switch (c) {
-      case 'M': case 'm': case 'L': case 'l': case 'H': case 'h': case 'V': case 'v': case 'C': case 'c':
-      case 'S': case 's': case 'Q': case 'q': case 'T': case 't': case 'A': case 'a': case 'Z': case 'z':
+      case 'M':
+      case 'm':
+      case 'L':
+      case 'l':
+      case 'H':
+      case 'h':
+      case 'V':
+      case 'v':
+      case 'C':
+      case 'c':
+      case 'S':
+      case 's':
+      case 'Q':
+      case 'q':
+      case 'T':
+      case 't':
+      case 'A':
+      case 'a':
+      case 'Z':
+      case 'z':
         return true;
       default:
         return false;
@@ -94,10 +111,16 @@ class PathParser {
     auto digit = [](char c) { return c >= '0' && c <= '9'; };
     if (at(pos_) == '+' || at(pos_) == '-') ++pos_;
     bool digits = false;
-    while (digit(at(pos_))) { ++pos_; digits = true; }
+    while (digit(at(pos_))) {
+      ++pos_;
+      digits = true;
+    }
     if (at(pos_) == '.') {
       ++pos_;
-      while (digit(at(pos_))) { ++pos_; digits = true; }
+      while (digit(at(pos_))) {
+        ++pos_;
+        digits = true;
+      }
     }
     if (!digits) {
       pos_ = start;
@@ -195,10 +218,13 @@ class PathParser {
         pen_ = p;
         break;
       }
-      case 'C': case 'S': {
+      case 'C':
+      case 'S': {
         Vec2 c1;
-        if (up == 'C') c1 = point(rel);
-        else c1 = (last_ == 'C' || last_ == 'S') ? pen_ * 2.0 - last_cubic_control_ : pen_;
+        if (up == 'C')
+          c1 = point(rel);
+        else
+          c1 = (last_ == 'C' || last_ == 'S') ? pen_ * 2.0 - last_cubic_control_ : pen_;
         const Vec2 c2 = point(rel);
         const Vec2 p = point(rel);
         add(RationalBezier::cubic(pen_, c1, c2, p));
@@ -206,10 +232,13 @@ class PathParser {
         pen_ = p;
         break;
       }
-      case 'Q': case 'T': {
+      case 'Q':
+      case 'T': {
         Vec2 c;
-        if (up == 'Q') c = point(rel);
-        else c = (last_ == 'Q' || last_ == 'T') ? pen_ * 2.0 - last_quad_control_ : pen_;
+        if (up == 'Q')
+          c = point(rel);
+        else
+          c = (last_ == 'Q' || last_ == 'T') ? pen_ * 2.0 - last_quad_control_ : pen_;
         check(c);
         const Vec2 p = point(rel);
         add(RationalBezier::conic(pen_, c, p, 1.0));

@@ -592,7 +592,8 @@ void piece_at(const Vec2* h, int n, double w, double t, Vec2& point, Vec2& deriv
 // cross, and slow convergence give false: the pieces are then halved.
 bool crossing_parameters(const Vec2* p, int np, double wp, const Vec2* q, int nq, double wq, double& t, double& s) {
   const Vec2 pa = p[0], pb = p[np - 1], qa = q[0], qb = q[nq - 1];
-  if (orient2d(pa, pb, qa) * orient2d(pa, pb, qb) >= 0 || orient2d(qa, qb, pa) * orient2d(qa, qb, pb) >= 0) return false;
+  if (orient2d(pa, pb, qa) * orient2d(pa, pb, qb) >= 0 || orient2d(qa, qb, pa) * orient2d(qa, qb, pb) >= 0)
+    return false;
   const Vec2 r = pb - pa, d = qb - qa;
   const double denominator = cross(r, d);
   t = cross(qa - pa, d) / denominator;
@@ -670,7 +671,7 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
   // every pair; a pass that splits sets them all for the next one.)
   for (int pass = 0; pass <= tolerance::kMaxHullSubdivisionDepth; ++pass) {
     bool any = false;
-    bool overlap_left = false;  // an overlap seen in this pass
+    bool overlap_left = false;     // an overlap seen in this pass
     bool unsplit_overlap = false;  // one where neither piece could be split
     // rings_cross(rings, true) over the same pairs; it stands when this pass
     // is the last (no conic split). Once true, nothing more to look for.
@@ -754,8 +755,8 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
           const HullRef &p = unsorted[k], &q = unsorted[next];
           next_piece[k] = static_cast<std::uint32_t>(next);
           previous_piece[next] = static_cast<std::uint32_t>(k);
-          apart_from_next[k] = static_cast<char>(
-              joint_apart(p.hull[0], p.hull[1], p.n == 3, q.hull[0], q.hull[1], q.n == 3, q.end()));
+          apart_from_next[k] =
+              static_cast<char>(joint_apart(p.hull[0], p.hull[1], p.n == 3, q.hull[0], q.hull[1], q.n == 3, q.end()));
         }
       }
       // The bits of the block at base for the pieces consecutive to piece i
@@ -763,9 +764,10 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
       // large unsigned difference).
       auto joints_apart = [&](std::size_t i, std::size_t base) -> std::uint64_t {
         const std::size_t next = next_piece[i] - base, previous = previous_piece[i] - base;
-        const std::uint64_t next_bit = static_cast<std::uint64_t>((apart_from_next[i] != 0) & (next < 64)) << (next & 63);
-        const std::uint64_t previous_bit = static_cast<std::uint64_t>((apart_from_next[previous_piece[i]] != 0) & (previous < 64))
-                                           << (previous & 63);
+        const std::uint64_t next_bit = static_cast<std::uint64_t>((apart_from_next[i] != 0) & (next < 64))
+                                       << (next & 63);
+        const std::uint64_t previous_bit =
+            static_cast<std::uint64_t>((apart_from_next[previous_piece[i]] != 0) & (previous < 64)) << (previous & 63);
         return next_bit | previous_bit;
       };
       auto test_pair = [&](const HullRef& ri, const HullRef& rj) {
@@ -832,8 +834,9 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
           double t = 0.0, u = 0.0;
           if (crossing_parameters(ri.hull, ri.n, ri.weight, rj.hull, rj.n, rj.weight, t, u)) {
             const HullRef& conic = ci ? ri : rj;
-            Vec2 x = canonical(
-                split(Segment::conic(conic.hull[0], conic.hull[1], conic.hull[2], conic.weight), ci ? t : u).second.p[0]);
+            Vec2 x =
+                canonical(split(Segment::conic(conic.hull[0], conic.hull[1], conic.hull[2], conic.weight), ci ? t : u)
+                              .second.p[0]);
             // On a horizontal or vertical line (most of a font's lines) the
             // point is put on the line exactly, a move of its rounding: then
             // it is on every line along that one too (another contour's
@@ -1021,7 +1024,8 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
     crossing_split = crossing_split || split_this_pass;
     // (Each line's further points once, in mark order.)
     std::sort(more_line_points.begin(), more_line_points.end(), [](const auto& u, const auto& v) {
-      return u.first != v.first ? u.first < v.first : std::make_pair(u.second.x, u.second.y) < std::make_pair(v.second.x, v.second.y);
+      return u.first != v.first ? u.first < v.first
+                                : std::make_pair(u.second.x, u.second.y) < std::make_pair(v.second.x, v.second.y);
     });
     more_line_points.erase(std::unique(more_line_points.begin(), more_line_points.end()), more_line_points.end());
     child_first.resize(split_marks.size() + 1);
@@ -1035,7 +1039,8 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
     for (std::size_t r = 0; r < rings.size(); ++r) {
       const char* ring_marks = split_marks.data() + mark_base[r];
       for (Piece& piece : rings[r]) piece.fresh = false;
-      if (std::all_of(ring_marks, ring_marks + rings[r].size(), [](char m) { return m == 0; })) continue;  // nothing to split
+      if (std::all_of(ring_marks, ring_marks + rings[r].size(), [](char m) { return m == 0; }))
+        continue;  // nothing to split
       Ring next = take_ring();
       next.reserve(rings[r].size() + 8);
       for (std::size_t i = 0; i < rings[r].size(); ++i) {
@@ -1083,7 +1088,12 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
 // --- Nesting -------------------------------------------------------------------------
 
 Where point_in_ring(const Ring& ring, Vec2 p) {
-  return point_in_polygon(ring.size(), [&](std::size_t i) { return std::pair{ring[i].a, ring_end(ring, i)}; }, p);
+  return point_in_polygon(
+      ring.size(),
+      [&](std::size_t i) {
+        return std::pair{ring[i].a, ring_end(ring, i)};
+      },
+      p);
 }
 
 namespace {
@@ -1470,8 +1480,8 @@ bool build_mesh_once(const Outline& outline, const MeshOptions& options, Mesh& m
     // ring of two pieces). A wrong answer would only make the sweep give up.
     const Ring& ring = rings[lowest_ring];
     const std::size_t n = ring.size();
-    const int turn = orient2d(ring[lowest_piece == 0 ? n - 1 : lowest_piece - 1].a, lowest,
-                              ring_end(ring, lowest_piece));
+    const int turn =
+        orient2d(ring[lowest_piece == 0 ? n - 1 : lowest_piece - 1].a, lowest, ring_end(ring, lowest_piece));
     make_loops(next_index, turn != 0 ? turn < 0 : ring_area(ring) < 0.0);
     stage_mark(MeshStage::Loops);
     swept = sweep_loops(&repeated);

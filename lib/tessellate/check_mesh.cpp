@@ -181,7 +181,8 @@ double swept_nonzero_area(const Outline& outline, bool& crossing) {
   {
     std::vector<std::size_t> order(edges.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return edges[x].box.min.x < edges[y].box.min.x; });
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t x, std::size_t y) { return edges[x].box.min.x < edges[y].box.min.x; });
     for (std::size_t oi = 0; oi < order.size(); ++oi) {
       const FlatEdge& e = edges[order[oi]];
       for (std::size_t oj = oi + 1; oj < order.size() && edges[order[oj]].box.min.x <= e.box.max.x; ++oj) {
@@ -211,7 +212,8 @@ double swept_nonzero_area(const Outline& outline, bool& crossing) {
   ys.erase(std::unique(ys.begin(), ys.end()), ys.end());
   std::vector<std::size_t> by_min(edges.size());
   for (std::size_t i = 0; i < by_min.size(); ++i) by_min[i] = i;
-  std::sort(by_min.begin(), by_min.end(), [&](std::size_t x, std::size_t y) { return edges[x].box.min.y < edges[y].box.min.y; });
+  std::sort(by_min.begin(), by_min.end(),
+            [&](std::size_t x, std::size_t y) { return edges[x].box.min.y < edges[y].box.min.y; });
   std::vector<std::size_t> active;
   struct Hit {
     double x;
@@ -269,8 +271,8 @@ void add_problem(MeshCheck& check, const std::string& line) {
 
 std::string edge_name(const Mesh& mesh, std::uint32_t a, std::uint32_t b) {
   char buf[160];
-  std::snprintf(buf, sizeof buf, "(%.17g, %.17g)-(%.17g, %.17g)", mesh.points[a].x, mesh.points[a].y,
-                mesh.points[b].x, mesh.points[b].y);
+  std::snprintf(buf, sizeof buf, "(%.17g, %.17g)-(%.17g, %.17g)", mesh.points[a].x, mesh.points[a].y, mesh.points[b].x,
+                mesh.points[b].y);
   return buf;
 }
 

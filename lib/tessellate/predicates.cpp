@@ -98,8 +98,7 @@ long double incircle(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   const long double alift = adx * adx + ady * ady;
   const long double blift = bdx * bdx + bdy * bdy;
   const long double clift = cdx * cdx + cdy * cdy;
-  return alift * (bdx * cdy - cdx * bdy) + blift * (cdx * ady - adx * cdy) +
-         clift * (adx * bdy - bdx * ady);
+  return alift * (bdx * cdy - cdx * bdy) + blift * (cdx * ady - adx * cdy) + clift * (adx * bdy - bdx * ady);
 }
 
 }  // namespace curvetext::detail

@@ -98,9 +98,8 @@ inline bool point_on_segment(Vec2 a, Vec2 b, Vec2 p) {
 inline Where point_in_triangle(Vec2 a, Vec2 b, Vec2 c, Vec2 p) {
   int o = orient2d(a, b, c);
   if (o == 0) {
-    return (point_on_segment(a, b, p) || point_on_segment(b, c, p) || point_on_segment(c, a, p))
-               ? Where::Boundary
-               : Where::Outside;
+    return (point_on_segment(a, b, p) || point_on_segment(b, c, p) || point_on_segment(c, a, p)) ? Where::Boundary
+                                                                                                 : Where::Outside;
   }
   const int s1 = orient2d(a, b, p) * o;
   const int s2 = orient2d(b, c, p) * o;
@@ -149,7 +148,6 @@ Where point_in_polygon(std::size_t count, EdgeAt edge, Vec2 p) {
   }
   return winding != 0 ? Where::Inside : Where::Outside;
 }
-
 
 // Exact sign of a double sum given as non-overlapping-free terms: used by
 // orient2d's slow path and exposed for tests.

@@ -549,7 +549,7 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
   struct Bins {
     double lo = 0.0, scale = 0.0;
     std::size_t count = 1;
-    std::vector<std::uint32_t> start;    // bin k's edges: members[start[k] .. start[k + 1])
+    std::vector<std::uint32_t> start;  // bin k's edges: members[start[k] .. start[k + 1])
     std::vector<std::uint32_t> members;
     std::size_t bin(double v) const {
       const double k = (v - lo) * scale;
@@ -712,7 +712,8 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
     // Counter-clockwise by the direction to each edge's other end (a conic's
     // chord: hulls are separated, so chords and arcs leave v in one order).
     auto other_end = [&](std::uint32_t k) { return end_point(k ^ 1u); };
-    std::sort(first_end, last_end, [&](std::uint32_t x, std::uint32_t y) { return angle_less(v, other_end(x), other_end(y)); });
+    std::sort(first_end, last_end,
+              [&](std::uint32_t x, std::uint32_t y) { return angle_less(v, other_end(x), other_end(y)); });
     const std::size_t degree = static_cast<std::size_t>(last_end - first_end);
     std::size_t known = degree;
     for (std::size_t j = 0; j < degree; ++j)
@@ -926,7 +927,8 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, bool hulls_s
     for (std::size_t i = 0; i < kept_count; ++i) ++out_first[start_vertex[i] + 1];
     for (std::size_t v = 0; v < vertices; ++v) out_first[v + 1] += out_first[v];
     out_edges.resize(kept_count);
-    for (std::size_t i = 0; i < kept_count; ++i) out_edges[out_first[start_vertex[i]]++] = static_cast<std::uint32_t>(i);
+    for (std::size_t i = 0; i < kept_count; ++i)
+      out_edges[out_first[start_vertex[i]]++] = static_cast<std::uint32_t>(i);
     // (Filling moved each vertex's first to its end: shift back.)
     for (std::size_t v = vertices; v > 0; --v) out_first[v] = out_first[v - 1];
     out_first[0] = 0;
@@ -1001,7 +1003,8 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, bool hulls_s
     Ring simple = take_ring();
     for (std::size_t i = 0; i < traced.size(); ++i) {
       const std::size_t prev = (i + traced.size() - 1) % traced.size();
-      if (traced.size() > 3 && !traced[i].conic && !traced[prev].conic && out_degree(start_vertex[ring_edges[i]]) == 1) {
+      if (traced.size() > 3 && !traced[i].conic && !traced[prev].conic &&
+          out_degree(start_vertex[ring_edges[i]]) == 1) {
         const Vec2 a = traced[prev].a, b = traced[i].a, c = ring_end(traced, i);
         if (orient2d(a, b, c) == 0 && dot(b - a, c - b) > 0.0 && !is_control_point(b)) continue;
       }

@@ -21,16 +21,16 @@
 namespace curvetext::detail {
 
 enum class MeshStage : int {
-  Clean,        // clean_rings: outline -> rings of pieces (cubics split)
-  Separate,     // separate_hulls
-  Resolve,      // resolve_crossings and hull separation again (overlapping contours only)
-  Loops,        // orientation (or nest_rings) and the polygon loops + curved triangles
-  Triangles,    // the sweep, or bridging and ear clipping
-  Flips,        // Delaunay flips
+  Clean,      // clean_rings: outline -> rings of pieces (cubics split)
+  Separate,   // separate_hulls
+  Resolve,    // resolve_crossings and hull separation again (overlapping contours only)
+  Loops,      // orientation (or nest_rings) and the polygon loops + curved triangles
+  Triangles,  // the sweep, or bridging and ear clipping
+  Flips,      // Delaunay flips
 };
 inline constexpr int kMeshStageCount = 6;
-inline constexpr const char* kMeshStageNames[kMeshStageCount] = {"clean",       "separate", "resolve", "loops",
-                                                                  "triangles", "flips"};
+inline constexpr const char* kMeshStageNames[kMeshStageCount] = {"clean", "separate",  "resolve",
+                                                                 "loops", "triangles", "flips"};
 
 struct MeshStageTicks {
   std::uint64_t last = 0;

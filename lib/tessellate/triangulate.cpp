@@ -91,7 +91,11 @@ double loop_area(const std::vector<Vec2>& loop) {
 // Nonzero winding of a polygon loop around p, or Boundary when p is on it.
 Where point_in_loop(const std::vector<Vec2>& loop, Vec2 p) {
   return point_in_polygon(
-      loop.size(), [&](std::size_t i) { return std::pair{loop[i], loop[next_index(i, loop.size())]}; }, p);
+      loop.size(),
+      [&](std::size_t i) {
+        return std::pair{loop[i], loop[next_index(i, loop.size())]};
+      },
+      p);
 }
 
 // Whether the clockwise loop `hole` lies inside the counter-clockwise loop
@@ -296,10 +300,9 @@ std::vector<Vec2> bridge_holes(std::vector<Vec2> outer, std::vector<std::vector<
       std::iota(outer_order.begin(), outer_order.end(), std::size_t{0});
       const Vec2 h = hole[hi];
       const std::size_t limit = step == 0 ? outer.size() : std::min(kNearCandidates, outer.size());
-      std::partial_sort(outer_order.begin(), outer_order.begin() + static_cast<std::ptrdiff_t>(limit),
-                        outer_order.end(), [&](std::size_t a, std::size_t b) {
-                          return squared_distance(outer[a], h) < squared_distance(outer[b], h);
-                        });
+      std::partial_sort(
+          outer_order.begin(), outer_order.begin() + static_cast<std::ptrdiff_t>(limit), outer_order.end(),
+          [&](std::size_t a, std::size_t b) { return squared_distance(outer[a], h) < squared_distance(outer[b], h); });
       for (std::size_t c = 0; c < limit; ++c) {
         if (outer[outer_order[c]] == h || bridge_valid(outer, outer_order[c], hole, hi, obstacles)) {
           found_o = outer_order[c];
@@ -688,7 +691,7 @@ void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std:
     if (edges.find(cd)) continue;  // would duplicate an existing edge
     triangles[t1] = {a, d, c};
     triangles[t2] = {d, b, c};
-    e->count = 0;  // edge a-b is gone
+    e->count = 0;                               // edge a-b is gone
     EdgeTable::Faces& new_edge = edges.at(cd);  // may move the table: e is not used below
     new_edge.face[0] = t1;
     new_edge.face[1] = t2;
@@ -770,7 +773,7 @@ void delaunay_flips_manifold(const std::vector<Vec2>& points, std::vector<std::a
         std::size_t slot = slot_of(a, b);
         while ((keys[slot] != key) & (keys[slot] != kEmptyKey)) slot = (slot + 1) & mask;
         const std::int32_t found = -static_cast<std::int32_t>(keys[slot] == key);  // all ones or zero
-        twin[4 * t + k] = (half_edges[slot] & found) | ~found;                    // the twin or -1
+        twin[4 * t + k] = (half_edges[slot] & found) | ~found;                     // the twin or -1
       }
     }
   }
@@ -796,7 +799,8 @@ void delaunay_flips_manifold(const std::vector<Vec2>& points, std::vector<std::a
     // occurs twice (a non-manifold input: never from the sweep) can leave
     // the pairs one-sided, and those are never flipped.
     if (g < 0 || twin[static_cast<std::size_t>(g)] != static_cast<std::int32_t>(h)) continue;
-    const std::uint32_t t1 = h >> 2, k1 = h & 3, t2 = static_cast<std::uint32_t>(g) >> 2, k2 = static_cast<std::uint32_t>(g) & 3;
+    const std::uint32_t t1 = h >> 2, k1 = h & 3, t2 = static_cast<std::uint32_t>(g) >> 2,
+                        k2 = static_cast<std::uint32_t>(g) & 3;
     const std::uint32_t a = triangles[t1][k1], b = triangles[t1][kNext[k1]], c = triangles[t1][kPrev[k1]];
     const std::uint32_t d = triangles[t2][kPrev[k2]];
     if (c == d) continue;

@@ -63,9 +63,7 @@ bool sweep_triangulate(const std::vector<Vec2>& points, const std::vector<std::u
                        std::vector<std::array<std::uint32_t, 3>>& triangles, bool* repeated_position = nullptr);
 
 using EdgeKey = std::pair<std::uint32_t, std::uint32_t>;  // (min index, max index)
-inline EdgeKey edge_key(std::uint32_t a, std::uint32_t b) {
-  return a < b ? EdgeKey{a, b} : EdgeKey{b, a};
-}
+inline EdgeKey edge_key(std::uint32_t a, std::uint32_t b) { return a < b ? EdgeKey{a, b} : EdgeKey{b, a}; }
 
 // Lawson flips on counter-clockwise index triangles: an edge shared by two
 // triangles whose quad is strictly convex is flipped while the opposite vertex
@@ -86,4 +84,3 @@ void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std:
 void delaunay_flips_manifold(const std::vector<Vec2>& points, std::vector<std::array<std::uint32_t, 3>>& triangles);
 
 }  // namespace curvetext::detail
-

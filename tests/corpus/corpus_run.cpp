@@ -65,9 +65,12 @@ void write_number(std::int64_t v) {
 
 const char* stage_name(int stage) {
   switch (stage) {
-    case 0: return "building or checking its mesh";
-    case 1: return "drawing the page that starts with it";
-    default: return "computing its reference or comparing";
+    case 0:
+      return "building or checking its mesh";
+    case 1:
+      return "drawing the page that starts with it";
+    default:
+      return "computing its reference or comparing";
   }
 }
 
@@ -118,17 +121,28 @@ int main(int argc, char** argv) {
     const std::string a = argv[i];
     if (i + 1 >= argc) return usage(("missing value for " + a).c_str());
     const char* v = argv[++i];
-    if (a == "--font") path = v;
-    else if (a == "--face") face = std::atoi(v);
-    else if (a == "--variations") variations = v;
-    else if (a == "--size") size = std::atof(v);
-    else if (a == "--first") first = static_cast<std::uint32_t>(std::strtoul(v, nullptr, 10));
-    else if (a == "--stride") stride = static_cast<std::uint32_t>(std::strtoul(v, nullptr, 10));
-    else if (a == "--hang-seconds") hang_seconds = std::atof(v);
-    else if (a == "--images") images = std::atoi(v);
-    else if (a == "--stats") stats_path = v;
-    else if (a == "--all-images") all_images = std::string(v) == "yes";
-    else if (a == "--broken") broken = std::string(v) == "drop-triangle";
+    if (a == "--font")
+      path = v;
+    else if (a == "--face")
+      face = std::atoi(v);
+    else if (a == "--variations")
+      variations = v;
+    else if (a == "--size")
+      size = std::atof(v);
+    else if (a == "--first")
+      first = static_cast<std::uint32_t>(std::strtoul(v, nullptr, 10));
+    else if (a == "--stride")
+      stride = static_cast<std::uint32_t>(std::strtoul(v, nullptr, 10));
+    else if (a == "--hang-seconds")
+      hang_seconds = std::atof(v);
+    else if (a == "--images")
+      images = std::atoi(v);
+    else if (a == "--stats")
+      stats_path = v;
+    else if (a == "--all-images")
+      all_images = std::string(v) == "yes";
+    else if (a == "--broken")
+      broken = std::string(v) == "drop-triangle";
     else if (a == "--skip") {
       for (const char* p = v; *p;) {
         char* end = nullptr;
@@ -136,7 +150,8 @@ int main(int argc, char** argv) {
         if (end == p) break;
         p = *end == ',' ? end + 1 : end;
       }
-    } else return usage(("unknown option " + a).c_str());
+    } else
+      return usage(("unknown option " + a).c_str());
   }
   if (path.empty()) return usage("--font is required");
   if (!(size > 0) || stride == 0) return usage("bad --size or --stride");
@@ -150,8 +165,9 @@ int main(int argc, char** argv) {
     for (;;) {
       std::this_thread::sleep_for(std::chrono::milliseconds(250));
       if (g_progress.glyph.load() < 0) continue;
-      const std::int64_t now = std::chrono::duration_cast<std::chrono::nanoseconds>(
-                                    std::chrono::steady_clock::now().time_since_epoch()).count();
+      const std::int64_t now =
+          std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+              .count();
       if (static_cast<double>(now - g_progress.since_ns.load()) * 1e-9 > hang_seconds) {
         char text[96];
         std::snprintf(text, sizeof text, "no result after %.3g s (hard time bound)", hang_seconds);
@@ -190,7 +206,8 @@ int main(int argc, char** argv) {
         if (!skip.count(g)) ids.push_back(g);
       const test::CorpusResult r = test::check_corpus(renderer, font, ids, options);
       g_progress.glyph.store(-1);
-      for (const test::GlyphFailure& f : r.failures) std::printf("%s glyph %u: %s\n", g_prefix, f.glyph, f.reason.c_str());
+      for (const test::GlyphFailure& f : r.failures)
+        std::printf("%s glyph %u: %s\n", g_prefix, f.glyph, f.reason.c_str());
       std::printf("CHUNK first %u glyphs %zu empty %zu compared %zu failed %zu\n", chunk, r.glyphs, r.empty, r.compared,
                   r.failed_glyphs);
       std::fflush(stdout);

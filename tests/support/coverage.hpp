@@ -33,19 +33,17 @@ Coverage coverage_from_black_on_white(const Image& image);
 // and box-filtered down, so its per-pixel error (chords, 1/64 px rounding) is
 // divided by `supersample`. Conics must have weight 1 (FreeType has no
 // rational curves). Cubics are passed to FreeType as cubics.
-Coverage freetype_reference(const Outline& outline, const Placement& placement, int width, int height,
-                            int supersample);
+Coverage freetype_reference(const Outline& outline, const Placement& placement, int width, int height, int supersample);
 
 // Coverage by point sampling an inside test on an n x n grid per pixel (for
 // analytic shapes such as circles and rational conics).
-Coverage sampled_reference(const std::function<bool(double x, double y)>& inside, int width, int height,
-                           int n);
+Coverage sampled_reference(const std::function<bool(double x, double y)>& inside, int width, int height, int n);
 
 struct CoverageStats {
   double mean_abs = 0.0;       // over the whole image
   double edge_mean_abs = 0.0;  // over the edge band
   double max_abs = 0.0;
-  double ink_ratio = 1.0;      // sum(result) / sum(reference)
+  double ink_ratio = 1.0;  // sum(result) / sum(reference)
   std::size_t edge_pixels = 0;
 };
 

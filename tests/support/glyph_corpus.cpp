@@ -69,7 +69,8 @@ Mesh merge_page(const Page& page, bool drop_a_triangle) {
       double best = -1.0;
       for (std::size_t i = 0; i < g.mesh.triangles.size(); ++i) {
         const auto& t = g.mesh.triangles[i];
-        const double a = std::abs(cross(g.mesh.points[t[1]] - g.mesh.points[t[0]], g.mesh.points[t[2]] - g.mesh.points[t[0]]));
+        const double a =
+            std::abs(cross(g.mesh.points[t[1]] - g.mesh.points[t[0]], g.mesh.points[t[2]] - g.mesh.points[t[0]]));
         if (a > best) {
           best = a;
           skip = i;
@@ -163,8 +164,7 @@ double core_error(const Coverage& result, const Coverage& reference) {
 
 class Checker {
  public:
-  Checker(Renderer& renderer, const Font* font, double units_per_em, const CorpusOptions& options,
-          CorpusResult& result)
+  Checker(Renderer& renderer, const Font* font, double units_per_em, const CorpusOptions& options, CorpusResult& result)
       : renderer_(renderer), font_(font), options_(options), result_(result), upem_(units_per_em) {
     scale_ = options.size_px / upem_;
     // The level of detail the glyph cache would use at the test size.
@@ -211,7 +211,8 @@ class Checker {
     }
     if (seconds > options_.max_glyph_seconds) {
       char text[96];
-      std::snprintf(text, sizeof text, "mesh build + check took %.2f s (limit %.2f s)", seconds, options_.max_glyph_seconds);
+      std::snprintf(text, sizeof text, "mesh build + check took %.2f s (limit %.2f s)", seconds,
+                    options_.max_glyph_seconds);
       fail(glyph, text);
     }
     g.box = g.quadratic.control_box();
@@ -365,7 +366,8 @@ class Checker {
                crack_bad = crack > kCorpusCrackLimit;
     const bool failed = edge_bad || region_bad || crack_bad;
     if (!failed && options_.images_of_passing_glyphs) {
-      write_comparison((options_.label.empty() ? "corpus" : options_.label) + "-g" + std::to_string(g.glyph), got, want);
+      write_comparison((options_.label.empty() ? "corpus" : options_.label) + "-g" + std::to_string(g.glyph), got,
+                       want);
     }
     if (failed) {
       char text[320];
@@ -375,8 +377,8 @@ class Checker {
                     options_.size_px, s.edge_mean_abs, kCorpusEdgeMeanLimit, blurred, kCorpusBlurredErrorLimit, crack,
                     kCorpusCrackLimit, ink, ink_ref, s.max_abs, core);
       // A first guess at the kind of fault, for whoever reads the list.
-      const char* kind = region_bad   ? " [a region filled wrongly]"
-                         : crack_bad  ? " [a line of pixels too light: crack or faded thin stroke]"
+      const char* kind = region_bad      ? " [a region filled wrongly]"
+                         : crack_bad     ? " [a line of pixels too light: crack or faded thin stroke]"
                          : ink > ink_ref ? " [edges too dark: sub-pixel strokes?]"
                                          : " [edges too light]";
       std::string reason = std::string(text) + kind;

@@ -74,7 +74,7 @@ struct CorpusOptions {
   // glyphs, named <label>-g<id>, in build/test-output.
   int max_images = 20;
   bool images_of_passing_glyphs = false;  // for looking at glyphs that pass
-  std::string label;  // names the font in messages and image names
+  std::string label;                      // names the font in messages and image names
   CorpusProgress* progress = nullptr;
   // Drop one interior triangle of every mesh before drawing: a deliberately
   // broken mesh, to show that the comparison catches it.
@@ -90,9 +90,9 @@ struct GlyphFailure {
 };
 
 struct CorpusResult {
-  std::size_t glyphs = 0;    // examined
-  std::size_t empty = 0;     // without contours
-  std::size_t compared = 0;  // drawn and compared
+  std::size_t glyphs = 0;              // examined
+  std::size_t empty = 0;               // without contours
+  std::size_t compared = 0;            // drawn and compared
   std::vector<GlyphFailure> failures;  // one entry per reason
   std::size_t failed_glyphs = 0;
   double max_area_error = 0.0;  // relative, from check_mesh

@@ -49,8 +49,7 @@ void flatten_conic(Vec2 a, Vec2 c, Vec2 b, double w, double tol, int depth, std:
 }
 
 void flatten_cubic(Vec2 a, Vec2 c1, Vec2 c2, Vec2 b, double tol, int depth, std::vector<Vec2>& out) {
-  if (depth >= kMaxFlattenDepth ||
-      std::max(distance_to_segment(c1, a, b), distance_to_segment(c2, a, b)) <= tol) {
+  if (depth >= kMaxFlattenDepth || std::max(distance_to_segment(c1, a, b), distance_to_segment(c2, a, b)) <= tol) {
     out.push_back(b);
     return;
   }
@@ -103,8 +102,10 @@ void add_chains(const std::vector<Vec2>& ring, std::vector<Chain>& chains) {
       finish();
       current.dir = dir;
     }
-    if (dir > 0) current.pieces.push_back({p.x, p.y, q.x, q.y});
-    else current.pieces.push_back({q.x, q.y, p.x, p.y});
+    if (dir > 0)
+      current.pieces.push_back({p.x, p.y, q.x, q.y});
+    else
+      current.pieces.push_back({q.x, q.y, p.x, p.y});
   }
   finish();
 }
@@ -130,7 +131,9 @@ struct RowAccumulator {
   std::vector<double> cover;  // per column, partial contributions
   std::vector<double> carry;  // difference array of full-height contributions
   RowAccumulator(int first_column, int count)
-      : col0(first_column), cover(static_cast<std::size_t>(count), 0.0), carry(static_cast<std::size_t>(count) + 1, 0.0) {}
+      : col0(first_column),
+        cover(static_cast<std::size_t>(count), 0.0),
+        carry(static_cast<std::size_t>(count) + 1, 0.0) {}
   void clear() {
     std::fill(cover.begin(), cover.end(), 0.0);
     std::fill(carry.begin(), carry.end(), 0.0);
@@ -172,8 +175,10 @@ void crossings(const Chain& a, std::size_t a0, std::size_t a1, const Chain& b, s
         if (d_hi == 0.0) out.push_back(hi);
       }
     }
-    if (p.yb < q.yb) ++i;
-    else ++k;
+    if (p.yb < q.yb)
+      ++i;
+    else
+      ++k;
   }
 }
 
@@ -190,9 +195,15 @@ void add_union_coverage(const Outline& pixel_outline, Coverage& target, double f
     ring.push_back(contour.segments.front().start());
     for (const Segment& s : contour.segments) {
       switch (s.kind) {
-        case Segment::Kind::Line: ring.push_back(s.p[1]); break;
-        case Segment::Kind::Conic: flatten_conic(s.p[0], s.p[1], s.p[2], s.weight, flatness_px, 0, ring); break;
-        case Segment::Kind::Cubic: flatten_cubic(s.p[0], s.p[1], s.p[2], s.p[3], flatness_px, 0, ring); break;
+        case Segment::Kind::Line:
+          ring.push_back(s.p[1]);
+          break;
+        case Segment::Kind::Conic:
+          flatten_conic(s.p[0], s.p[1], s.p[2], s.weight, flatness_px, 0, ring);
+          break;
+        case Segment::Kind::Cubic:
+          flatten_cubic(s.p[0], s.p[1], s.p[2], s.p[3], flatness_px, 0, ring);
+          break;
       }
     }
     ring.pop_back();  // the contour is closed: its last point is its first
@@ -235,10 +246,17 @@ void add_union_coverage(const Outline& pixel_outline, Coverage& target, double f
     for (std::size_t ci = 0; ci < chains.size(); ++ci) {
       const Chain& c = chains[ci];
       if (!(c.ymin < y1 && c.ymax > y0)) continue;
-      const auto begin = std::partition_point(c.pieces.begin(), c.pieces.end(), [&](const Piece& p) { return p.yb <= y0; });
+      const auto begin =
+          std::partition_point(c.pieces.begin(), c.pieces.end(), [&](const Piece& p) { return p.yb <= y0; });
       const auto end = std::partition_point(begin, c.pieces.end(), [&](const Piece& p) { return p.ya < y1; });
-      Active a{ci, static_cast<std::size_t>(begin - c.pieces.begin()), static_cast<std::size_t>(end - c.pieces.begin()),
-               1e300, -1e300, 0, 0, 0.0};
+      Active a{ci,
+               static_cast<std::size_t>(begin - c.pieces.begin()),
+               static_cast<std::size_t>(end - c.pieces.begin()),
+               1e300,
+               -1e300,
+               0,
+               0,
+               0.0};
       for (auto it = begin; it != end; ++it) {
         a.xlo = std::min({a.xlo, it->xa, it->xb});
         a.xhi = std::max({a.xhi, it->xa, it->xb});
@@ -275,13 +293,16 @@ void add_union_coverage(const Outline& pixel_outline, Coverage& target, double f
         a.x_mid = c.pieces[k].x_at(ym);
         order.push_back(i);
       }
-      std::sort(order.begin(), order.end(), [&](std::size_t l, std::size_t r) { return active[l].x_mid < active[r].x_mid; });
+      std::sort(order.begin(), order.end(),
+                [&](std::size_t l, std::size_t r) { return active[l].x_mid < active[r].x_mid; });
       int winding = 0;
       for (const std::size_t i : order) {
         const int before = winding;
         winding += chains[active[i].chain].dir;
-        if (before == 0 && winding != 0) active[i].sign = 1;
-        else if (before != 0 && winding == 0) active[i].sign = -1;
+        if (before == 0 && winding != 0)
+          active[i].sign = 1;
+        else if (before != 0 && winding == 0)
+          active[i].sign = -1;
       }
       for (const std::size_t i : order) {
         const Active& a = active[i];

@@ -31,7 +31,6 @@ inline constexpr double kUnionFlatnessPx = 1.0 / 512.0;
 void add_union_coverage(const Outline& pixel_outline, Coverage& target, double flatness_px = kUnionFlatnessPx);
 
 // A new width x height image holding the coverage of `pixel_outline`.
-Coverage union_coverage(const Outline& pixel_outline, int width, int height,
-                        double flatness_px = kUnionFlatnessPx);
+Coverage union_coverage(const Outline& pixel_outline, int width, int height, double flatness_px = kUnionFlatnessPx);
 
 }  // namespace curvetext::test

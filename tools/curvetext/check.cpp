@@ -27,10 +27,18 @@ std::string json_string(const std::string& s) {
   std::string out = "\"";
   for (const char c : s) {
     switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
       default:
         if (static_cast<unsigned char>(c) < 0x20) {
           char buf[8];
@@ -55,10 +63,14 @@ int run_check(const std::vector<std::string>& arguments) {
   while (args.next()) {
     const std::string& a = args.option();
     if (font_choice.parse(args)) continue;
-    if (a == "--size") size_px = parse_number(a, args.value());
-    else if (a == "--json") json = true;
-    else if (a == "--max-glyphs") max_glyphs = parse_int(a, args.value());
-    else throw UsageError{"unknown option " + a};
+    if (a == "--size")
+      size_px = parse_number(a, args.value());
+    else if (a == "--json")
+      json = true;
+    else if (a == "--max-glyphs")
+      max_glyphs = parse_int(a, args.value());
+    else
+      throw UsageError{"unknown option " + a};
   }
   if (!(size_px > 0) || !std::isfinite(size_px)) throw Error(ErrorCode::InvalidArgument, "--size must be positive");
 
@@ -115,9 +127,10 @@ int run_check(const std::vector<std::string>& arguments) {
         std::printf("%s%s", k ? ", " : "", json_string(failures[i].reasons[k]).c_str());
       std::printf("]}");
     }
-    std::printf("], \"max_area_rel_error\": %.3g, \"mean_triangles\": %.2f, \"mean_curved_triangles\": %.2f, "
-                "\"mean_bytes\": %.0f, \"build_us_median\": %.2f, \"size_px\": %g}\n",
-                max_area_error, (triangles + curved) / built, curved / built, bytes / built, median_us, size_px);
+    std::printf(
+        "], \"max_area_rel_error\": %.3g, \"mean_triangles\": %.2f, \"mean_curved_triangles\": %.2f, "
+        "\"mean_bytes\": %.0f, \"build_us_median\": %.2f, \"size_px\": %g}\n",
+        max_area_error, (triangles + curved) / built, curved / built, bytes / built, median_us, size_px);
   } else {
     std::printf("font: %s (face %d)\n", font.path().c_str(), font.face_index());
     std::printf("glyphs: %u (%u without contours)\n", count, empty);

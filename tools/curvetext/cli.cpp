@@ -42,10 +42,14 @@ std::string read_text_file(const std::string& path) {
 
 bool FontChoice::parse(Args& args) {
   const std::string& o = args.option();
-  if (o == "--font") path = args.value();
-  else if (o == "--face-index") face_index = parse_int(o, args.value());
-  else if (o == "--variations") variations = args.value();
-  else return false;
+  if (o == "--font")
+    path = args.value();
+  else if (o == "--face-index")
+    face_index = parse_int(o, args.value());
+  else if (o == "--variations")
+    variations = args.value();
+  else
+    return false;
   if (face_index < 0) throw UsageError{"--face-index must be 0 or more"};
   return true;
 }

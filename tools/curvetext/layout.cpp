@@ -43,7 +43,8 @@ BaseDirection parse_direction(const std::string& s) {
 
 double positive_or_zero(std::string_view option, std::string_view text) {
   const double v = parse_number(option, text);
-  if (!std::isfinite(v) || v < 0.0) throw UsageError{std::string(option) + " must be 0 or more, got '" + std::string(text) + "'"};
+  if (!std::isfinite(v) || v < 0.0)
+    throw UsageError{std::string(option) + " must be 0 or more, got '" + std::string(text) + "'"};
   return v;
 }
 
@@ -79,9 +80,12 @@ std::string num(double v) {
 
 bool LayoutCli::parse(Args& args) {
   const std::string& a = args.option();
-  if (a == "--font") fonts.push_back(args.value());
-  else if (a == "--width") style.width = positive_or_zero(a, args.value());
-  else if (a == "--align") style.align = parse_align(args.value());
+  if (a == "--font")
+    fonts.push_back(args.value());
+  else if (a == "--width")
+    style.width = positive_or_zero(a, args.value());
+  else if (a == "--align")
+    style.align = parse_align(args.value());
   else if (a == "--line-height") {
     // "1.5" is a multiple of the natural line height, "24px" a fixed advance.
     std::string v = args.value();
@@ -93,16 +97,22 @@ bool LayoutCli::parse(Args& args) {
   } else if (a == "--max-lines") {
     style.max_lines = parse_int(a, args.value());
     if (style.max_lines < 0) throw UsageError{"--max-lines must be 0 or more"};
-  } else if (a == "--ellipsis") style.ellipsis = parse_ellipsis(args.value());
-  else if (a == "--direction") style.direction = parse_direction(args.value());
-  else if (a == "--language") style.language = args.value();
-  else if (a == "--indent") style.first_line_indent = parse_number(a, args.value());
+  } else if (a == "--ellipsis")
+    style.ellipsis = parse_ellipsis(args.value());
+  else if (a == "--direction")
+    style.direction = parse_direction(args.value());
+  else if (a == "--language")
+    style.language = args.value();
+  else if (a == "--indent")
+    style.first_line_indent = parse_number(a, args.value());
   else if (a == "--tab-stops") {
     std::stringstream ss(args.value());
     std::string item;
     while (std::getline(ss, item, ',')) style.tab_stops.push_back(positive_or_zero(a, item));
-  } else if (a == "--markup") markup = true;
-  else return false;
+  } else if (a == "--markup")
+    markup = true;
+  else
+    return false;
   if (a != "--font" || fonts.size() > 1) used = true;
   return true;
 }
@@ -122,10 +132,15 @@ std::string parse_markup(const std::string& markup, const TextStyle& base, std::
     if (c == '&') {
       const std::size_t semi = markup.find(';', i);
       const std::string entity = semi == std::string::npos ? "" : markup.substr(i, semi - i + 1);
-      if (entity == "&lt;") text += '<';
-      else if (entity == "&gt;") text += '>';
-      else if (entity == "&amp;") text += '&';
-      else throw Error(ErrorCode::InvalidArgument, "markup: unknown entity at byte " + std::to_string(i) + " (use &lt; &gt; &amp;)");
+      if (entity == "&lt;")
+        text += '<';
+      else if (entity == "&gt;")
+        text += '>';
+      else if (entity == "&amp;")
+        text += '&';
+      else
+        throw Error(ErrorCode::InvalidArgument,
+                    "markup: unknown entity at byte " + std::to_string(i) + " (use &lt; &gt; &amp;)");
       i = semi + 1;
       continue;
     }
@@ -135,7 +150,8 @@ std::string parse_markup(const std::string& markup, const TextStyle& base, std::
       continue;
     }
     const std::size_t close = markup.find('>', i);
-    if (close == std::string::npos) throw Error(ErrorCode::InvalidArgument, "markup: unclosed '<' at byte " + std::to_string(i));
+    if (close == std::string::npos)
+      throw Error(ErrorCode::InvalidArgument, "markup: unclosed '<' at byte " + std::to_string(i));
     const std::string tag = markup.substr(i + 1, close - i - 1);
     i = close + 1;
     if (!tag.empty() && tag[0] == '/') {
@@ -162,16 +178,23 @@ std::string parse_markup(const std::string& markup, const TextStyle& base, std::
       }
       s.fonts.insert(s.fonts.begin(), fam + ":" + what);
     };
-    if (name == "b") restyle("bold");
-    else if (name == "i") restyle("italic");
-    else if (name == "u") s.underline = true;
-    else if (name == "s") s.strikethrough = true;
-    else if (name == "color") s.color = parse_color(value);
+    if (name == "b")
+      restyle("bold");
+    else if (name == "i")
+      restyle("italic");
+    else if (name == "u")
+      s.underline = true;
+    else if (name == "s")
+      s.strikethrough = true;
+    else if (name == "color")
+      s.color = parse_color(value);
     else if (name == "size") {
       s.size_px = parse_number("<size>", value);
       if (!(s.size_px > 0)) throw Error(ErrorCode::InvalidArgument, "markup: <size=...> must be positive");
-    } else if (name == "font") s.fonts.insert(s.fonts.begin(), value);
-    else throw Error(ErrorCode::InvalidArgument, "markup: unknown tag <" + tag + "> (b, i, u, s, color=, size=, font=)");
+    } else if (name == "font")
+      s.fonts.insert(s.fonts.begin(), value);
+    else
+      throw Error(ErrorCode::InvalidArgument, "markup: unknown tag <" + tag + "> (b, i, u, s, color=, size=, font=)");
     stack.push_back({name, text.size(), s});
   }
   if (!stack.empty()) throw Error(ErrorCode::InvalidArgument, "markup: <" + stack.back().tag + "> is not closed");
@@ -184,10 +207,10 @@ Paragraph layout_from_cli(FontCollection& fonts, const LayoutCli& options, const
   style.default_style.size_px = size_px;
   style.default_style.features = features;
   for (const std::string& f : options.fonts)
-    style.default_style.fonts.push_back(font_choice.face_index && &f == &options.fonts.front()
-                                            ? f + "#" + std::to_string(font_choice.face_index)
-                                            : f);
-  if (style.default_style.fonts.empty()) style.default_style.fonts.push_back(default_font_path(CURVETEXT_BUILD_FONT_DIR));
+    style.default_style.fonts.push_back(
+        font_choice.face_index && &f == &options.fonts.front() ? f + "#" + std::to_string(font_choice.face_index) : f);
+  if (style.default_style.fonts.empty())
+    style.default_style.fonts.push_back(default_font_path(CURVETEXT_BUILD_FONT_DIR));
   if (font_choice.variations) style.default_style.variations = parse_variations(*font_choice.variations);
   std::vector<TextSpan> spans;
   std::string plain = text;
@@ -206,33 +229,39 @@ int run_layout(const std::vector<std::string>& arguments) {
     const std::string& a = args.option();
     if (options.parse(args)) continue;
     if (font_choice.parse(args)) continue;
-    if (a == "--size") size = parse_number(a, args.value());
-    else if (a == "--text") text = args.value();
-    else if (a == "--text-file") text_file = args.value();
-    else if (a == "--features") features = args.value();
-    else if (a == "--json") json = true;
-    else throw UsageError{"unknown option " + a};
+    if (a == "--size")
+      size = parse_number(a, args.value());
+    else if (a == "--text")
+      text = args.value();
+    else if (a == "--text-file")
+      text_file = args.value();
+    else if (a == "--features")
+      features = args.value();
+    else if (a == "--json")
+      json = true;
+    else
+      throw UsageError{"unknown option " + a};
   }
   if (!size) throw UsageError{"--size is required"};
   if (text.has_value() == text_file.has_value()) throw UsageError{"give exactly one of --text and --text-file"};
   if (!json) throw UsageError{"layout prints JSON only: add --json"};
   if (text_file) text = read_text_file(*text_file);
   FontCollection fonts(default_font_path(CURVETEXT_BUILD_FONT_DIR));
-  const Paragraph p =
-      layout_from_cli(fonts, options, font_choice, *size, features ? parse_features(*features) : std::vector<Feature>{},
-                      *text);
+  const Paragraph p = layout_from_cli(fonts, options, font_choice, *size,
+                                      features ? parse_features(*features) : std::vector<Feature>{}, *text);
   std::string out = "{\"text_bytes\":" + std::to_string(p.text().size());
   const Rect logical = p.logical_bounds();
   const Rect ink = p.ink_bounds();
-  out += ",\"logical\":[" + num(logical.x) + "," + num(logical.y) + "," + num(logical.width) + "," + num(logical.height) + "]";
+  out += ",\"logical\":[" + num(logical.x) + "," + num(logical.y) + "," + num(logical.width) + "," +
+         num(logical.height) + "]";
   out += ",\"ink\":[" + num(ink.x) + "," + num(ink.y) + "," + num(ink.width) + "," + num(ink.height) + "]";
   out += ",\"lines\":[";
   for (std::size_t k = 0; k < p.lines().size(); ++k) {
     const LayoutLine& l = p.lines()[k];
     if (k) out += ",";
-    out += "{\"start\":" + std::to_string(l.start) + ",\"end\":" + std::to_string(l.end) + ",\"baseline\":" +
-           num(l.baseline) + ",\"top\":" + num(l.top) + ",\"height\":" + num(l.height) + ",\"x\":" + num(l.x) +
-           ",\"width\":" + num(l.width);
+    out += "{\"start\":" + std::to_string(l.start) + ",\"end\":" + std::to_string(l.end) +
+           ",\"baseline\":" + num(l.baseline) + ",\"top\":" + num(l.top) + ",\"height\":" + num(l.height) +
+           ",\"x\":" + num(l.x) + ",\"width\":" + num(l.width);
     if (l.ellipsized) out += ",\"ellipsized\":true";
     if (l.hyphenated) out += ",\"hyphenated\":true";
     out += ",\"runs\":[";
@@ -246,8 +275,8 @@ int run_layout(const std::vector<std::string>& arguments) {
       for (std::size_t g = 0; g < run.glyphs.size(); ++g) {
         const PositionedGlyph& pg = run.glyphs[g];
         if (g) out += ",";
-        out += "{\"id\":" + std::to_string(pg.id) + ",\"cluster\":" + std::to_string(pg.cluster) + ",\"x\":" +
-               num(pg.x) + ",\"y\":" + num(pg.y) + "}";
+        out += "{\"id\":" + std::to_string(pg.id) + ",\"cluster\":" + std::to_string(pg.cluster) +
+               ",\"x\":" + num(pg.x) + ",\"y\":" + num(pg.y) + "}";
       }
       out += "]}";
     }

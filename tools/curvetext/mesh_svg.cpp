@@ -43,7 +43,9 @@ std::string outline_path(const Outline& outline) {
     d << 'M' << pt(c.segments.front().start());
     for (const Segment& s : c.segments) {
       switch (s.kind) {
-        case Segment::Kind::Line: d << " L" << pt(s.p[1]); break;
+        case Segment::Kind::Line:
+          d << " L" << pt(s.p[1]);
+          break;
         case Segment::Kind::Conic:
           if (s.weight == 1.0) {
             d << " Q" << pt(s.p[1]) << ' ' << pt(s.p[2]);
@@ -51,7 +53,9 @@ std::string outline_path(const Outline& outline) {
             for (int i = 1; i <= 32; ++i) d << " L" << pt(evaluate(s, i / 32.0));
           }
           break;
-        case Segment::Kind::Cubic: d << " C" << pt(s.p[1]) << ' ' << pt(s.p[2]) << ' ' << pt(s.p[3]); break;
+        case Segment::Kind::Cubic:
+          d << " C" << pt(s.p[1]) << ' ' << pt(s.p[2]) << ' ' << pt(s.p[3]);
+          break;
       }
     }
     d << " Z ";
@@ -70,11 +74,16 @@ int run_mesh(const std::vector<std::string>& arguments) {
   while (args.next()) {
     const std::string& a = args.option();
     if (font_choice.parse(args)) continue;
-    if (a == "--glyph") glyph = parse_int(a, args.value());
-    else if (a == "--char") character = args.value();
-    else if (a == "--size") size_px = parse_number(a, args.value());
-    else if (a == "-o" || a == "--output") output = args.value();
-    else throw UsageError{"unknown option " + a};
+    if (a == "--glyph")
+      glyph = parse_int(a, args.value());
+    else if (a == "--char")
+      character = args.value();
+    else if (a == "--size")
+      size_px = parse_number(a, args.value());
+    else if (a == "-o" || a == "--output")
+      output = args.value();
+    else
+      throw UsageError{"unknown option " + a};
   }
   if (glyph.has_value() == character.has_value()) throw UsageError{"give exactly one of --glyph and --char"};
   if (!output) throw UsageError{"-o MESH.svg is required"};
@@ -99,9 +108,9 @@ int run_mesh(const std::vector<std::string>& arguments) {
   const double pad = 0.05 * std::max(box.max.x - box.min.x, box.max.y - box.min.y) + 1;
   const double stroke = std::max(box.max.x - box.min.x, box.max.y - box.min.y) / 400.0;
   std::ostringstream svg;
-  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << num(box.min.x - pad) << " "
-      << num(-box.max.y - pad) << " " << num(box.max.x - box.min.x + 2 * pad) << " "
-      << num(box.max.y - box.min.y + 2 * pad) << "\" width=\"800\" height=\"800\">\n";
+  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << num(box.min.x - pad) << " " << num(-box.max.y - pad)
+      << " " << num(box.max.x - box.min.x + 2 * pad) << " " << num(box.max.y - box.min.y + 2 * pad)
+      << "\" width=\"800\" height=\"800\">\n";
   svg << "<title>glyph " << id << ": " << mesh.triangles.size() << " interior, " << mesh.curves.size()
       << " curved triangles; " << (check.ok() ? "invariants hold" : "INVARIANTS VIOLATED") << "</title>\n";
   svg << "<g stroke=\"#5b6b8c\" stroke-width=\"" << num(stroke) << "\" stroke-linejoin=\"round\">\n";

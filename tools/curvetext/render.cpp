@@ -33,14 +33,22 @@ int run_render(const std::vector<std::string>& arguments) {
     if (style.parse(args, options)) continue;
     if (paragraph.parse(args)) continue;
     if (font_choice.parse(args)) continue;
-    if (a == "--size") size = parse_number(a, args.value());
-    else if (a == "--text") text = args.value();
-    else if (a == "--text-file") text_file = args.value();
-    else if (a == "-o" || a == "--output") output = args.value();
-    else if (a == "--margin") options.margin_px = parse_number(a, args.value());
-    else if (a == "--features") features = args.value();
-    else if (a == "--fg") options.foreground = parse_color(args.value());
-    else throw UsageError{"unknown option " + a};
+    if (a == "--size")
+      size = parse_number(a, args.value());
+    else if (a == "--text")
+      text = args.value();
+    else if (a == "--text-file")
+      text_file = args.value();
+    else if (a == "-o" || a == "--output")
+      output = args.value();
+    else if (a == "--margin")
+      options.margin_px = parse_number(a, args.value());
+    else if (a == "--features")
+      features = args.value();
+    else if (a == "--fg")
+      options.foreground = parse_color(args.value());
+    else
+      throw UsageError{"unknown option " + a};
   }
   if (!size) throw UsageError{"--size is required"};
   if (text.has_value() == text_file.has_value()) throw UsageError{"give exactly one of --text and --text-file"};
@@ -59,7 +67,8 @@ int run_render(const std::vector<std::string>& arguments) {
     if (text->empty()) throw Error(ErrorCode::InvalidText, "the text is empty");
     // --fg colours text outside markup colour spans.
     paragraph.style.default_style.color = options.foreground;
-    const Paragraph p = layout_from_cli(fonts, paragraph, font_choice, options.size_px, options.shaping.features, *text);
+    const Paragraph p =
+        layout_from_cli(fonts, paragraph, font_choice, options.size_px, options.shaping.features, *text);
     ParagraphImageOptions image_options;
     static_cast<ImageStyle&>(image_options) = options;
     image_options.margin_px = options.margin_px;

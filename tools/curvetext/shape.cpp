@@ -19,7 +19,8 @@ void parse_size(const std::string& text, int& width, int& height) {
   if (x == std::string::npos) throw UsageError{"--size needs WxH, got '" + text + "'"};
   width = parse_int("--size", std::string_view(text).substr(0, x));
   height = parse_int("--size", std::string_view(text).substr(x + 1));
-  if (width < 1 || height < 1) throw Error(ErrorCode::InvalidArgument, "--size " + text + ": sides must be at least 1 px");
+  if (width < 1 || height < 1)
+    throw Error(ErrorCode::InvalidArgument, "--size " + text + ": sides must be at least 1 px");
 }
 
 }  // namespace
@@ -34,16 +35,20 @@ int run_shape(const std::vector<std::string>& arguments) {
   while (args.next()) {
     const std::string& a = args.option();
     if (style.parse(args, options)) continue;
-    if (a == "--input" || a == "-i") input = args.value();
-    else if (a == "-o" || a == "--output") output = args.value();
-    else if (a == "--size") parse_size(args.value(), options.width, options.height);
+    if (a == "--input" || a == "-i")
+      input = args.value();
+    else if (a == "-o" || a == "--output")
+      output = args.value();
+    else if (a == "--size")
+      parse_size(args.value(), options.width, options.height);
     else if (a == "--scale") {
       options.scale = parse_number(a, args.value());
       if (!(options.scale > 0.0) || !std::isfinite(options.scale))
         throw Error(ErrorCode::InvalidArgument, "--scale must be a positive number of pixels per unit");
-    }
-    else if (a == "--fg") foreground = parse_color(args.value());
-    else throw UsageError{"unknown option " + a};
+    } else if (a == "--fg")
+      foreground = parse_color(args.value());
+    else
+      throw UsageError{"unknown option " + a};
   }
   if (!input) throw UsageError{"--input FILE is required"};
   if (!output) throw UsageError{"-o OUT.png is required"};

@@ -42,7 +42,7 @@ struct TextStyle {
   Color color{0, 0, 0, 1};
   std::vector<Feature> features;
   std::vector<Variation> variations;
-  std::string language;        // BCP 47; empty: the paragraph's
+  std::string language;         // BCP 47; empty: the paragraph's
   double letter_spacing = 0.0;  // px added after every grapheme cluster
   double word_spacing = 0.0;    // px added to every space
   bool underline = false;
@@ -65,13 +65,13 @@ struct ParagraphStyle {
   double width = 0.0;  // px; 0: no wrapping (one line per paragraph)
   Align align = Align::Start;
   BaseDirection direction = BaseDirection::Auto;
-  std::string language;          // BCP 47: line breaking tailoring and shaping
-  double line_height = 0.0;      // multiple of A - D + gap; 0 is 1
-  double line_height_px = 0.0;   // a fixed line advance in px; wins when > 0
+  std::string language;         // BCP 47: line breaking tailoring and shaping
+  double line_height = 0.0;     // multiple of A - D + gap; 0 is 1
+  double line_height_px = 0.0;  // a fixed line advance in px; wins when > 0
   double first_line_indent = 0.0;
-  std::vector<double> tab_stops;  // px from the line start, increasing
-  double tab_interval = 0.0;      // px between default stops after the last; 0: 8 spaces
-  int max_lines = 0;              // 0: unlimited
+  std::vector<double> tab_stops;       // px from the line start, increasing
+  double tab_interval = 0.0;           // px between default stops after the last; 0: 8 spaces
+  int max_lines = 0;                   // 0: unlimited
   Ellipsis ellipsis = Ellipsis::None;  // applies to the last line kept (needs width or max_lines)
 };
 
@@ -88,7 +88,7 @@ struct GlyphRun {
   std::shared_ptr<const Font> font;
   double size_px = 16.0;
   bool rtl = false;
-  std::size_t style = 0;  // index into Paragraph::styles()
+  std::size_t style = 0;           // index into Paragraph::styles()
   std::size_t start = 0, end = 0;  // UTF-8 byte range of the text (the ellipsis run: empty at the cut)
   double x = 0.0, width = 0.0;     // px, the run's pen extent
   std::vector<PositionedGlyph> glyphs;
@@ -99,16 +99,16 @@ struct Rect {
 };
 
 struct LayoutLine {
-  std::size_t start = 0, end = 0;  // UTF-8 byte range; lines tile the text
-  double top = 0.0;                // px
-  double baseline = 0.0;           // px
+  std::size_t start = 0, end = 0;                 // UTF-8 byte range; lines tile the text
+  double top = 0.0;                               // px
+  double baseline = 0.0;                          // px
   double ascent = 0.0, descent = 0.0, gap = 0.0;  // px, descent positive below the baseline
-  double height = 0.0;             // the line advance
-  double x = 0.0, width = 0.0;     // px, the content's extent (trailing spaces excluded)
-  int paragraph_level = 0;         // 1 for a right-to-left paragraph
+  double height = 0.0;                            // the line advance
+  double x = 0.0, width = 0.0;                    // px, the content's extent (trailing spaces excluded)
+  int paragraph_level = 0;                        // 1 for a right-to-left paragraph
   bool ellipsized = false;
-  bool hyphenated = false;  // ends at a soft hyphen drawn as a hyphen
-  std::vector<GlyphRun> runs;      // visual order
+  bool hyphenated = false;     // ends at a soft hyphen drawn as a hyphen
+  std::vector<GlyphRun> runs;  // visual order
 };
 
 // A caret at a text position: where a character inserted there would go.

@@ -38,8 +38,8 @@ void add_dictionary_breaks(std::u32string_view text, std::vector<BreakAction>& b
 // the text between the last break that fits and the first that does not: a
 // run lying wholly inside a line needs no word breaks, and the dictionary
 // lookup is most of the time spent on Thai text.
-bool add_dictionary_breaks(std::u32string_view text, std::vector<BreakAction>& breaks, std::size_t from,
-                           std::size_t to, std::vector<bool>& done);
+bool add_dictionary_breaks(std::u32string_view text, std::vector<BreakAction>& breaks, std::size_t from, std::size_t to,
+                           std::vector<bool>& done);
 
 // One flag per code point: true where a grapheme cluster starts. Covers the
 // rules that matter for carets: CR LF, combining marks and spacing marks,

@@ -60,11 +60,11 @@ double mesh_area(const Mesh& mesh);
 // The invariants of DESIGN.md section 4, checked on a built mesh.
 struct MeshCheck {
   double area_mesh = 0.0;
-  double area_outline = 0.0;       // nonzero area of the quadratic outline
-  double area_rel_error = 0.0;     // |mesh - outline| / max(|outline|, tiny)
-  bool watertight = true;          // every interior edge shared by exactly two faces
-  std::size_t hull_overlaps = 0;   // curved triangles overlapping another face
-  std::size_t degenerate = 0;      // faces with non-positive area
+  double area_outline = 0.0;          // nonzero area of the quadratic outline
+  double area_rel_error = 0.0;        // |mesh - outline| / max(|outline|, tiny)
+  bool watertight = true;             // every interior edge shared by exactly two faces
+  std::size_t hull_overlaps = 0;      // curved triangles overlapping another face
+  std::size_t degenerate = 0;         // faces with non-positive area
   std::vector<std::string> problems;  // human-readable, one per violation (capped)
   bool ok() const { return problems.empty(); }
 };

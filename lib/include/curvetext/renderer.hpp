@@ -44,14 +44,15 @@ enum class Blending {
 };
 
 AntiAliasing parse_antialiasing(std::string_view text);
-Blending parse_blending(std::string_view text);           // "srgb" | "linear"
+Blending parse_blending(std::string_view text);  // "srgb" | "linear"
 // vbaa's filter: "box" (ring 0), "paper" (tolerance::kVbaaPaperRing) or a
 // ring weight from 0 to 1. Throws Error(InvalidArgument).
 float parse_vbaa_filter(std::string_view text);
 // Coverage gamma: finite, within [kMinCoverageGamma, kMaxCoverageGamma].
 // Throws Error(InvalidArgument) naming `what`.
-void check_coverage_gamma(double gamma, std::string_view what = "gamma");  // "none" | "curves" | "full" | "vbaa" | "msaa" | "auto"
-CurveMode parse_curve_mode(std::string_view text);       // "exact" | "paper"
+void check_coverage_gamma(double gamma,
+                          std::string_view what = "gamma");  // "none" | "curves" | "full" | "vbaa" | "msaa" | "auto"
+CurveMode parse_curve_mode(std::string_view text);           // "exact" | "paper"
 
 // Maps outline units (y up) to framebuffer pixels (y down, pixel (i,j) covers
 // [i,i+1]x[j,j+1]):  x_px = scale * x + origin_x,  y_px = origin_y - scale * y.
@@ -125,8 +126,7 @@ class DrawBatch {
  public:
   // Glyph meshes from `cache` (built on a miss at the level of detail for
   // `pixels_per_em`), placed at the shaped pen positions from pen (0,0).
-  static DrawBatch from_text(GlyphCache& cache, const Font& font, const ShapedLine& line,
-                             double pixels_per_em);
+  static DrawBatch from_text(GlyphCache& cache, const Font& font, const ShapedLine& line, double pixels_per_em);
   // One mesh at offset (0,0).
   static DrawBatch from_mesh(const Mesh& mesh);
 

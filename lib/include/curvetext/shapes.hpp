@@ -154,7 +154,7 @@ ShapeDocument read_shape_file(const std::string& path);
 // shape from the larger side of its bounding box on screen (vbaa up to
 // tolerance::kAutoVbaaMaxPx, full above).
 struct ShapeImageOptions : ImageStyle {
-  int width = 0;       // 0: from the document (or the view at `scale`)
+  int width = 0;  // 0: from the document (or the view at `scale`)
   int height = 0;
   double scale = 0.0;  // pixels per document unit; 0: fit the view into the image
 };
@@ -162,7 +162,7 @@ struct ShapeImageOptions : ImageStyle {
 struct ShapeImageLayout {
   int width = 0;
   int height = 0;
-  Placement placement;  // document units (y-up) -> pixels (then placement.transform)
+  Placement placement;           // document units (y-up) -> pixels (then placement.transform)
   double largest_stretch = 1.0;  // of placement.transform over the image
 };
 

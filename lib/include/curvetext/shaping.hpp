@@ -15,7 +15,7 @@ namespace curvetext {
 void validate_utf8(std::string_view text);
 
 struct Feature {
-  std::string tag;      // "kern", "liga", ...
+  std::string tag;          // "kern", "liga", ...
   std::uint32_t value = 1;  // 0 disables
 };
 

@@ -32,8 +32,8 @@ struct TextImageLayout {
   ShapedLine line;
   int width = 0;
   int height = 0;
-  Placement placement;  // font units -> image pixels, pen origin at (margin, margin + A)
-                        // (then placement.transform, identity unless options.transform is not)
+  Placement placement;           // font units -> image pixels, pen origin at (margin, margin + A)
+                                 // (then placement.transform, identity unless options.transform is not)
   double largest_stretch = 1.0;  // of placement.transform over the image (for the level of detail)
   double ascender_px = 0.0;
   double descender_px = 0.0;

@@ -16,9 +16,9 @@ struct Transform {
   std::array<double, 9> m{1, 0, 0, 0, 1, 0, 0, 0, 1};
 
   static Transform translation(double dx, double dy);
-  static Transform rotation(double degrees);                    // clockwise on screen (y down)
+  static Transform rotation(double degrees);  // clockwise on screen (y down)
   static Transform scale(double sx, double sy);
-  static Transform skew(double x_degrees, double y_degrees);    // x += tan(ax) y, y += tan(ay) x
+  static Transform skew(double x_degrees, double y_degrees);  // x += tan(ax) y, y += tan(ay) x
   // The plane turned by `degrees` about the horizontal axis y = 0 (top edge
   // towards the viewer for positive angles) and seen by a pinhole camera
   // `distance` pixels away whose focal length is `distance` (the axis keeps
