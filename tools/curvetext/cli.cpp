@@ -40,6 +40,15 @@ std::string read_text_file(const std::string& path) {
   return text;
 }
 
+std::string default_font() {
+  try {
+    return default_font_path(CURVETEXT_BUILD_FONT_DIR);
+  } catch (const Error& e) {
+    if (e.code() != ErrorCode::FontNotFound) throw;
+    throw Error(e.code(), std::string(e.what()) + "; on the command line: --font FILE");
+  }
+}
+
 bool FontChoice::parse(Args& args) {
   const std::string& o = args.option();
   if (o == "--font")
@@ -55,7 +64,7 @@ bool FontChoice::parse(Args& args) {
 }
 
 Font FontChoice::open() const {
-  Font font = Font::open(path ? *path : default_font_path(CURVETEXT_BUILD_FONT_DIR), face_index);
+  Font font = Font::open(path ? *path : default_font(), face_index);
   if (variations) font.set_variations(parse_variations(*variations));
   return font;
 }

@@ -22,6 +22,10 @@ int parse_int(std::string_view option, std::string_view text);
 // (the file's, not the text's). Error(Io) when it cannot be read.
 std::string read_text_file(const std::string& path);
 
+// default_font_path() (the build tree's copy first), its error naming the
+// CLI's way to pass a font.
+std::string default_font();
+
 // Walks argv-style arguments; `value()` takes the option's value or throws
 // UsageError naming the option.
 class Args {

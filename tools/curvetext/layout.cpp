@@ -4,13 +4,8 @@
 #include <cstdio>
 #include <sstream>
 
-#include "curvetext/default_font.hpp"
 #include "curvetext/error.hpp"
 #include "layout_options.hpp"
-
-#ifndef CURVETEXT_BUILD_FONT_DIR
-#define CURVETEXT_BUILD_FONT_DIR ""
-#endif
 
 namespace curvetext::cli {
 
@@ -209,8 +204,7 @@ Paragraph layout_from_cli(FontCollection& fonts, const LayoutCli& options, const
   for (const std::string& f : options.fonts)
     style.default_style.fonts.push_back(
         font_choice.face_index && &f == &options.fonts.front() ? f + "#" + std::to_string(font_choice.face_index) : f);
-  if (style.default_style.fonts.empty())
-    style.default_style.fonts.push_back(default_font_path(CURVETEXT_BUILD_FONT_DIR));
+  if (style.default_style.fonts.empty()) style.default_style.fonts.push_back(default_font());
   if (font_choice.variations) style.default_style.variations = parse_variations(*font_choice.variations);
   std::vector<TextSpan> spans;
   std::string plain = text;
@@ -246,7 +240,7 @@ int run_layout(const std::vector<std::string>& arguments) {
   if (text.has_value() == text_file.has_value()) throw UsageError{"give exactly one of --text and --text-file"};
   if (!json) throw UsageError{"layout prints JSON only: add --json"};
   if (text_file) text = read_text_file(*text_file);
-  FontCollection fonts(default_font_path(CURVETEXT_BUILD_FONT_DIR));
+  FontCollection fonts(default_font());
   const Paragraph p = layout_from_cli(fonts, options, font_choice, *size,
                                       features ? parse_features(*features) : std::vector<Feature>{}, *text);
   std::string out = "{\"text_bytes\":" + std::to_string(p.text().size());

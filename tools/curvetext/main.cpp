@@ -8,6 +8,7 @@
 
 #include "cli.hpp"
 #include "curvetext/error.hpp"
+#include "curvetext/version.hpp"
 
 namespace {
 
@@ -56,7 +57,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (command == "--version") {
-      std::puts("curvetext 0.1.0");
+      std::printf("curvetext %s\n", curvetext::version());
       return 0;
     }
     if (command == "render") return run_render(rest);

@@ -4,11 +4,17 @@
 
 #include <string>
 
+#include "curvetext/export.hpp"
+
 namespace curvetext {
 
-// First existing of: $CURVETEXT_DEFAULT_FONT, `build_dir_hint` (the build
-// tree's copy, when given), <exe dir>/../share/curvetext/fonts/DejaVuSans.ttf,
-// and the install prefix. Throws Error(FontNotFound) listing where it looked.
-std::string default_font_path(const std::string& build_dir_hint = {});
+// Found at run time, so an installed tree can move: the first existing of
+// $CURVETEXT_DEFAULT_FONT, `build_dir_hint`/DejaVuSans.ttf (when given),
+// share/curvetext/fonts/DejaVuSans.ttf of the prefix the library (or the
+// program a static curvetext is linked into) lies in, the build tree's copy,
+// and then fontconfig's file for "DejaVu Sans" (that family only). Throws
+// Error(FontNotFound) naming the font, where it looked and how to pass a font
+// file instead. Reads the environment and the file system on each call.
+CURVETEXT_API std::string default_font_path(const std::string& build_dir_hint = {});
 
 }  // namespace curvetext
