@@ -41,6 +41,7 @@
 #include "curvetext/headless.hpp"
 #include "curvetext/renderer.hpp"
 #include "curvetext/text_image.hpp"
+#include "option_values.hpp"
 #include "support/coverage.hpp"
 #include "support/fonts.hpp"
 #include "support/union_coverage.hpp"
@@ -244,7 +245,7 @@ int main(int argc, char** argv) {
           for (const std::string& m : modes) {
             // "vbaa-ringR": vbaa with DrawOptions::vbaa_ring = R.
             const std::size_t ring_at = m.find("-ring");
-            options.antialiasing = parse_antialiasing(m.substr(0, ring_at));
+            options.antialiasing = cli::parse_antialiasing(m.substr(0, ring_at));
             options.vbaa_ring = ring_at == std::string::npos ? 0.0f : std::stof(m.substr(ring_at + 5));
             const Image image = render_text_image(renderer, cache, font, layout, options);
             const test::Coverage result = test::coverage_from_black_on_white(image);

@@ -8,12 +8,17 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <random>
 #include <string>
+#include <vector>
 
+#include "curvetext/default_font.hpp"
 #include "curvetext/error.hpp"
 #include "curvetext/font.hpp"
 #include "curvetext/shaping.hpp"
+#include "curvetext/version.hpp"
+#include "font/default_font_lookup.hpp"
 #include "font/font_impl.hpp"
 
 #include FT_OUTLINE_H
@@ -89,7 +94,7 @@ TEST(Font, OpensTrueTypeAndReadsMetrics) {
   EXPECT_EQ(font.family_name(), "DejaVu Sans");
   EXPECT_EQ(font.face_index(), 0);
   EXPECT_EQ(font.path(), kDejaVu);
-  const FT_Face face = font.impl().ft_face;
+  const FT_Face face = ct::FontAccess::impl(font).ft_face;
   EXPECT_EQ(font.glyph_count(), static_cast<unsigned>(face->num_glyphs));
   const ct::FontMetrics m = font.metrics();
   EXPECT_EQ(m.units_per_em, 2048);
@@ -99,6 +104,37 @@ TEST(Font, OpensTrueTypeAndReadsMetrics) {
   EXPECT_EQ(m.ascender - m.descender + m.line_gap, face->height);
   EXPECT_EQ(font.glyph_for_codepoint(U'A'), FT_Get_Char_Index(face, 'A'));
   EXPECT_EQ(font.glyph_for_codepoint(0x10FFFD), 0u);
+}
+
+// Games pack their assets: a font opened from bytes in memory behaves as the
+// same file does, the bytes may go once it is open, and its glyphs are cached
+// apart from other fonts (its key differs from the file's and from other
+// bytes' under the same name).
+TEST(Font, OpensFromMemory) {
+  std::ifstream in(kDejaVu, std::ios::binary);
+  std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_GT(bytes.size(), 1000u);
+  const ct::Font file = ct::Font::open(kDejaVu);
+  const ct::Font memory = ct::Font::open_memory(bytes, "packed/DejaVuSans.ttf");
+  const ct::Font again = ct::Font::open_memory(bytes, "packed/DejaVuSans.ttf");
+  bytes.assign(bytes.size(), 0);  // the font keeps its own copy
+  EXPECT_EQ(memory.family_name(), "DejaVu Sans");
+  EXPECT_EQ(memory.path(), "packed/DejaVuSans.ttf");
+  EXPECT_EQ(memory.metrics().units_per_em, file.metrics().units_per_em);
+  const ct::ShapedLine a = ct::shape_line(file, "Assets");
+  const ct::ShapedLine b = ct::shape_line(memory, "Assets");
+  ASSERT_EQ(a.glyphs.size(), b.glyphs.size());
+  for (std::size_t i = 0; i < a.glyphs.size(); ++i) {
+    EXPECT_EQ(a.glyphs[i].glyph_id, b.glyphs[i].glyph_id);
+    EXPECT_EQ(a.glyphs[i].x_advance, b.glyphs[i].x_advance);
+  }
+  EXPECT_EQ(outline_of(memory, U'g').contours().size(), outline_of(file, U'g').contours().size());
+  EXPECT_NE(memory.cache_key(), file.cache_key());
+  EXPECT_EQ(memory.cache_key(), again.cache_key());
+  const std::vector<std::uint8_t> other = {'n', 'o', 't', ' ', 'a', ' ', 'f', 'o', 'n', 't'};
+  EXPECT_EQ(error_code_of([&] { (void)ct::Font::open_memory(other, "packed/DejaVuSans.ttf"); }),
+            ct::ErrorCode::FontInvalid);
+  EXPECT_EQ(error_code_of([&] { (void)ct::Font::open_memory({}, "empty"); }), ct::ErrorCode::FontInvalid);
 }
 
 TEST(Font, TrueTypeOutlines) {
@@ -157,7 +193,7 @@ TEST(Font, TrueTypeOutlineMatchesFreeTypeUnscaled) {
   for (char32_t cp : {U'H', U'O', U'g', U'&', U'\u00e9'}) {
     const std::uint32_t gid = font.glyph_for_codepoint(cp);
     const ct::Box box = font.glyph_outline(gid).control_box();
-    FT_Face face = font.impl().ft_face;
+    FT_Face face = ct::FontAccess::impl(font).ft_face;
     ASSERT_EQ(FT_Load_Glyph(face, gid, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP), 0);
     FT_BBox ref;
     FT_Outline_Get_CBox(&face->glyph->outline, &ref);
@@ -185,8 +221,8 @@ TEST(Font, CffOutlinesHaveCubics) {
   EXPECT_TRUE(o.has_cubics());
   EXPECT_EQ(count_segments(o).conics, 0);
   expect_well_formed(o);
-  EXPECT_EQ(font.metrics().ascender, font.impl().ft_face->ascender);
-  EXPECT_EQ(font.metrics().descender, font.impl().ft_face->descender);
+  EXPECT_EQ(font.metrics().ascender, ct::FontAccess::impl(font).ft_face->ascender);
+  EXPECT_EQ(font.metrics().descender, ct::FontAccess::impl(font).ft_face->descender);
 }
 
 TEST(Font, Cff2StaticKeepsFractionalCoordinates) {
@@ -379,7 +415,7 @@ TEST(Font, HarfBuzzFontOutlivesFont) {
   hb_font_t* hb = nullptr;
   {
     const ct::Font font = ct::Font::open(kDejaVu);
-    hb = hb_font_reference(font.impl().hb_font);
+    hb = hb_font_reference(ct::FontAccess::impl(font).hb_font);
   }
   // The blob keeps the bytes alive.
   hb_codepoint_t gid = 0;
@@ -402,7 +438,7 @@ TEST(Shaping, KerningChangesAdvance) {
   EXPECT_EQ(b.advance, sum);
   // Unkerned advances are the hmtx advances in font units.
   EXPECT_EQ(b.glyphs[0].x_advance,
-            static_cast<double>(hb_font_get_glyph_h_advance(font.impl().hb_font, b.glyphs[0].glyph_id)));
+            static_cast<double>(hb_font_get_glyph_h_advance(ct::FontAccess::impl(font).hb_font, b.glyphs[0].glyph_id)));
 }
 
 TEST(Shaping, Ligatures) {
@@ -483,4 +519,46 @@ TEST(Shaping, InvalidUtf8) {
   }
   ct::validate_utf8("a\u00e9\u20ac\U0001D11E\U0010FFFF\uFFFF");
   ct::validate_utf8(std::string("nul\0inside", 10));
+}
+
+// Found at run time: the test programs lie in build/tests/, so the lookup
+// beside the program finds the build tree's copy.
+TEST(DefaultFont, FoundFromTheProgramsPlace) {
+  const std::string path = ct::default_font_path();
+  EXPECT_TRUE(fs::is_regular_file(path)) << path;
+  EXPECT_EQ(fs::path(path).filename(), "DejaVuSans.ttf");
+  EXPECT_EQ(ct::Font::open(path).family_name(), "DejaVu Sans");
+
+  const std::vector<std::string> candidates = ct::detail::default_font_candidates("");
+  const fs::path beside =
+      fs::path(ct::detail::library_file()).parent_path() / "../share/curvetext/fonts/DejaVuSans.ttf";
+  EXPECT_NE(std::find(candidates.begin(), candidates.end(), beside.lexically_normal().string()), candidates.end());
+}
+
+TEST(DefaultFont, Fontconfig) {
+  // fonts-dejavu-core is installed (scripts/setup-debian.sh).
+  const std::string path = ct::detail::fontconfig_default_font();
+  ASSERT_FALSE(path.empty());
+  EXPECT_EQ(ct::Font::open(path).family_name(), "DejaVu Sans");
+  EXPECT_EQ(ct::detail::find_default_font({"/nonexistent/DejaVuSans.ttf"}, true), path);
+}
+
+TEST(DefaultFont, MissingIsAnErrorThatSaysWhatToDo) {
+  try {
+    (void)ct::detail::find_default_font({"/nonexistent/a/DejaVuSans.ttf", "/nonexistent/b/DejaVuSans.ttf"}, false);
+    FAIL() << "no error";
+  } catch (const ct::Error& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(e.code(), ct::ErrorCode::FontNotFound);
+    for (const char* part : {"DejaVu Sans", "DejaVuSans.ttf", "/nonexistent/a/DejaVuSans.ttf",
+                             "/nonexistent/b/DejaVuSans.ttf", "fonts-dejavu-core", "Font::open"})
+      EXPECT_NE(message.find(part), std::string::npos) << part << " not in: " << message;
+    EXPECT_EQ(message.find("--font"), std::string::npos) << "a command-line option in a library error: " << message;
+  }
+}
+
+TEST(Version, MacrosAndLibraryAgree) {
+  EXPECT_STREQ(ct::version(), CURVETEXT_VERSION_STRING);
+  EXPECT_EQ(CURVETEXT_VERSION,
+            CURVETEXT_VERSION_MAJOR * 10000 + CURVETEXT_VERSION_MINOR * 100 + CURVETEXT_VERSION_PATCH);
 }

@@ -12,7 +12,7 @@
 #include <cstdio>
 
 #include "curvetext/error.hpp"
-#include "font/font_impl.hpp"
+#include "font/harfbuzz_font.hpp"
 #include "curvetext/layout.hpp"
 #include "curvetext/line_break.hpp"
 #include "font/utf8.hpp"
@@ -219,12 +219,12 @@ TEST(Layout, EmojiFallsBackToOutlineFaceElseMissingGlyph) {
   EXPECT_EQ(seen[3].path, test::kDejaVuSans);
   EXPECT_EQ(seen[3].id, dejavu.glyph_for_codepoint(0x1F600));
   const double dv = size / dejavu.metrics().units_per_em;
-  EXPECT_NEAR(seen[3].advance, hb_font_get_glyph_h_advance(dejavu.impl().hb_font, seen[3].id) * dv, 1e-9);
+  EXPECT_NEAR(seen[3].advance, hb_font_get_glyph_h_advance(harfbuzz_font(dejavu), seen[3].id) * dv, 1e-9);
   // U+1F680: only the colour face has it, so the missing glyph of Noto Sans.
   EXPECT_EQ(seen[5].id, 0u);
   EXPECT_EQ(seen[5].path, test::kNotoSans);
   const double nv = size / noto.metrics().units_per_em;
-  EXPECT_NEAR(seen[5].advance, hb_font_get_glyph_h_advance(noto.impl().hb_font, 0) * nv, 1e-9);
+  EXPECT_NEAR(seen[5].advance, hb_font_get_glyph_h_advance(harfbuzz_font(noto), 0) * nv, 1e-9);
   // Pen positions: each glyph starts where the previous one's advance ends.
   for (std::size_t k = 1; k < seen.size(); ++k) EXPECT_NEAR(seen[k].x, seen[k - 1].x + seen[k - 1].advance, 1e-9) << k;
   EXPECT_NEAR(seen[0].x, 0.0, 1e-9);

@@ -9,7 +9,9 @@
 
 #include "curvetext/error.hpp"
 #include "curvetext/headless.hpp"
+#include "curvetext/image_style.hpp"
 #include "curvetext/renderer.hpp"
+#include "curvetext/shape_image.hpp"
 #include "curvetext/shapes.hpp"
 #include "support/gpu.hpp"
 
@@ -143,19 +145,22 @@ TEST(Gamma, RaisesCoverageToOneOverGamma) {
   }
 }
 
-TEST(Parse, BlendingFilterAndGamma) {
-  EXPECT_EQ(parse_blending("linear"), Blending::Linear);
-  EXPECT_EQ(parse_blending("srgb"), Blending::Srgb);
-  EXPECT_THROW(parse_blending("gamma"), Error);
-  EXPECT_EQ(parse_vbaa_filter("box"), 0.0f);
-  EXPECT_GT(parse_vbaa_filter("paper"), 0.0f);
-  EXPECT_EQ(parse_vbaa_filter("0.25"), 0.25f);
-  EXPECT_THROW(parse_vbaa_filter("nan"), Error);
-  EXPECT_THROW(parse_vbaa_filter("1.5"), Error);
-  EXPECT_NO_THROW(check_coverage_gamma(1.8));
-  EXPECT_THROW(check_coverage_gamma(std::nan("")), Error);
-  EXPECT_THROW(check_coverage_gamma(0.0), Error);
-  EXPECT_THROW(check_coverage_gamma(100.0), Error);
+// The image paths refuse a gamma out of range before drawing (the renderer
+// itself clamps it).
+TEST(Gamma, OutOfRangeIsRefused) {
+  ImageStyle style;
+  style.gamma = 1.8f;
+  EXPECT_NO_THROW(draw_options(style, Color{}, 16.0));
+  for (float bad : {std::nanf(""), 0.0f, 100.0f}) {
+    style.gamma = bad;
+    try {
+      draw_options(style, Color{}, 16.0);
+      FAIL() << bad;
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ErrorCode::InvalidArgument);
+      EXPECT_NE(std::string(e.what()).find("gamma must be a number"), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace

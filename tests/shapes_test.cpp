@@ -15,6 +15,7 @@
 #include "curvetext/headless.hpp"
 #include "curvetext/mesh.hpp"
 #include "curvetext/renderer.hpp"
+#include "curvetext/shape_image.hpp"
 #include "curvetext/shapes.hpp"
 #include "curvetext/tolerances.hpp"
 #include "shapes/json.hpp"

@@ -8,9 +8,19 @@
 #include "curvetext/error.hpp"
 #include "curvetext/geometry.hpp"
 #include "curvetext/tolerances.hpp"
+#include "compose/check_style.hpp"
 #include "core/format.hpp"
 
 namespace curvetext {
+
+void check_coverage_gamma(double gamma) {
+  if (!std::isfinite(gamma) || gamma < tolerance::kMinCoverageGamma || gamma > tolerance::kMaxCoverageGamma) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "gamma must be a number from %g to %g, got %g", tolerance::kMinCoverageGamma,
+                  tolerance::kMaxCoverageGamma, gamma);
+    throw Error(ErrorCode::InvalidArgument, buf);
+  }
+}
 
 AntiAliasing resolve_antialiasing(AntiAliasing aa, double on_screen_px) {
   if (aa != AntiAliasing::Auto) return aa;

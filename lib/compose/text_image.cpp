@@ -7,6 +7,7 @@
 
 #include "curvetext/error.hpp"
 #include "curvetext/tolerances.hpp"
+#include "compose/check_style.hpp"
 #include "core/format.hpp"
 
 namespace curvetext {

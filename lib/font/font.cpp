@@ -120,10 +120,11 @@ struct Fnv1a {
   }
 };
 
-void update_cache_key(Font::Impl& impl) {
+void update_cache_key(FontAccess::Impl& impl) {
   Fnv1a hash;
   hash.add(impl.path.data(), impl.path.size());
   hash.add_value<std::uint64_t>(impl.path.size());  // separates path from index
+  hash.add_value<std::uint64_t>(impl.bytes_hash);
   hash.add_value<std::int64_t>(impl.face_index);
   // The full clamped coordinate vector, not the caller's list: {} and
   // {wght=default} draw the same outlines and share cache entries, and so do
@@ -134,7 +135,7 @@ void update_cache_key(Font::Impl& impl) {
 
 // Sets the FreeType size at which one font unit is exactly one pixel, i.e. 64
 // units of 26.6 (see glyph_outline for why we do not use FT_LOAD_NO_SCALE).
-void set_unit_scale(const Font::Impl& impl) {
+void set_unit_scale(const FontAccess::Impl& impl) {
   const FT_F26Dot6 height = static_cast<FT_F26Dot6>(impl.units_per_em) * 64;
   if (FT_Error error = FT_Set_Char_Size(impl.ft_face, 0, height, 72, 72))
     throw Error(ErrorCode::FontInvalid, "cannot set the font's scale (" + ft_error_text(error) + "): " + impl.path);
@@ -232,11 +233,17 @@ int Font::face_count(const std::string& path) {
   return static_cast<int>(std::min<long>(count, std::numeric_limits<int>::max()));
 }
 
-Font Font::open(const std::string& path, int face_index) {
-  auto impl = std::make_unique<Impl>();
+namespace {
+
+// The face `face_index` of `bytes`; `path` names it in messages and keys the
+// glyph cache with `bytes_hash` (0 for a file).
+std::unique_ptr<FontAccess::Impl> open_face(FontBytes bytes, const std::string& path, int face_index,
+                                            std::uint64_t bytes_hash = 0) {
+  auto impl = std::make_unique<FontAccess::Impl>();
   impl->path = path;
   impl->face_index = face_index;
-  impl->bytes = read_file(path);
+  impl->bytes = std::move(bytes);
+  impl->bytes_hash = bytes_hash;
   impl->library_owner = new_library();
 
   // Check the index against the count first: FreeType reads the upper 16 bits
@@ -307,7 +314,23 @@ Font Font::open(const std::string& path, int face_index) {
 
   set_unit_scale(*impl);
   update_cache_key(*impl);
-  return Font(std::move(impl));
+  return impl;
+}
+
+}  // namespace
+
+Font Font::open(const std::string& path, int face_index) { return Font(open_face(read_file(path), path, face_index)); }
+
+Font Font::open_memory(std::span<const std::uint8_t> data, const std::string& name, int face_index) {
+  if (data.empty()) throw Error(ErrorCode::FontInvalid, "font data is empty: " + name);
+  if (data.size() > static_cast<std::size_t>(std::numeric_limits<unsigned int>::max()))
+    throw Error(ErrorCode::FontInvalid, "font data is too large (over 4 GiB): " + name);
+  // A hash of the bytes keys the glyph cache, with the name: two buffers
+  // named alike stay apart, the same bytes opened twice share glyphs.
+  Fnv1a hash;
+  hash.add(data.data(), data.size());
+  return Font(open_face(std::make_shared<const std::vector<unsigned char>>(data.begin(), data.end()), name, face_index,
+                        hash.value));
 }
 
 void Font::set_variations(const std::vector<Variation>& variations) {
@@ -363,6 +386,8 @@ void Font::set_variations(const std::vector<Variation>& variations) {
   im.variations = std::move(applied);
   update_cache_key(im);
 }
+
+hb_font_t* harfbuzz_font(const Font& font) { return FontAccess::impl(font).hb_font; }
 
 const std::vector<Variation>& Font::variations() const { return impl_->variations; }
 const std::string& Font::path() const { return impl_->path; }

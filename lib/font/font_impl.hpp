@@ -1,6 +1,6 @@
-// Private: the state behind curvetext::Font. Other parts of the library (and
-// the tests' FreeType reference rendering) include this to reach the FreeType
-// face and the HarfBuzz font that read the same bytes.
+// Private: the state behind curvetext::Font, for font/ itself and for the
+// tests' FreeType reference rendering, which reach the FreeType face and the
+// HarfBuzz font that read the same bytes through FontAccess.
 //
 // Ownership: Impl owns one FT_Library (one per Font, so fonts never share
 // FreeType state and can be used on different threads), the FT_Face, and one
@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "curvetext/font.hpp"
+#include "font/harfbuzz_font.hpp"
 
 namespace curvetext {
 
@@ -40,26 +41,10 @@ struct FtLibraryDeleter {
 struct FtFaceDeleter {
   void operator()(FT_Face face) const noexcept { FT_Done_Face(face); }
 };
-struct HbBlobDeleter {
-  void operator()(hb_blob_t* blob) const noexcept { hb_blob_destroy(blob); }
-};
-struct HbFaceDeleter {
-  void operator()(hb_face_t* face) const noexcept { hb_face_destroy(face); }
-};
-struct HbFontDeleter {
-  void operator()(hb_font_t* font) const noexcept { hb_font_destroy(font); }
-};
-struct HbBufferDeleter {
-  void operator()(hb_buffer_t* buffer) const noexcept { hb_buffer_destroy(buffer); }
-};
 
 // FT_Library and FT_Face are pointer typedefs; unique_ptr over the pointee.
 using FtLibraryPtr = std::unique_ptr<std::remove_pointer_t<FT_Library>, FtLibraryDeleter>;
 using FtFacePtr = std::unique_ptr<std::remove_pointer_t<FT_Face>, FtFaceDeleter>;
-using HbBlobPtr = std::unique_ptr<hb_blob_t, HbBlobDeleter>;
-using HbFacePtr = std::unique_ptr<hb_face_t, HbFaceDeleter>;
-using HbFontPtr = std::unique_ptr<hb_font_t, HbFontDeleter>;
-using HbBufferPtr = std::unique_ptr<hb_buffer_t, HbBufferDeleter>;
 
 using FontBytes = std::shared_ptr<const std::vector<unsigned char>>;
 
@@ -101,6 +86,7 @@ struct Font::Impl {
   // What set_variations() was last given, deduplicated and clamped.
   std::vector<Variation> variations;
   std::uint64_t cache_key = 0;
+  std::uint64_t bytes_hash = 0;  // of a font opened from memory (0: from a file)
 
   // The face's outlines are CFF or CFF2 charstrings (not glyf).
   bool cff_outlines = false;
@@ -118,6 +104,13 @@ struct Font::Impl {
   }
 
   mutable std::mutex ft_mutex;
+};
+
+// Reaches a Font's state (a friend of Font): font/ itself and the tests'
+// FreeType reference rendering. Other stages use font/harfbuzz_font.hpp.
+struct FontAccess {
+  using Impl = Font::Impl;
+  static Impl& impl(const Font& font) { return *font.impl_; }
 };
 
 }  // namespace curvetext

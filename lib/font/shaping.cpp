@@ -9,7 +9,7 @@
 
 #include "curvetext/error.hpp"
 #include "curvetext/shaping.hpp"
-#include "font/font_impl.hpp"
+#include "font/harfbuzz_font.hpp"
 #include "font/option_lists.hpp"
 
 namespace curvetext {
@@ -100,7 +100,7 @@ ShapedLine shape_line(const Font& font, std::string_view utf8, const ShapeOption
   hb_buffer_add_utf8(buf, data, static_cast<int>(utf8.size()), 0, static_cast<int>(utf8.size()));
   hb_buffer_guess_segment_properties(buf);  // fills only what was not set above
 
-  hb_shape(font.impl().hb_font, buf, features.data(), static_cast<unsigned int>(features.size()));
+  hb_shape(harfbuzz_font(font), buf, features.data(), static_cast<unsigned int>(features.size()));
   if (!hb_buffer_allocation_successful(buf)) throw std::bad_alloc();
 
   unsigned int count = 0;

@@ -10,7 +10,7 @@
 
 #include "curvetext/default_font.hpp"
 #include "curvetext/error.hpp"
-#include "font/font_impl.hpp"
+#include "font/harfbuzz_font.hpp"
 
 namespace curvetext {
 
@@ -40,7 +40,7 @@ using PatternPtr = std::unique_ptr<FcPattern, PatternDeleter>;
 }  // namespace
 
 bool has_outlines(const Font& font) {
-  hb_face_t* face = hb_font_get_face(font.impl().hb_font);
+  hb_face_t* face = hb_font_get_face(harfbuzz_font(font));
   for (hb_tag_t table : {HB_TAG('g', 'l', 'y', 'f'), HB_TAG('C', 'F', 'F', ' '), HB_TAG('C', 'F', 'F', '2')}) {
     const detail::HbBlobPtr blob(hb_face_reference_table(face, table));
     if (hb_blob_get_length(blob.get()) > 0) return true;

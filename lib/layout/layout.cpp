@@ -14,7 +14,7 @@
 #include "curvetext/error.hpp"
 #include "curvetext/line_break.hpp"
 #include "curvetext/tolerances.hpp"
-#include "font/font_impl.hpp"
+#include "font/harfbuzz_font.hpp"
 #include "font/utf8.hpp"
 #include "core/format.hpp"
 
@@ -215,7 +215,7 @@ struct ParagraphBuilder {
     // are paragraph code point indices.
     hb_buffer_add_utf32(buf, reinterpret_cast<const std::uint32_t*>(shaped_text.data()),
                         static_cast<int>(shaped_text.size()), static_cast<unsigned>(a), static_cast<int>(b - a));
-    hb_shape(font.impl().hb_font, buf, r.features.data(), static_cast<unsigned>(r.features.size()));
+    hb_shape(harfbuzz_font(font), buf, r.features.data(), static_cast<unsigned>(r.features.size()));
     if (!hb_buffer_allocation_successful(buf)) throw std::bad_alloc();
     unsigned n = 0;
     const hb_glyph_info_t* info = hb_buffer_get_glyph_infos(buf, &n);
@@ -241,7 +241,7 @@ struct ParagraphBuilder {
                         static_cast<int>(s.size()));
     hb_buffer_set_direction(buf, level % 2 ? HB_DIRECTION_RTL : HB_DIRECTION_LTR);
     hb_buffer_guess_segment_properties(buf);
-    hb_shape(font.impl().hb_font, buf, nullptr, 0);
+    hb_shape(harfbuzz_font(font), buf, nullptr, 0);
     unsigned n = 0;
     const hb_glyph_info_t* info = hb_buffer_get_glyph_infos(buf, &n);
     const hb_glyph_position_t* pos = hb_buffer_get_glyph_positions(buf, &n);
@@ -349,7 +349,7 @@ struct ParagraphBuilder {
     const Font& f = *resolved[style_index].chain.front();
     const std::uint32_t g = f.glyph_for_codepoint(U' ');
     const double s = style(style_index).size_px / f.metrics().units_per_em;
-    return g ? hb_font_get_glyph_h_advance(f.impl().hb_font, g) * s : style(style_index).size_px / 3.0;
+    return g ? hb_font_get_glyph_h_advance(harfbuzz_font(f), g) * s : style(style_index).size_px / 3.0;
   }
 
   // Pen advance of a tab at pen position x (from the line start).
@@ -1032,7 +1032,7 @@ Rect Paragraph::ink_bounds() const {
       const double s = r.size_px / r.font->metrics().units_per_em;
       for (const PositionedGlyph& g : r.glyphs) {
         hb_glyph_extents_t e{};
-        if (!hb_font_get_glyph_extents(r.font->impl().hb_font, g.id, &e) || e.width == 0 || e.height == 0) continue;
+        if (!hb_font_get_glyph_extents(harfbuzz_font(*r.font), g.id, &e) || e.width == 0 || e.height == 0) continue;
         const double gx0 = g.x + e.x_bearing * s, gx1 = gx0 + e.width * s;
         const double gy0 = g.y - e.y_bearing * s, gy1 = gy0 - e.height * s;
         x0 = std::min({x0, gx0, gx1});

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <string>
+#include <string_view>
 
 #include "curvetext/error.hpp"
 #include "curvetext/geometry.hpp"
@@ -54,3 +55,11 @@ inline bool is_zero_middle_weight(std::size_t degree, std::size_t index, std::si
 }
 
 }  // namespace curvetext::shapes_detail
+
+namespace curvetext {
+
+// A fill rule as SVG and the JSON format spell it: "nonzero" | "evenodd"
+// ("even-odd" is accepted too). Throws Error(InvalidArgument).
+FillRule parse_fill_rule(std::string_view text);
+
+}  // namespace curvetext

@@ -2,10 +2,10 @@
 #include <cmath>
 
 #include "cli.hpp"
+#include "gl_session.hpp"
 #include "curvetext/error.hpp"
-#include "curvetext/headless.hpp"
 #include "curvetext/image.hpp"
-#include "curvetext/renderer.hpp"
+#include "curvetext/shape_image.hpp"
 #include "curvetext/shapes.hpp"
 #include "style_options.hpp"
 
@@ -64,10 +64,7 @@ int run_shape(const std::vector<std::string>& arguments) {
     options.transform = style.transform(0, 0);
   }
   const ShapeImageLayout layout = layout_shape_image(doc, options);
-  HeadlessContext context = HeadlessContext::create();
-  Renderer renderer;
-  const Image image = render_shape_image(renderer, doc, layout, options);
-  write_png(image, *output);
+  write_png(render_shape_image(gl_session().renderer, doc, layout, options), *output);
   return 0;
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "curvetext/error.hpp"
+#include "option_values.hpp"
 
 namespace curvetext::cli {
 
@@ -82,7 +83,7 @@ bool StyleCli::parse(Args& args, ImageStyle& style) {
     style.blending = parse_blending(args.value());
   else if (a == "--gamma") {
     style.gamma = static_cast<float>(parse_number(a, args.value()));
-    check_coverage_gamma(style.gamma, "--gamma");
+    check_gamma(style.gamma, "--gamma");
   } else if (a == "--debug")
     style.debug = true;
   else if (a == "--vbaa-filter")

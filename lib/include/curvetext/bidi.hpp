@@ -11,6 +11,8 @@
 #include <string_view>
 #include <vector>
 
+#include "curvetext/export.hpp"
+
 namespace curvetext {
 
 enum class BaseDirection {
@@ -27,29 +29,31 @@ struct BidiParagraph {
 // Levels for one paragraph of text (it should hold no paragraph separator but
 // its last character). Characters that rule X9 removes (embedding controls,
 // boundary neutrals) get the level of the character before them, so they stay
-// inside their neighbours' runs when shaped.
-BidiParagraph resolve_bidi(std::u32string_view paragraph, BaseDirection direction);
+// inside their neighbours' runs when shaped. Throws Error(InvalidText) for a
+// paragraph over INT_MAX / 2 code points or one FriBiDi cannot resolve.
+CURVETEXT_API BidiParagraph resolve_bidi(std::u32string_view paragraph, BaseDirection direction);
 
 // True for characters rule X9 removes (LRE, RLE, LRO, RLO, PDF and class BN):
 // they have no level of their own and no place in the visual order.
-bool bidi_removed(char32_t c);
+CURVETEXT_API bool bidi_removed(char32_t c);
 
 // Levels of the line [start, end) after rule L1 (segment separators, and
 // whitespace and isolate controls before them or at the end of the line, go
-// to the paragraph level), indexed from `start`.
-std::vector<std::uint8_t> line_levels(std::u32string_view paragraph, const BidiParagraph& bidi, std::size_t start,
-                                      std::size_t end);
+// to the paragraph level), indexed from `start`. [start, end) are code point
+// indices into `paragraph`, whose resolve_bidi result `bidi` is.
+CURVETEXT_API std::vector<std::uint8_t> line_levels(std::u32string_view paragraph, const BidiParagraph& bidi,
+                                                    std::size_t start, std::size_t end);
 
 // Visual order of the line: result[k] is the index (into the paragraph) of the
 // code point shown k-th from the left (rule L2 on line_levels). Characters
 // removed by X9 are left out.
-std::vector<std::size_t> visual_order(std::u32string_view paragraph, const BidiParagraph& bidi, std::size_t start,
-                                      std::size_t end);
+CURVETEXT_API std::vector<std::size_t> visual_order(std::u32string_view paragraph, const BidiParagraph& bidi,
+                                                    std::size_t start, std::size_t end);
 
 // Rule L2 on arbitrary levels: the visual order of items 0..levels.size()-1.
-std::vector<std::size_t> reorder_levels(const std::vector<std::uint8_t>& levels);
+CURVETEXT_API std::vector<std::size_t> reorder_levels(const std::vector<std::uint8_t>& levels);
 
 // The Bidi_Mirroring_Glyph of c, or c when it has none.
-char32_t bidi_mirror(char32_t c);
+CURVETEXT_API char32_t bidi_mirror(char32_t c);
 
 }  // namespace curvetext

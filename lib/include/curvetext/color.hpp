@@ -3,6 +3,8 @@
 
 #include <string_view>
 
+#include "curvetext/export.hpp"
+
 namespace curvetext {
 
 struct Color {
@@ -10,7 +12,9 @@ struct Color {
 };
 
 // "#rgb", "#rrggbb", "#rrggbbaa", or a name: black, white, red, green, blue,
-// transparent. Throws Error(InvalidArgument).
-Color parse_color(std::string_view text);
+// transparent. Kept in the library because shape documents (SVG fill, the
+// JSON format's "color") are read with it, so callers can parse colours the
+// same way. Throws Error(InvalidArgument).
+CURVETEXT_API Color parse_color(std::string_view text);
 
 }  // namespace curvetext

@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "curvetext/export.hpp"
+
 namespace curvetext {
 
 enum class ErrorCode {
@@ -20,9 +22,12 @@ enum class ErrorCode {
   Io,               // writing an output file failed
 };
 
-const char* to_string(ErrorCode code) noexcept;
+// A short description of the code ("invalid argument", "font not found",
+// ...): a static string, never null.
+CURVETEXT_API const char* to_string(ErrorCode code) noexcept;
 
-class Error : public std::runtime_error {
+// what() is the message.
+class CURVETEXT_API Error : public std::runtime_error {
  public:
   Error(ErrorCode code, const std::string& message) : std::runtime_error(message), code_(code) {}
   ErrorCode code() const noexcept { return code_; }

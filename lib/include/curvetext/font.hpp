@@ -6,21 +6,25 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "curvetext/export.hpp"
 #include "curvetext/outline.hpp"
 
 namespace curvetext {
 
 struct Variation {
-  std::string tag;  // four characters, e.g. "wght"
-  float value = 0.0f;
+  std::string tag;     // four characters, e.g. "wght"
+  float value = 0.0f;  // in the axis's design units (wght: 100-900)
 };
 
-// Parses "wght=700,wdth=85" (spaces allowed). Throws Error(InvalidArgument).
-std::vector<Variation> parse_variations(std::string_view text);
+// Parses "wght=700,wdth=85" (spaces allowed; HarfBuzz's variation syntax
+// without ranges); a blank text gives none. Throws Error(InvalidArgument)
+// naming the bad item.
+CURVETEXT_API std::vector<Variation> parse_variations(std::string_view text);
 
 struct FontMetrics {
   int units_per_em = 0;
@@ -30,47 +34,68 @@ struct FontMetrics {
   double line_gap = 0.0;
 };
 
-class Font {
+// One face, owning a copy of the file's bytes (the file is not read again
+// and may change or go after open) and its own FreeType and HarfBuzz state.
+//
+// Thread safety: the const member functions may be called from several
+// threads at once (FreeType's use is serialised per font); set_variations,
+// assignment and destruction need exclusive use. A moved-from Font may only
+// be assigned to or destroyed. Fonts handed out as shared_ptr<const Font>
+// (FontCollection, GlyphRun) are shared this way.
+class CURVETEXT_API Font {
  public:
-  // Throws Error(FontNotFound) if the file cannot be read, Error(FontInvalid)
-  // if it is not a usable scalable font or face_index is out of range.
+  // Reads the whole file. Throws Error(FontNotFound) if the file cannot be
+  // read, Error(FontInvalid) if it is not a usable scalable font or
+  // face_index is out of range.
   static Font open(const std::string& path, int face_index = 0);
-  // Number of faces in a file (1 for a plain font file).
+  // The same from font file bytes already in memory (an asset pack, an
+  // embedded font). The bytes are copied: `data` need not outlive the call.
+  // `name` stands for the path in error messages. Throws
+  // Error(FontInvalid) if the bytes are not a usable scalable font or
+  // face_index is out of range.
+  static Font open_memory(std::span<const std::uint8_t> data, const std::string& name = "font in memory",
+                          int face_index = 0);
+  // Number of faces in a file (1 for a plain font file). Same errors as open.
   static int face_count(const std::string& path);
 
   Font(Font&&) noexcept;
   Font& operator=(Font&&) noexcept;
   ~Font();
 
-  // Sets variation axis values for both FreeType and HarfBuzz. Throws
-  // Error(FontInvalid) naming the axis if the font has no such axis or is not
-  // variable. Values are clamped to the axis range.
+  // Sets variation axis values for both FreeType and HarfBuzz; axes not
+  // named go back to their defaults. Values are clamped to the axis range.
+  // Throws Error(FontInvalid) naming the axis if the font has no such axis or
+  // is not variable, Error(InvalidArgument) for a bad tag or a non-finite
+  // value (the font is then unchanged, but for FreeType's own failure).
+  // Changes cache_key(), so cached glyph meshes are never mixed up.
   void set_variations(const std::vector<Variation>& variations);
+  // What set_variations was last given (clamped, one per axis named);
+  // valid until the next set_variations.
   const std::vector<Variation>& variations() const;
 
-  const std::string& path() const;
+  const std::string& path() const;  // as given to open
   int face_index() const;
-  std::string family_name() const;
+  std::string family_name() const;  // the face's family name; empty when it has none
   // A key that differs between faces and between variation settings; used by
-  // the glyph cache.
+  // the glyph cache. Equal for two Fonts opened from the same path and face
+  // at the same (clamped) variations.
   std::uint64_t cache_key() const;
 
+  // At the current variations, in font units.
   FontMetrics metrics() const;
-  unsigned glyph_count() const;
+  unsigned glyph_count() const;  // glyph ids are 0 .. glyph_count() - 1
   // Outline of a glyph in font units, unhinted, at the current variations.
   // Empty outline for glyphs without contours (space). Throws Error(FontInvalid)
-  // for glyph ids out of range.
+  // for glyph ids out of range or a glyph the font's data cannot give.
   Outline glyph_outline(std::uint32_t glyph_id) const;
   // The same into `out`, which is cleared first (its storage is reused).
   void glyph_outline(std::uint32_t glyph_id, Outline& out) const;
   // Glyph id for a Unicode code point, 0 when the font has none.
   std::uint32_t glyph_for_codepoint(char32_t codepoint) const;
 
-  // Access for the shaper and for FreeType-based reference rendering.
-  struct Impl;
-  Impl& impl() const { return *impl_; }
-
  private:
+  friend struct FontAccess;  // lib/font/font_impl.hpp
+  struct CURVETEXT_HIDDEN Impl;
   explicit Font(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
 };

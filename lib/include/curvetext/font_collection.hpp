@@ -9,7 +9,9 @@
 // when there is none, the first font's missing glyph (.notdef) is drawn.
 //
 // Not thread-safe: use one collection per thread (fonts handed out are
-// immutable and may be shared).
+// immutable and may be shared, font.hpp). The collection keeps every face it
+// opened until it is destroyed; the faces handed out live as long as their
+// last shared_ptr.
 #pragma once
 
 #include <cstddef>
@@ -20,14 +22,15 @@
 #include <unordered_map>
 #include <vector>
 
+#include "curvetext/export.hpp"
 #include "curvetext/font.hpp"
 
 namespace curvetext {
 
-class FontCollection {
+class CURVETEXT_API FontCollection {
  public:
   // `default_font`: the file used when a style names no font (empty: the
-  // library's default font, DejaVu Sans).
+  // library's default font, DejaVu Sans). Opens nothing yet; does not throw.
   explicit FontCollection(std::string default_font = {});
   ~FontCollection();
   FontCollection(const FontCollection&) = delete;
@@ -35,15 +38,20 @@ class FontCollection {
 
   // A font file (a path with '/' or an existing file; "file.ttc#2" picks a
   // face) or a fontconfig pattern ("Noto Sans", "DejaVu Serif:bold"), at the
-  // given variations. Throws Error(FontNotFound) when fontconfig has no match
-  // and the font errors of Font::open / set_variations.
+  // given variations; the same face again for the same name and variations.
+  // Throws Error(InvalidArgument) for an empty name, Error(FontNotFound)
+  // when fontconfig has no match, and the font errors of Font::open /
+  // set_variations.
   std::shared_ptr<const Font> resolve(const std::string& name, const std::vector<Variation>& variations = {});
+  // The constructor's default font (opened once). Throws the errors of
+  // default_font_path (default_font.hpp) and Font::open.
   std::shared_ptr<const Font> default_font();
 
   // An outline face that has a glyph for `c`, from fontconfig (language
   // `language` preferred, may be empty); nullptr when none. Faces already
   // handed out are tried first. Variations are applied where the face has
-  // the axes.
+  // the axes. Remembered per (c, language, variations). Faces that cannot be
+  // opened are skipped, not thrown.
   std::shared_ptr<const Font> fallback(char32_t c, const std::string& language,
                                        const std::vector<Variation>& variations = {});
 
@@ -54,6 +62,7 @@ class FontCollection {
   // out by the collection do).
   bool has_glyph(const Font& font, char32_t c);
 
+  // Counts since construction.
   struct Stats {
     std::size_t fontconfig_queries = 0;
     std::size_t fallback_hits = 0;  // answered from the cache
@@ -79,6 +88,7 @@ class FontCollection {
 };
 
 // True when the face has outlines curvetext can draw (glyf, CFF or CFF2).
-bool has_outlines(const Font& font);
+// Reads the face's table directory; thread-safe as Font's const functions.
+CURVETEXT_API bool has_outlines(const Font& font);
 
 }  // namespace curvetext

@@ -1,5 +1,5 @@
 // What single lines (text_image.hpp), paragraphs (paragraph_image.hpp) and
-// shape documents (shapes.hpp) share when drawn to an image: antialiasing,
+// shape documents (shape_image.hpp) share when drawn to an image: antialiasing,
 // curve test, vbaa filter, blending, coverage gamma, the debug view and a
 // projective transform of the whole image. One place turns them into
 // DrawOptions and into the transformed image frame, so the three paths
@@ -7,13 +7,14 @@
 #pragma once
 
 #include "curvetext/color.hpp"
+#include "curvetext/export.hpp"
 #include "curvetext/renderer.hpp"
 #include "curvetext/transform.hpp"
 
 namespace curvetext {
 
 struct ImageStyle {
-  Color background{1, 1, 1, 1};
+  Color background{1, 1, 1, 1};  // straight alpha, sRGB
   AntiAliasing antialiasing = AntiAliasing::Full;
   CurveMode curve_mode = CurveMode::Exact;
   // vbaa's filter ring (DrawOptions::vbaa_ring): 0 a box filter (default).
@@ -33,17 +34,18 @@ struct ImageStyle {
 // (text: pixels per em times the transform's largest stretch; shapes: the
 // larger side of the shape's bounding box on screen): vbaa up to
 // tolerance::kAutoVbaaMaxPx, full above (bench/quality_bench). Other modes
-// are returned as they are.
-AntiAliasing resolve_antialiasing(AntiAliasing aa, double on_screen_px);
+// are returned as they are. Thread-safe.
+CURVETEXT_API AntiAliasing resolve_antialiasing(AntiAliasing aa, double on_screen_px);
 
 // The style's DrawOptions for one block drawn in `color` (auto resolved for
-// `on_screen_px`). Throws Error(InvalidArgument) for a gamma out of range.
-DrawOptions draw_options(const ImageStyle& style, Color color, double on_screen_px);
+// `on_screen_px`). Throws Error(InvalidArgument) for a gamma that is not
+// finite or is outside [tolerance::kMinCoverageGamma, kMaxCoverageGamma].
+CURVETEXT_API DrawOptions draw_options(const ImageStyle& style, Color color, double on_screen_px);
 
 // A width x height image under `transform` about its centre.
 struct ImageFrame {
-  int width = 0;
-  int height = 0;
+  int width = 0;                 // px
+  int height = 0;                // px
   Transform transform;           // untransformed image pixels -> final image pixels
   double largest_stretch = 1.0;  // of `transform` over the image (for levels of detail)
 };
@@ -52,6 +54,6 @@ struct ImageFrame {
 // image's bounding box, moved to the origin. Throws Error(InvalidArgument) for
 // an invalid transform (Transform::validate), one that puts a corner behind
 // the viewer, or a side above tolerance::kMaxImageSidePx.
-ImageFrame transform_frame(double width, double height, const Transform& transform);
+CURVETEXT_API ImageFrame transform_frame(double width, double height, const Transform& transform);
 
 }  // namespace curvetext

@@ -27,6 +27,7 @@
 
 #include "curvetext/bidi.hpp"
 #include "curvetext/color.hpp"
+#include "curvetext/export.hpp"
 #include "curvetext/font.hpp"
 #include "curvetext/font_collection.hpp"
 #include "curvetext/shaping.hpp"
@@ -95,7 +96,7 @@ struct GlyphRun {
 };
 
 struct Rect {
-  double x = 0.0, y = 0.0, width = 0.0, height = 0.0;
+  double x = 0.0, y = 0.0, width = 0.0, height = 0.0;  // px, layout box coordinates
 };
 
 struct LayoutLine {
@@ -117,10 +118,10 @@ struct LayoutLine {
 // leading edge), `weak` the character before it (its trailing edge); they
 // are equal elsewhere.
 struct Caret {
-  std::size_t line = 0;
-  double strong_x = 0.0, weak_x = 0.0;
+  std::size_t line = 0;                 // index into Paragraph::lines()
+  double strong_x = 0.0, weak_x = 0.0;  // px
   bool strong_rtl = false, weak_rtl = false;
-  double top = 0.0, bottom = 0.0;
+  double top = 0.0, bottom = 0.0;  // px, the line's
 };
 
 struct HitResult {
@@ -129,41 +130,51 @@ struct HitResult {
   bool inside = false;  // the point is over a grapheme of the text
 };
 
-class Paragraph {
+// A laid-out paragraph: an immutable value (copyable) that keeps its own copy
+// of the text and, through its runs, the fonts it uses alive; it does not
+// refer to the FontCollection after layout. Its const functions may be used
+// from several threads at once.
+class CURVETEXT_API Paragraph {
  public:
-  // Throws Error(InvalidText) for invalid UTF-8 (an empty text lays out as one
-  // empty line), Error(InvalidArgument) for bad sizes, widths, spans or styles,
-  // and the font errors of FontCollection.
+  // Uses `fonts` during the call only (not thread-safe: see
+  // font_collection.hpp). Throws Error(InvalidText) for invalid UTF-8 or a
+  // text over 256 MiB (an empty text lays out as one empty line),
+  // Error(InvalidArgument) for bad sizes, widths, spans or styles, and the
+  // font errors of FontCollection.
   static Paragraph layout(FontCollection& fonts, std::string_view text, const std::vector<TextSpan>& spans,
                           const ParagraphStyle& style);
 
   const std::string& text() const { return text_; }
-  const std::vector<LayoutLine>& lines() const { return lines_; }
+  const std::vector<LayoutLine>& lines() const { return lines_; }  // top to bottom, at least one
+  // The default style, then each span's, indexed by GlyphRun::style.
   const std::vector<TextStyle>& styles() const { return styles_; }
   // Union of the lines' boxes (x from 0 to the widest line, or the width).
   Rect logical_bounds() const;
   // Union of the glyphs' outline boxes; empty rect when nothing is inked.
   Rect ink_bounds() const;
 
-  // Clamped to the text and moved back to a grapheme boundary.
+  // The caret at UTF-8 offset `index`, clamped to the text and moved back to
+  // a grapheme boundary.
   Caret caret(std::size_t index) const;
+  // The caret position nearest the point (px, layout box coordinates); points
+  // above or below the text go to the first or last line.
   HitResult hit_test(double x, double y) const;
-  // Rectangles, one per visually contiguous piece, covering [start, end).
+  // Rectangles (px), one per visually contiguous piece, covering the UTF-8
+  // range [start, end) (swapped when start > end).
   std::vector<Rect> selection_rects(std::size_t start, std::size_t end) const;
-  // Grapheme boundaries (for caret movement): the previous/next one.
+  // Grapheme boundaries (for caret movement): the previous/next one, as
+  // UTF-8 offsets within [0, text().size()].
   std::size_t previous_boundary(std::size_t index) const;
   std::size_t next_boundary(std::size_t index) const;
 
-  // A grapheme cluster's box on a line, used for hit testing (public for tests).
+ private:
+  friend struct ParagraphBuilder;  // lib/layout/layout.cpp
+  // A grapheme cluster's box on a line, for carets, hit testing and selection.
   struct ClusterBox {
     std::size_t start = 0, end = 0;  // UTF-8 range of the grapheme
     double left = 0.0, right = 0.0;
     bool rtl = false;
   };
-  const std::vector<ClusterBox>& boxes(std::size_t line) const { return boxes_[line]; }
-
- private:
-  friend struct ParagraphBuilder;
   std::string text_;
   std::vector<TextStyle> styles_;
   std::vector<LayoutLine> lines_;

@@ -12,6 +12,8 @@
 #include <string_view>
 #include <vector>
 
+#include "curvetext/export.hpp"
+
 namespace curvetext {
 
 enum class BreakAction : std::uint8_t {
@@ -22,7 +24,7 @@ enum class BreakAction : std::uint8_t {
 
 // One action per code point: whether a line may end after it. `language` (BCP
 // 47, may be empty) selects libunibreak's class tailorings (e.g. "de", "zh", "ja").
-std::vector<BreakAction> line_breaks(std::u32string_view text, std::string_view language = {});
+CURVETEXT_API std::vector<BreakAction> line_breaks(std::u32string_view text, std::string_view language = {});
 
 // Adds, as Allowed where `breaks` (line_breaks() of the same text) has None,
 // the word boundaries inside runs of Thai letters that libthai's dictionary
@@ -30,7 +32,7 @@ std::vector<BreakAction> line_breaks(std::u32string_view text, std::string_view 
 // to a dictionary and resolves SA to AL without one, which is what
 // line_breaks() does (and what LineBreakTest expects). Only Thai has a
 // dictionary here; the other SA scripts still break at spaces only.
-void add_dictionary_breaks(std::u32string_view text, std::vector<BreakAction>& breaks);
+CURVETEXT_API void add_dictionary_breaks(std::u32string_view text, std::vector<BreakAction>& breaks);
 
 // The same for the Thai runs that reach into [from, to) only, skipping those
 // already marked in `done` (one flag per code point; the runs handled here are
@@ -38,13 +40,13 @@ void add_dictionary_breaks(std::u32string_view text, std::vector<BreakAction>& b
 // the text between the last break that fits and the first that does not: a
 // run lying wholly inside a line needs no word breaks, and the dictionary
 // lookup is most of the time spent on Thai text.
-bool add_dictionary_breaks(std::u32string_view text, std::vector<BreakAction>& breaks, std::size_t from, std::size_t to,
-                           std::vector<bool>& done);
+CURVETEXT_API bool add_dictionary_breaks(std::u32string_view text, std::vector<BreakAction>& breaks, std::size_t from,
+                                         std::size_t to, std::vector<bool>& done);
 
 // One flag per code point: true where a grapheme cluster starts. Covers the
 // rules that matter for carets: CR LF, combining marks and spacing marks,
 // ZWJ, variation selectors, emoji modifiers, regional indicator pairs and
 // Hangul syllable sequences.
-std::vector<bool> grapheme_starts(std::u32string_view text);
+CURVETEXT_API std::vector<bool> grapheme_starts(std::u32string_view text);
 
 }  // namespace curvetext

@@ -4,13 +4,16 @@
 // scale. Outlines without cubics are exact at every scale and use one mesh.
 #pragma once
 
+#include "curvetext/export.hpp"
+
 namespace curvetext {
 
 // Band index for a drawn scale in pixels per outline unit (ppem / upem for
 // glyphs): ceil(log2(pixels per em)), clamped to the tolerance.hpp range.
-int lod_for_scale(double pixels_per_unit, double units_per_em);
+CURVETEXT_API int lod_for_scale(double pixels_per_unit, double units_per_em);
 
-// Cubic tolerance, in outline units, for meshes of band `lod`.
-double cubic_tolerance_for_lod(int lod, double units_per_em);
+// Cubic tolerance, in outline units, for meshes of band `lod`
+// (tolerance::kCubicApproximationPx at the band's largest scale).
+CURVETEXT_API double cubic_tolerance_for_lod(int lod, double units_per_em);
 
 }  // namespace curvetext

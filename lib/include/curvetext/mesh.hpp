@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "curvetext/export.hpp"
 #include "curvetext/outline.hpp"
 
 namespace curvetext {
@@ -46,16 +47,18 @@ struct MeshOptions {
 };
 
 // Builds the mesh of the nonzero-winding fill of `outline`. Throws
-// Error(Geometry) on non-finite input. Never hangs: work is bounded by the
-// input size and tolerance::kMaxHullSubdivisionDepth.
-Mesh build_mesh(const Outline& outline, const MeshOptions& options = {});
+// Error(Geometry) on non-finite input or a cubic_tolerance that is not
+// positive and finite. Never hangs: work is bounded by the input size and
+// tolerance::kMaxHullSubdivisionDepth. Thread-safe (scratch memory is per
+// thread).
+CURVETEXT_API Mesh build_mesh(const Outline& outline, const MeshOptions& options = {});
 // The same into `mesh`, whose contents are replaced and whose storage is
 // reused (a glyph cache building many meshes in a row allocates less).
-void build_mesh(const Outline& outline, const MeshOptions& options, Mesh& mesh);
+CURVETEXT_API void build_mesh(const Outline& outline, const MeshOptions& options, Mesh& mesh);
 
 // Area enclosed by the mesh: interior triangles plus, for each curved triangle,
 // the area of its filled side (chord side for convex, outer side otherwise).
-double mesh_area(const Mesh& mesh);
+CURVETEXT_API double mesh_area(const Mesh& mesh);
 
 // The invariants of DESIGN.md section 4, checked on a built mesh.
 struct MeshCheck {
@@ -70,7 +73,8 @@ struct MeshCheck {
 };
 
 // `quadratic_outline` must be the outline the mesh was built from after cubic
-// replacement (to_quadratic_outline with the same tolerance).
-MeshCheck check_mesh(const Mesh& mesh, const Outline& quadratic_outline);
+// replacement (to_quadratic_outline with the same tolerance). Violations are
+// reported in the result, not thrown.
+CURVETEXT_API MeshCheck check_mesh(const Mesh& mesh, const Outline& quadratic_outline);
 
 }  // namespace curvetext

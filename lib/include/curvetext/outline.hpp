@@ -8,11 +8,12 @@
 #include <cstdint>
 #include <vector>
 
+#include "curvetext/export.hpp"
 #include "curvetext/geometry.hpp"
 
 namespace curvetext {
 
-struct Segment {
+struct CURVETEXT_API Segment {
   enum class Kind : std::uint8_t { Line, Conic, Cubic };
   Kind kind = Kind::Line;
   // Line: p[0] -> p[1].  Conic: p[0], control p[1], p[2], middle weight
@@ -35,10 +36,15 @@ struct Contour {
   std::vector<Segment> segments;
 };
 
-class Outline {
+// A value type (copyable, movable). Values are not checked while building:
+// is_finite() says whether they can be drawn, and build_mesh refuses those
+// that cannot.
+class CURVETEXT_API Outline {
  public:
   // Path builder. Every contour is closed: move_to() or close() closes the
-  // current one with a line when its end is not its start.
+  // current one with a line when its end is not its start. A drawing call
+  // without move_to() starts a contour at the pen (the last point, else
+  // (0,0)); zero-length lines are dropped.
   void move_to(Vec2 p);
   void line_to(Vec2 p);
   void conic_to(Vec2 control, Vec2 p, double weight = 1.0);
@@ -49,6 +55,9 @@ class Outline {
   // once warm.
   void clear();
 
+  // The contours so far; the one still open gets its closing line at close()
+  // or the next move_to(). Edits through the mutable overload must keep
+  // every contour closed.
   const std::vector<Contour>& contours() const { return contours_; }
   std::vector<Contour>& contours() { return contours_; }
   bool empty() const;

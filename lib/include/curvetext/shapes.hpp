@@ -8,6 +8,8 @@
 // SVG elliptical arcs become exact rational quadratics (DESIGN.md section 3).
 // Polynomial cubics use cubic_to_quadratics (curves.hpp); rational cubics and
 // every degree >= 4 are approximated by conics within the caller's tolerance.
+// No GL here: shape_image.hpp draws documents. Everything here is a value
+// type or a pure function (thread-safe, export.hpp).
 #pragma once
 
 #include <string>
@@ -16,22 +18,18 @@
 #include <vector>
 
 #include "curvetext/color.hpp"
-#include "curvetext/image_style.hpp"
+#include "curvetext/export.hpp"
 #include "curvetext/outline.hpp"
-#include "curvetext/renderer.hpp"
 
 namespace curvetext {
 
 enum class FillRule { NonZero, EvenOdd };
 
-// "nonzero" | "evenodd" (SVG spelling; "even-odd" is accepted too).
-FillRule parse_fill_rule(std::string_view text);
-
 // A rational Bezier piece of degree points.size() - 1 >= 1, in homogeneous
 // form sum(w_i B_i(t) p_i) / sum(w_i B_i(t)). Every weight is > 0, except
 // the middle weight of a quadratic, which may be 0 (the piece is its chord,
 // DESIGN.md section 3).
-struct RationalBezier {
+struct CURVETEXT_API RationalBezier {
   std::vector<Vec2> points;
   std::vector<double> weights;
   int degree() const { return static_cast<int>(points.size()) - 1; }
@@ -41,9 +39,10 @@ struct RationalBezier {
   static RationalBezier cubic(Vec2 a, Vec2 c1, Vec2 c2, Vec2 b);
 };
 
-Vec2 evaluate(const RationalBezier& curve, double t);
+// The point at t in [0, 1]; the curve must be valid (validate_nurbs's rules).
+CURVETEXT_API Vec2 evaluate(const RationalBezier& curve, double t);
 // De Casteljau in homogeneous coordinates: both halves are exact.
-std::pair<RationalBezier, RationalBezier> split(const RationalBezier& curve, double t);
+CURVETEXT_API std::pair<RationalBezier, RationalBezier> split(const RationalBezier& curve, double t);
 
 // A closed contour: pieces[i] ends where pieces[i+1] starts; the last piece
 // is joined to the first by a line when it does not end there.
@@ -85,14 +84,14 @@ struct Nurbs {
 // order or multiplicity, NaN/inf/huge values, weights <= 0 except 0 at an
 // interior point of degree 2; nurbs_to_beziers refuses a 0 that lands on a
 // piece's end and turns a piece whose middle weight is 0 into its chord).
-void validate_nurbs(const Nurbs& curve);
+CURVETEXT_API void validate_nurbs(const Nurbs& curve);
 
 // Exact conversion into rational Bezier pieces of the same degree, one per
 // non-empty knot span of the domain. Each piece's control points are the
 // blossoms (polar values) of the span's end knots: the same points Boehm's
 // knot insertion gives after raising every knot to multiplicity p, computed
 // in homogeneous coordinates (so rational curves stay exact).
-std::vector<RationalBezier> nurbs_to_beziers(const Nurbs& curve);
+CURVETEXT_API std::vector<RationalBezier> nurbs_to_beziers(const Nurbs& curve);
 
 // Largest absolute coordinate accepted anywhere in shape input (document
 // units). Beyond it double precision leaves too few bits for 1/16 px at any
@@ -110,17 +109,21 @@ inline constexpr int kMaxNurbsDegree = 16;
 // points and end tangents through the piece's midpoint, accepted when the
 // estimated distance (first-order implicit distance at 33 sample points per
 // piece, with a 1.5x safety factor) is <= tolerance.
-// `tolerance` is in document units. Throws Error(Geometry) when that would
-// need more than kMaxConicsPerCurve pieces.
-void append_quadratics(const RationalBezier& curve, double tolerance, std::vector<Segment>& out);
+// `tolerance` is in document units. Throws Error(InvalidArgument) for a piece
+// with fewer than 2 points, a weight count that differs, or a tolerance that
+// is not positive; Error(Geometry) when that would need more than
+// kMaxConicsPerCurve pieces.
+CURVETEXT_API void append_quadratics(const RationalBezier& curve, double tolerance, std::vector<Segment>& out);
 inline constexpr int kMaxConicsPerCurve = 4096;
 
-// The shape's contours as lines and conics (see append_quadratics).
-Outline shape_outline(const Shape& shape, double tolerance);
+// The shape's contours as lines and conics (see append_quadratics, whose
+// errors it throws).
+CURVETEXT_API Outline shape_outline(const Shape& shape, double tolerance);
 
 // An outline whose NONZERO fill is the shape's fill: the shape's own outline
-// for FillRule::NonZero; for EvenOdd, even_odd_to_nonzero of it.
-Outline fill_outline(const Shape& shape, double tolerance);
+// for FillRule::NonZero; for EvenOdd, even_odd_to_nonzero of it. Throws the
+// errors of both.
+CURVETEXT_API Outline fill_outline(const Shape& shape, double tolerance);
 
 // Re-expresses the even-odd fill of an outline of lines and conics as an
 // outline whose nonzero fill is the same region (build_mesh fills nonzero
@@ -131,49 +134,26 @@ Outline fill_outline(const Shape& shape, double tolerance);
 // elsewhere. Exact in the geometry (pieces of conics are exact sub-conics);
 // the crossing points are computed in double precision (relative error
 // ~1e-12 of the outline's size). Segments lying on top of each other
-// (collinear overlapping lines, identical arcs) are not resolved.
-Outline even_odd_to_nonzero(const Outline& outline);
+// (collinear overlapping lines, identical arcs) are not resolved. Throws
+// Error(InvalidArgument) for an outline with cubics, Error(Geometry) for
+// non-finite values.
+CURVETEXT_API Outline even_odd_to_nonzero(const Outline& outline);
 
 // --- Input ------------------------------------------------------------------------
-// Errors are Error(InvalidArgument) with "line L, column C" for syntax errors.
-ShapeDocument parse_shape_json(std::string_view text);
+// Every reader checks every value (finite, within kMaxShapeCoordinate,
+// weights as validate_nurbs says) and throws Error(InvalidArgument) naming
+// the problem, with "line L, column C" for JSON syntax errors.
+// The JSON format of docs/shapes/README.md (NURBS curves and lines).
+CURVETEXT_API ShapeDocument parse_shape_json(std::string_view text);
 // SVG path data in its own coordinates (no mirroring). Arcs become exact conics.
-std::vector<ShapeContour> parse_svg_path(std::string_view d);
+CURVETEXT_API std::vector<ShapeContour> parse_svg_path(std::string_view d);
 // Minimal SVG: <svg width height viewBox> and its <path d fill fill-rule>
 // elements (also inside <g>, which is otherwise ignored); a `transform`
 // attribute is refused rather than ignored.
-ShapeDocument parse_svg(std::string_view text);
-// By extension: .json or .svg. Throws Error(Io) when unreadable.
-ShapeDocument read_shape_file(const std::string& path);
-
-// --- Drawing ----------------------------------------------------------------------
-// Background, antialiasing, curve test, vbaa filter, blending, gamma, debug
-// view and transform: ImageStyle (image_style.hpp), as for text. The
-// transform is applied about the centre of the untransformed image (width x
-// height), which then grows to the transformed bounding box. `auto` picks per
-// shape from the larger side of its bounding box on screen (vbaa up to
-// tolerance::kAutoVbaaMaxPx, full above).
-struct ShapeImageOptions : ImageStyle {
-  int width = 0;  // 0: from the document (or the view at `scale`)
-  int height = 0;
-  double scale = 0.0;  // pixels per document unit; 0: fit the view into the image
-};
-
-struct ShapeImageLayout {
-  int width = 0;
-  int height = 0;
-  Placement placement;           // document units (y-up) -> pixels (then placement.transform)
-  double largest_stretch = 1.0;  // of placement.transform over the image
-};
-
-// Throws Error(InvalidArgument) for an empty document, an empty view, a scale
-// that is not positive and finite, an image side above the limit, or a
-// transform that transform_frame refuses.
-ShapeImageLayout layout_shape_image(const ShapeDocument& doc, const ShapeImageOptions& options);
-
-// Draws every shape in order (one mesh, one batch, one colour each, blended
-// source-over) with the renderer's GL context current.
-Image render_shape_image(Renderer& renderer, const ShapeDocument& doc, const ShapeImageLayout& layout,
-                         const ShapeImageOptions& options);
+CURVETEXT_API ShapeDocument parse_svg(std::string_view text);
+// By extension: .json or .svg (any case). Throws Error(Io) when unreadable,
+// Error(InvalidArgument) for another extension, and the readers' errors
+// prefixed with the path.
+CURVETEXT_API ShapeDocument read_shape_file(const std::string& path);
 
 }  // namespace curvetext

@@ -9,6 +9,7 @@
 
 #include <string_view>
 
+#include "curvetext/export.hpp"
 #include "curvetext/font.hpp"
 #include "curvetext/image_style.hpp"
 #include "curvetext/renderer.hpp"
@@ -22,31 +23,38 @@ namespace curvetext {
 // the image then becomes the bounding box of the transformed one (ceil of its
 // size), so nothing is cut off. Identity: the contract exactly.
 struct TextImageOptions : ImageStyle {
-  double size_px = 32.0;
-  double margin_px = 16.0;
-  Color foreground{0, 0, 0, 1};
+  double size_px = 32.0;         // pixels per em
+  double margin_px = 16.0;       // px, on every side
+  Color foreground{0, 0, 0, 1};  // straight alpha, sRGB
   ShapeOptions shaping;
 };
 
 struct TextImageLayout {
-  ShapedLine line;
-  int width = 0;
-  int height = 0;
+  ShapedLine line;               // font units
+  int width = 0;                 // px, after the transform
+  int height = 0;                // px
   Placement placement;           // font units -> image pixels, pen origin at (margin, margin + A)
                                  // (then placement.transform, identity unless options.transform is not)
   double largest_stretch = 1.0;  // of placement.transform over the image (for the level of detail)
-  double ascender_px = 0.0;
-  double descender_px = 0.0;
+  double ascender_px = 0.0;      // A, at size_px
+  double descender_px = 0.0;     // D, negative below the baseline
 };
 
-// Validates the text (non-empty, UTF-8) and sizes; throws Error(InvalidText) or
-// Error(InvalidArgument) (size <= 0, NaN, above tolerance::kMaxPixelsPerEm, or
-// an image side above tolerance::kMaxImageSidePx).
-TextImageLayout layout_text_image(const Font& font, std::string_view text, const TextImageOptions& options);
+// Shapes the text and sizes the image; no GL, thread-safe (font.hpp). Throws
+// Error(InvalidText) for an empty text or invalid UTF-8,
+// Error(InvalidArgument) for a size <= 0, NaN or above
+// tolerance::kMaxPixelsPerEm, a bad margin, an image side above
+// tolerance::kMaxImageSidePx, a transform that transform_frame refuses, or
+// the shaping options shape_line refuses.
+CURVETEXT_API TextImageLayout layout_text_image(const Font& font, std::string_view text,
+                                                const TextImageOptions& options);
 
-// Draws the laid-out line with `renderer` (its GL context current) and returns
-// the image.
-Image render_text_image(Renderer& renderer, GlyphCache& cache, const Font& font, const TextImageLayout& layout,
-                        const TextImageOptions& options);
+// Draws the laid-out line into `renderer`'s own framebuffer
+// (Renderer::begin at the layout's size) with glyph meshes from `cache`, and
+// returns it read back. Needs the renderer's GL context current on the
+// calling thread, and `cache` used with that context. Throws the errors of
+// draw_options, DrawBatch::from_text and the Renderer.
+CURVETEXT_API Image render_text_image(Renderer& renderer, GlyphCache& cache, const Font& font,
+                                      const TextImageLayout& layout, const TextImageOptions& options);
 
 }  // namespace curvetext

@@ -6,13 +6,16 @@
 
 #include <array>
 
+#include "curvetext/export.hpp"
 #include "curvetext/geometry.hpp"
 
 namespace curvetext {
 
 // Row-major 3x3 homogeneous matrix m: (x, y) -> (X / W, Y / W) with
-// (X, Y, W) = m * (x, y, 1). Affine maps have the last row (0, 0, 1).
-struct Transform {
+// (X, Y, W) = m * (x, y, 1). Affine maps have the last row (0, 0, 1). A
+// value type; the factories do not check their arguments (validate() does,
+// and so does everything that draws with a transform).
+struct CURVETEXT_API Transform {
   std::array<double, 9> m{1, 0, 0, 0, 1, 0, 0, 0, 1};
 
   static Transform translation(double dx, double dy);
@@ -29,8 +32,8 @@ struct Transform {
 
   bool is_identity() const;
   bool is_affine() const;
-  double w(Vec2 p) const { return m[6] * p.x + m[7] * p.y + m[8]; }
-  Vec2 apply(Vec2 p) const;
+  double w(Vec2 p) const { return m[6] * p.x + m[7] * p.y + m[8]; }  // W at p
+  Vec2 apply(Vec2 p) const;                                          // (X / W, Y / W); not finite where W is 0
   // Largest and smallest singular values of the map's Jacobian at p (pixels
   // out per pixel in).
   double largest_stretch(Vec2 p) const;
@@ -43,6 +46,6 @@ struct Transform {
 };
 
 // a after b.
-Transform operator*(const Transform& a, const Transform& b);
+CURVETEXT_API Transform operator*(const Transform& a, const Transform& b);
 
 }  // namespace curvetext

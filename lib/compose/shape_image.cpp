@@ -1,14 +1,16 @@
 // Shape documents to images: one mesh and one draw call per shape, in order,
 // blended source-over (the renderer draws one colour per batch).
+#include "curvetext/shape_image.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
 
-#include "check.hpp"
 #include "curvetext/error.hpp"
 #include "curvetext/mesh.hpp"
-#include "curvetext/shapes.hpp"
 #include "curvetext/tolerances.hpp"
+#include "compose/check_style.hpp"
+#include "core/format.hpp"
 
 namespace curvetext {
 
@@ -49,7 +51,7 @@ double on_screen_size(const Shape& shape, const ShapeImageLayout& layout) {
 int image_side(double v, const char* what) {
   if (!std::isfinite(v) || v < 1.0 || v > tolerance::kMaxImageSidePx)
     throw Error(ErrorCode::InvalidArgument, std::string("the image ") + what + " would be " +
-                                                shapes_detail::number_text(v) + " px; it must be from 1 to " +
+                                                detail::format_number_exact(v) + " px; it must be from 1 to " +
                                                 std::to_string(static_cast<int>(tolerance::kMaxImageSidePx)));
   return static_cast<int>(v);
 }
@@ -69,7 +71,7 @@ ShapeImageLayout layout_shape_image(const ShapeDocument& doc, const ShapeImageOp
 
   if (options.scale != 0.0 && (!std::isfinite(options.scale) || options.scale <= 0.0))
     throw Error(ErrorCode::InvalidArgument,
-                "scale must be a positive number, got " + shapes_detail::number_text(options.scale));
+                "scale must be a positive number, got " + detail::format_number_exact(options.scale));
   if (options.width < 0 || options.height < 0) throw Error(ErrorCode::InvalidArgument, "image size must be positive");
 
   double w = options.width, h = options.height, s = options.scale;
