@@ -1,4 +1,5 @@
-// Headless GLES2 context through EGL. Order of attempts:
+// Headless GL context through EGL, of the kind asked for (headless.hpp).
+// Displays, in order of attempts:
 //   1. Mesa's surfaceless platform (no window system, no device node needed:
 //      this is what gives llvmpipe on a machine without a GPU);
 //   2. the device platform (EGL_EXT_platform_device; how NVIDIA's driver
@@ -10,6 +11,7 @@
 #include <EGL/eglext.h>
 #include <GLES2/gl2.h>
 
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <utility>
@@ -121,9 +123,151 @@ EGLDisplay open_display(std::string& why) {
 
 [[noreturn]] void fail(const std::string& message) { throw Error(ErrorCode::NoDevice, "no EGL display: " + message); }
 
+// What create() asks EGL for, per kind.
+struct KindRequest {
+  ContextKind kind;
+  EGLenum api;            // eglBindAPI
+  EGLint renderable_bit;  // EGL_RENDERABLE_TYPE of the config
+  EGLint profile;         // EGL_CONTEXT_OPENGL_PROFILE_MASK; 0 for GLES
+  int major, minor;
+  std::string name;  // "OpenGL 3.3 core", for messages
+};
+
+bool is_desktop(ContextKind kind) { return kind == ContextKind::GlCore || kind == ContextKind::GlCompat; }
+
+KindRequest request_for(const ContextOptions& options) {
+  constexpr EGLint kEs3Bit = 0x0040;  // EGL_OPENGL_ES3_BIT (EGL 1.5, EGL_KHR_create_context)
+  KindRequest r{options.kind, EGL_OPENGL_ES_API, EGL_OPENGL_ES2_BIT, 0, 2, 0, {}};
+  switch (options.kind) {
+    case ContextKind::Gles2:
+      break;
+    case ContextKind::Gles3:
+      r.renderable_bit = kEs3Bit;
+      r.major = 3;
+      break;
+    case ContextKind::GlCore:
+    case ContextKind::GlCompat:
+      r.api = EGL_OPENGL_API;
+      r.renderable_bit = EGL_OPENGL_BIT;
+      r.profile = options.kind == ContextKind::GlCore ? EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT
+                                                      : EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT;
+      r.major = 3;
+      r.minor = 3;
+      break;
+  }
+  if (options.major != 0 || options.minor != 0) {
+    const bool valid = options.minor >= 0 &&
+                       (is_desktop(options.kind) ? options.major > 3 || (options.major == 3 && options.minor >= 2)
+                                                 : options.major == r.major);
+    if (!valid)
+      throw Error(ErrorCode::InvalidArgument, std::string("a ") + context_kind_name(options.kind) +
+                                                  " context cannot have version " + std::to_string(options.major) +
+                                                  "." + std::to_string(options.minor));
+    r.major = options.major;
+    r.minor = options.minor;
+  }
+  r.name = std::string(is_desktop(options.kind) ? "OpenGL " : "OpenGL ES ") + std::to_string(r.major) + "." +
+           std::to_string(r.minor) +
+           (options.kind == ContextKind::GlCore     ? " core"
+            : options.kind == ContextKind::GlCompat ? " compatibility"
+                                                    : "");
+  return r;
+}
+
+[[noreturn]] void fail_kind(const KindRequest& request, const std::string& message) {
+  throw Error(ErrorCode::NoDevice, "no " + request.name + " context: " + message);
+}
+
+// EGL 1.5 and EGL_KHR_create_context take a minor version and a profile.
+bool can_pick_version(EGLDisplay display) {
+  int major = 0, minor = 0;
+  const char* version = eglQueryString(display, EGL_VERSION);
+  if (version != nullptr && std::sscanf(version, "%d.%d", &major, &minor) == 2 && (major > 1 || minor >= 5))
+    return true;
+  return has_extension(eglQueryString(display, EGL_EXTENSIONS), "EGL_KHR_create_context");
+}
+
+EGLConfig choose_config(EGLDisplay display, const KindRequest& request, bool surfaceless) {
+  const EGLint attribs[] = {EGL_RENDERABLE_TYPE,
+                            request.renderable_bit,
+                            EGL_SURFACE_TYPE,
+                            surfaceless ? 0 : EGL_PBUFFER_BIT,
+                            EGL_RED_SIZE,
+                            8,
+                            EGL_GREEN_SIZE,
+                            8,
+                            EGL_BLUE_SIZE,
+                            8,
+                            EGL_ALPHA_SIZE,
+                            8,
+                            EGL_NONE};
+  EGLConfig config = nullptr;
+  EGLint count = 0;
+  if (eglChooseConfig(display, attribs, &config, 1, &count) != EGL_TRUE || count < 1)
+    fail_kind(request, "the EGL display has no config for it (" + last_egl_error() + ")");
+  return config;
+}
+
+EGLContext create_context(EGLDisplay display, EGLConfig config, const KindRequest& request) {
+  std::vector<EGLint> attribs;
+  if (can_pick_version(display)) {
+    attribs = {EGL_CONTEXT_MAJOR_VERSION, request.major, EGL_CONTEXT_MINOR_VERSION, request.minor};
+    if (request.profile != 0) attribs.insert(attribs.end(), {EGL_CONTEXT_OPENGL_PROFILE_MASK, request.profile});
+  } else if (request.api == EGL_OPENGL_ES_API) {
+    attribs = {EGL_CONTEXT_CLIENT_VERSION, request.major};  // EGL 1.4: the major version only
+  }  // EGL 1.4 desktop: whatever the driver gives, checked after.
+  attribs.push_back(EGL_NONE);
+  EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, attribs.data());
+  if (context == EGL_NO_CONTEXT) fail_kind(request, "eglCreateContext failed (" + last_egl_error() + ")");
+  return context;
+}
+
+// GL_VERSION of the current context: "OpenGL ES 3.2 Mesa ..." or "4.5 (Core Profile) Mesa ...".
+bool current_version(bool gles, int& major, int& minor) {
+  const char* v = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+  if (v == nullptr) return false;
+  const char* prefix = "OpenGL ES ";
+  const bool is_gles = std::strncmp(v, prefix, std::strlen(prefix)) == 0;
+  if (is_gles != gles) return false;
+  return std::sscanf(is_gles ? v + std::strlen(prefix) : v, "%d.%d", &major, &minor) == 2;
+}
+
+// The driver may give a later version than asked for, never an earlier one or
+// another profile; EGL 1.4 cannot ask, so the check is what guarantees it.
+void check_current(const KindRequest& request) {
+  int major = 0, minor = 0;
+  const bool gles = request.api == EGL_OPENGL_ES_API;
+  const char* got = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+  const std::string got_text = got ? got : "no GL_VERSION";
+  if (!current_version(gles, major, minor) || major < request.major ||
+      (major == request.major && minor < request.minor))
+    fail_kind(request, "the driver gave " + got_text);
+  if (request.profile == 0) return;
+  constexpr GLenum kContextProfileMask = 0x9126;  // GL_CONTEXT_PROFILE_MASK (desktop GL 3.2)
+  GLint mask = 0;
+  glGetIntegerv(kContextProfileMask, &mask);
+  if ((mask & request.profile) == 0) fail_kind(request, "the driver gave another profile (" + got_text + ")");
+}
+
 }  // namespace
 
+const char* context_kind_name(ContextKind kind) {
+  switch (kind) {
+    case ContextKind::Gles2:
+      return "GLES 2";
+    case ContextKind::Gles3:
+      return "GLES 3";
+    case ContextKind::GlCore:
+      return "GL core";
+    case ContextKind::GlCompat:
+      return "GL compatibility";
+  }
+  return "unknown";
+}
+
 struct HeadlessContext::Impl {
+  ContextKind kind = ContextKind::Gles2;
+  EGLenum api = EGL_OPENGL_ES_API;
   EGLDisplay display = EGL_NO_DISPLAY;
   EGLContext context = EGL_NO_CONTEXT;
   EGLSurface surface = EGL_NO_SURFACE;  // a 1x1 pbuffer only without surfaceless contexts
@@ -133,7 +277,12 @@ struct HeadlessContext::Impl {
   Impl& operator=(const Impl&) = delete;
   ~Impl() {
     if (display == EGL_NO_DISPLAY) return;
-    eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    // Current contexts are per client API: release ours only, and leave the
+    // thread's bound API as it was.
+    const EGLenum previous_api = eglQueryAPI();
+    eglBindAPI(api);
+    if (eglGetCurrentContext() == context) eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    if (previous_api != EGL_NONE) eglBindAPI(previous_api);
     if (surface != EGL_NO_SURFACE) eglDestroySurface(display, surface);
     if (context != EGL_NO_CONTEXT) eglDestroyContext(display, context);
     // eglTerminate is deliberately not called: displays are shared per
@@ -142,50 +291,32 @@ struct HeadlessContext::Impl {
   }
 };
 
-HeadlessContext HeadlessContext::create() {
+HeadlessContext HeadlessContext::create(ContextKind kind) { return create(ContextOptions{kind, 0, 0}); }
+
+HeadlessContext HeadlessContext::create(const ContextOptions& options) {
+  const KindRequest request = request_for(options);
   auto impl = std::make_unique<Impl>();
+  impl->kind = request.kind;
+  impl->api = request.api;
   std::string why;
   impl->display = open_display(why);
   if (impl->display == EGL_NO_DISPLAY) {
     if (!why.empty()) why.resize(why.size() - 2);  // drop the trailing "; "
     fail(why);
   }
-  if (eglBindAPI(EGL_OPENGL_ES_API) != EGL_TRUE) fail("eglBindAPI(GLES) failed (" + last_egl_error() + ")");
+  if (eglBindAPI(request.api) != EGL_TRUE) fail_kind(request, "eglBindAPI failed (" + last_egl_error() + ")");
 
-  const char* display_ext = eglQueryString(impl->display, EGL_EXTENSIONS);
-  const bool surfaceless = has_extension(display_ext, "EGL_KHR_surfaceless_context");
-
-  const EGLint config_attribs[] = {EGL_RENDERABLE_TYPE,
-                                   EGL_OPENGL_ES2_BIT,
-                                   EGL_SURFACE_TYPE,
-                                   surfaceless ? 0 : EGL_PBUFFER_BIT,
-                                   EGL_RED_SIZE,
-                                   8,
-                                   EGL_GREEN_SIZE,
-                                   8,
-                                   EGL_BLUE_SIZE,
-                                   8,
-                                   EGL_ALPHA_SIZE,
-                                   8,
-                                   EGL_NONE};
-  EGLConfig config = nullptr;
-  EGLint num_configs = 0;
-  if (eglChooseConfig(impl->display, config_attribs, &config, 1, &num_configs) != EGL_TRUE || num_configs < 1) {
-    fail("no GLES2 config (" + last_egl_error() + ")");
-  }
-
-  const EGLint context_attribs[] = {EGL_CONTEXT_CLIENT_VERSION, 2, EGL_NONE};
-  impl->context = eglCreateContext(impl->display, config, EGL_NO_CONTEXT, context_attribs);
-  if (impl->context == EGL_NO_CONTEXT) fail("GLES2 context creation failed (" + last_egl_error() + ")");
-
+  const bool surfaceless = has_extension(eglQueryString(impl->display, EGL_EXTENSIONS), "EGL_KHR_surfaceless_context");
+  const EGLConfig config = choose_config(impl->display, request, surfaceless);
+  impl->context = create_context(impl->display, config, request);
   if (!surfaceless) {
     const EGLint pbuffer_attribs[] = {EGL_WIDTH, 1, EGL_HEIGHT, 1, EGL_NONE};
     impl->surface = eglCreatePbufferSurface(impl->display, config, pbuffer_attribs);
-    if (impl->surface == EGL_NO_SURFACE) fail("pbuffer creation failed (" + last_egl_error() + ")");
+    if (impl->surface == EGL_NO_SURFACE) fail_kind(request, "pbuffer creation failed (" + last_egl_error() + ")");
   }
-  if (eglMakeCurrent(impl->display, impl->surface, impl->surface, impl->context) != EGL_TRUE) {
-    fail("eglMakeCurrent failed (" + last_egl_error() + ")");
-  }
+  if (eglMakeCurrent(impl->display, impl->surface, impl->surface, impl->context) != EGL_TRUE)
+    fail_kind(request, "eglMakeCurrent failed (" + last_egl_error() + ")");
+  check_current(request);
   return HeadlessContext(std::move(impl));
 }
 
@@ -196,9 +327,15 @@ HeadlessContext::~HeadlessContext() = default;
 
 void HeadlessContext::make_current() {
   if (!impl_) throw Error(ErrorCode::NoDevice, "no EGL display: context was moved from");
-  if (eglMakeCurrent(impl_->display, impl_->surface, impl_->surface, impl_->context) != EGL_TRUE) {
+  if (eglBindAPI(impl_->api) != EGL_TRUE ||
+      eglMakeCurrent(impl_->display, impl_->surface, impl_->surface, impl_->context) != EGL_TRUE) {
     throw Error(ErrorCode::NoDevice, "no EGL display: eglMakeCurrent failed (" + last_egl_error() + ")");
   }
+}
+
+ContextKind HeadlessContext::kind() const {
+  if (!impl_) throw Error(ErrorCode::NoDevice, "no EGL display: context was moved from");
+  return impl_->kind;
 }
 
 namespace {

@@ -3,19 +3,13 @@
 #include <cmath>
 
 #include "cli.hpp"
-#include "curvetext/default_font.hpp"
+#include "gl_session.hpp"
 #include "curvetext/error.hpp"
-#include "curvetext/headless.hpp"
 #include "curvetext/image.hpp"
-#include "curvetext/renderer.hpp"
 #include "curvetext/paragraph_image.hpp"
 #include "curvetext/text_image.hpp"
 #include "layout_options.hpp"
 #include "style_options.hpp"
-
-#ifndef CURVETEXT_BUILD_FONT_DIR
-#define CURVETEXT_BUILD_FONT_DIR ""
-#endif
 
 namespace curvetext::cli {
 
@@ -63,7 +57,7 @@ int run_render(const std::vector<std::string>& arguments) {
     // Paragraph layout (--width, --align, fallback fonts, markup, ...): lines
     // advance by A - D + line gap; drawn through the same renderer with the
     // same style and transform as a single line.
-    FontCollection fonts(default_font_path(CURVETEXT_BUILD_FONT_DIR));
+    FontCollection fonts(default_font());
     if (text->empty()) throw Error(ErrorCode::InvalidText, "the text is empty");
     // --fg colours text outside markup colour spans.
     paragraph.style.default_style.color = options.foreground;
@@ -80,10 +74,8 @@ int run_render(const std::vector<std::string>& arguments) {
       image_options.transform = style.transform(0, 0);
     }
     paragraph_image_size(p, image_options);  // size errors before needing a GL device
-    HeadlessContext context = HeadlessContext::create();
-    Renderer renderer;
-    GlyphCache cache;
-    write_png(render_paragraph_image(renderer, cache, p, image_options), *output);
+    GlSession& gl = gl_session();
+    write_png(render_paragraph_image(gl.renderer, gl.cache, p, image_options), *output);
     return 0;
   }
 
@@ -96,11 +88,8 @@ int run_render(const std::vector<std::string>& arguments) {
   }
   // Everything that can be checked without a GL device is checked first.
   const TextImageLayout layout = layout_text_image(font, *text, options);
-  HeadlessContext context = HeadlessContext::create();
-  Renderer renderer;
-  GlyphCache cache;
-  const Image image = render_text_image(renderer, cache, font, layout, options);
-  write_png(image, *output);
+  GlSession& gl = gl_session();
+  write_png(render_text_image(gl.renderer, gl.cache, font, layout, options), *output);
   return 0;
 }
 

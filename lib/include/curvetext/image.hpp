@@ -5,8 +5,11 @@
 #include <string>
 #include <vector>
 
+#include "curvetext/export.hpp"
+
 namespace curvetext {
 
+// A value type; pixel() does not check its coordinates.
 struct Image {
   int width = 0;
   int height = 0;
@@ -18,9 +21,14 @@ struct Image {
   const std::uint8_t* pixel(int x, int y) const { return &rgba[(static_cast<std::size_t>(y) * width + x) * 4]; }
 };
 
-// Throws Error(Io) naming the path when the file cannot be written.
-void write_png(const Image& image, const std::string& path);
-// Throws Error(Io) when the file cannot be read or is not a PNG.
-Image read_png(const std::string& path);
+// Writes the pixels exactly, in the fewest channels that hold them (grey,
+// grey and alpha, RGB or RGBA), tagged sRGB, compressed for speed. Throws
+// Error(Io) naming the path when the file cannot be written,
+// Error(InvalidArgument) for an image without pixels or whose size does not
+// match its data.
+CURVETEXT_API void write_png(const Image& image, const std::string& path);
+// Any PNG, converted to 8-bit straight-alpha RGBA. Throws Error(Io) when
+// the file cannot be read or is not a PNG.
+CURVETEXT_API Image read_png(const std::string& path);
 
 }  // namespace curvetext
