@@ -1,6 +1,8 @@
 // Full antialiasing, fragment stage: the exact area of this fragment's pixel
 // box inside one triangle of the mesh (and, for a curved triangle, on the
-// filled side of its arc). Drawn with additive blending into a coverage
+// filled side of its arc). Compiled twice, for interior triangles
+// (CURVETEXT_AREA_CURVED 0) and for curved ones (1), drawn in two passes:
+// each program holds only its own work. Drawn with additive blending into a coverage
 // buffer (lib/gpu/renderer.cpp): the mesh's triangles tile the filled region
 // exactly, so the sum over the triangles touching a pixel is its coverage,
 // with no need for any triangle to know about its neighbours. Vertex stage:
@@ -10,79 +12,46 @@
 precision highp float;
 
 uniform vec4 u_color;  // premultiplied; white for the coverage buffer
-uniform float u_coverage_exponent;  // 1 / gamma; 1 for the coverage buffer
+uniform float u_coverage_exponent;  // 1 / gamma, in the program compiled with CURVETEXT_GAMMA 1
 uniform int u_curve_mode;  // 0 exact, 1 the paper's equation 2
 
 varying vec4 v_coef;  // (tau1, tau2, s, 0): the triangle's barycentrics; s a curve's filled side
 varying vec4 v_info;  // (kind, w, ...): kind 0 interior, 2 curved; w the conic's weight
 
-// A pixel's box reaches at most sqrt(2)/2 px from its centre (rounded up):
-// tolerance::kFringeWidthPx, defined by the renderer when compiling.
-const float kPixelReachPx = CURVETEXT_PIXEL_REACH_PX;
 
-// Clips the segment p + t u, t in [t0, t1], to the half-plane h (inside where
-// dot(h.xy, x) + h.z >= 0); the segment's own half-plane has the normal
-// (u.y, -u.x). Lines within 1e-4 of each other in angle (radians) and offset
-// (pixels) count as one. Facing the same way, exactly one of the pair may be
-// an edge, or rounding would count the area next to it twice (or not at
-// all); `yield_on_tie` says whether the segment gives way. Facing opposite
-// ways (a curve's tangent on its control triangle's leg), both stay: the
-// polygon between them is flat, and their two edges cancel. This moves an
-// edge by at most ~1e-4 px. Beyond that, t = -c / k is off by at most
-// ~1e-7 / 1e-4 = 1e-3 of a pixel.
-const float kParallel = 1e-4;
-void clip_segment(vec3 h, vec2 p, vec2 u, bool yield_on_tie, inout float t0, inout float t1) {
-  float c = dot(h.xy, p) + h.z;
-  float k = dot(h.xy, u);
-  if (abs(k) < kParallel) {
-    bool tie = abs(c) < kParallel;
-    bool same_way = dot(h.xy, vec2(u.y, -u.x)) > 0.0;
-    if (tie ? (yield_on_tie && same_way) : c < 0.0) t1 = t0 - 1.0;
-  } else if (k > 0.0) {
-    t0 = max(t0, -c / k);
-  } else {
-    t1 = min(t1, -c / k);
-  }
+// The mean of clamp(u, 0, 1) over u in [a, b] (or its value where a = b),
+// exactly: the integral over the part in [0, 1] and the part beyond 1,
+// written with differences of the clamped ends so that a short interval
+// keeps its digits.
+float mean_clamp(float a, float b) {
+  float lo = min(a, b);
+  float hi = max(a, b);
+  float cl = clamp(lo, 0.0, 1.0);
+  float ch = clamp(hi, 0.0, 1.0);
+  float integral = 0.5 * (ch + cl) * (ch - cl) + max(hi - max(lo, 1.0), 0.0);
+  float len = hi - lo;
+  return len > 0.0 ? clamp(integral / len, 0.0, 1.0) : cl;
 }
 
-// Exact area of the unit box (centred on the origin) inside the half-planes
-// L[0 .. n): for a convex polygon, the sum over its edges of the signed
-// height from the origin times the edge's length, halved. Each line's edge is
-// its chord through the box clipped by the other lines; the box's sides are
-// clipped likewise. Loops over constants only (GLSL ES 1.00).
-const int kMaxPlanes = 6;
-float convex_area(vec3 L[6], int n) {
-  float area = 0.0;
-  for (int s = 0; s < 4; ++s) {
-    vec2 nn = s == 0 ? vec2(1.0, 0.0) : s == 1 ? vec2(-1.0, 0.0) : s == 2 ? vec2(0.0, 1.0) : vec2(0.0, -1.0);
-    vec2 p = -0.5 * nn;
-    vec2 u = vec2(-nn.y, nn.x);
-    float t0 = -0.5;
-    float t1 = 0.5;
-    for (int j = 0; j < kMaxPlanes; ++j) {
-      if (j >= n) break;
-      clip_segment(L[j], p, u, true, t0, t1);
-    }
-    area += 0.25 * max(t1 - t0, 0.0);
-  }
-  for (int i = 0; i < kMaxPlanes; ++i) {
-    if (i >= n) break;
-    vec3 h = L[i];
-    vec2 p = -h.z * h.xy;
-    vec2 u = vec2(-h.y, h.x);
-    float t0 = -2.0;
-    float t1 = 2.0;
-    clip_segment(vec3(1.0, 0.0, 0.5), p, u, false, t0, t1);
-    clip_segment(vec3(-1.0, 0.0, 0.5), p, u, false, t0, t1);
-    clip_segment(vec3(0.0, 1.0, 0.5), p, u, false, t0, t1);
-    clip_segment(vec3(0.0, -1.0, 0.5), p, u, false, t0, t1);
-    for (int j = 0; j < kMaxPlanes; ++j) {
-      if (j >= n) break;
-      if (j != i) clip_segment(L[j], p, u, j < i, t0, t1);
-    }
-    area += 0.5 * h.z * max(t1 - t0, 0.0);
-  }
-  return area;
+// One edge p -> q of a polygon (pixels from the pixel's centre) in the exact
+// area of the polygon inside the pixel's box [-0.5, 0.5]^2, by Green's
+// theorem: the area is the sum over the polygon's edges of the integral, over
+// the part of the edge within the box's rows, of the width of the box's row
+// left of the edge, clamp(x + 0.5, 0, 1). Signed by the polygon's
+// orientation; horizontal edges add nothing. No loops and no branches: a
+// software rasteriser runs every path of a shader, so the cost is the code.
+float edge_area(vec2 p, vec2 q) {
+  float y0 = clamp(p.y, -0.5, 0.5);
+  float y1 = clamp(q.y, -0.5, 0.5);
+  float dy = q.y - p.y;
+  float inv = dy != 0.0 ? 1.0 / dy : 0.0;
+  float x0 = p.x + (q.x - p.x) * clamp((y0 - p.y) * inv, 0.0, 1.0);
+  float x1 = p.x + (q.x - p.x) * clamp((y1 - p.y) * inv, 0.0, 1.0);
+  return (y1 - y0) * mean_clamp(x0 + 0.5, x1 + 0.5);
+}
+
+float triangle_area(vec2 a, vec2 b, vec2 c) {
+  return edge_area(a, b) + edge_area(b, c) + edge_area(c, a);
 }
 
 // The half-plane of an affine function e with screen gradient g (pixels):
@@ -119,21 +88,21 @@ void arc_at(vec2 p0, vec2 c, vec2 p2, float w, float t, out vec2 b, out vec2 db)
   db = (dx * wt - x * dw) / (wt * wt);
 }
 
-// The tangent through arc point b with derivative d, as the half-plane on
-// the chord's side (through the chord's midpoint m; chord = p2 - p0).
-vec3 tangent_through(vec2 b, vec2 d, vec2 chord, vec2 m) {
-  if (dot(d, d) < 1e-20) d = chord;
-  vec2 n = normalize(vec2(-d.y, d.x));
-  if (dot(n, m - b) < 0.0) n = -n;
-  return vec3(n, -dot(n, b));
+// Where the tangents P + s D and Q + r E meet; where they are parallel (two
+// tangents at one point, or a straight stretch), halfway between P and Q.
+vec2 tangents_meet(vec2 p, vec2 d, vec2 q, vec2 e) {
+  float den = d.x * e.y - d.y * e.x;
+  vec2 pq = q - p;
+  bool parallel = abs(den) <= 1e-6 * length(d) * length(e);
+  float s = (pq.x * e.y - pq.y * e.x) / (parallel ? 1.0 : den);
+  return parallel ? 0.5 * (p + q) : p + s * d;
 }
 
-// The arc's tangent at t, as above.
-vec3 tangent_plane(vec2 p0, vec2 c, vec2 p2, float w, float t, vec2 m) {
-  vec2 b;
-  vec2 d;
-  arc_at(p0, c, p2, w, t, b, d);
-  return tangent_through(b, d, p2 - p0, m);
+// The vertex where lines a and b (as from half_plane) meet.
+vec2 lines_meet(vec3 a, vec3 b) {
+  float d = a.x * b.y - a.y * b.x;
+  d = abs(d) < 1e-20 ? 1e-20 : d;
+  return vec2(a.y * b.z - b.y * a.z, b.x * a.z - a.x * b.z) / d;
 }
 
 void main() {
@@ -144,80 +113,86 @@ void main() {
   vec2 g1 = vec2(dFdx(t1), dFdy(t1));
   vec2 g2 = vec2(dFdx(t2), dFdy(t2));
   vec2 g0 = -g1 - g2;
-  vec3 L[6];
-  L[0] = half_plane(t0, g0);
-  L[1] = half_plane(t1, g1);
-  L[2] = half_plane(t2, g2);
+  vec3 L0 = half_plane(t0, g0);
+  vec3 L1 = half_plane(t1, g1);
+  vec3 L2 = half_plane(t2, g2);
   // The box misses the triangle when it lies wholly outside one of its edges.
-  for (int i = 0; i < 3; ++i) {
-    if (L[i].z <= -0.5 * (abs(L[i].x) + abs(L[i].y))) discard;
-  }
-  float area;
+  if (L0.z <= -0.5 * (abs(L0.x) + abs(L0.y)) || L1.z <= -0.5 * (abs(L1.x) + abs(L1.y)) ||
+      L2.z <= -0.5 * (abs(L2.x) + abs(L2.y)))
+    discard;
   // The triangle's smallest altitude in pixels is 1 / its largest barycentric
   // gradient. Thinner than CURVETEXT_THIN_TRIANGLE_PX, it counts as empty: it
   // lies within that distance of a line, so it holds at most sqrt(2) times
-  // that of any pixel, while the clipping and the inversion below lose their
-  // digits on it (tolerances.hpp, kThinTrianglePx).
+  // that of any pixel, while the area below loses its digits on it
+  // (tolerances.hpp, kThinTrianglePx).
   float steepest = max(max(dot(g0, g0), dot(g1, g1)), dot(g2, g2));
   if (steepest * CURVETEXT_THIN_TRIANGLE_PX * CURVETEXT_THIN_TRIANGLE_PX > 1.0) discard;
-  if (v_info.x < 1.5) {
-    area = convex_area(L, 3);
-  } else {
-    // A curved triangle: the part of the box inside its control triangle on
-    // the filled side of the arc. Between the chord and the arc lies a convex
-    // region, the intersection of the arc's tangent half-planes; three
-    // tangents spread over the pixel bound it to within the slivers between
-    // them (a circle of radius R with tangents 0.75 px apart: 0.018 / R of a
-    // pixel per gap): at the arc's point nearest the pixel centre and 0.75 px
-    // of arc to either side, but at most a quarter of the arc's parameter
-    // range (an arc a few pixels long turns a lot over 0.75 px: with its legs,
-    // the tangents at t = 0 and 1, the tangents then split it in quarters;
-    // spread by arc length alone they left up to 0.2 of a pixel out at 32 px).
-    // s = +1: filled on the chord's side; -1: beyond the arc, the control
-    // triangle minus that region.
-    // The control points in pixels from the centre: solving g1 . x = dtau1,
-    // g2 . x = dtau2, whose inverse has the columns e1 and e2 (a unit step
-    // of tau1 or tau2).
-    float det = g1.x * g2.y - g1.y * g2.x;
-    // A long, flat control triangle (k = longest edge / smallest altitude =
-    // steepest / |det|, steepest the largest squared gradient) loses digits
-    // here and in the tangent clipping below: an 11.6 x 0.006 px piece of a
-    // Noto Sans CJK glyph at 32 px/em (k about 2,000) put 0.17 of coverage
-    // into an empty pixel, and still did with its control points passed
-    // exactly (tried: as window-linear varyings). Where 1e-7 k^2 px, which
-    // fits that case, exceeds the altitude, the region (within the altitude
-    // of a line) counts as empty: the smaller error.
-    if (1e-7 * steepest * steepest * sqrt(steepest) > det * det) {
-      area = 0.0;
-    } else {
-      vec2 e1 = vec2(g2.y, -g2.x) / det;
-      vec2 e2 = vec2(-g1.y, g1.x) / det;
-      vec2 p0 = -t1 * e1 - t2 * e2;
-      vec2 c = p0 + e1;
-      vec2 p2 = p0 + e2;
-      vec2 m = 0.5 * (p0 + p2);
-      float s = v_coef.z;
-      float w = v_info.y;
-      // The arc's point nearest the pixel centre: Gauss-Newton on
-      // dot(B(t), B'(t)) = 0 from the centre's projection on the chord.
-      vec2 chord = p2 - p0;
-      float t = clamp(-dot(p0, chord) / max(dot(chord, chord), 1e-30), 0.0, 1.0);
-      vec2 b;
-      vec2 db;
-      for (int i = 0; i < 3; ++i) {
-        arc_at(p0, c, p2, w, t, b, db);
-        t = clamp(t - dot(b, db) / max(dot(db, db), 1e-30), 0.0, 1.0);
-      }
-      arc_at(p0, c, p2, w, t, b, db);
-      float dt = min(0.75 / max(length(db), 1e-6), 0.25);
-      L[3] = tangent_through(b, db, chord, m);
-      L[4] = tangent_plane(p0, c, p2, w, max(t - dt, 0.0), m);
-      L[5] = tangent_plane(p0, c, p2, w, min(t + dt, 1.0), m);
-      float inside = convex_area(L, 6);
-      area = s > 0.0 ? inside : convex_area(L, 3) - inside;
-    }
+  float area;
+#if CURVETEXT_AREA_CURVED == 0
+  // An interior triangle: its corners (tau_k = 1 where the other two edges
+  // meet), from the normalised edge lines, so each edge stays as exact as
+  // its line however thin the triangle.
+  area = abs(triangle_area(lines_meet(L1, L2), lines_meet(L0, L2), lines_meet(L0, L1)));
+#else
+  // A curved triangle: the part of the box inside its control triangle on
+  // the filled side of its arc. Between the chord and the arc lies a convex
+  // region, bounded (from outside) by the polygon of the arc's tangents: the
+  // legs (the tangents at its ends) and three tangents spread over the pixel,
+  // which bound it to within the slivers between them (a circle of radius R
+  // with tangents 0.75 px apart: 0.018 / R of a pixel per gap): at the arc's
+  // point nearest the pixel centre and 0.75 px of arc to either side, but at
+  // most a quarter of the arc's parameter range (an arc a few pixels long
+  // turns a lot over 0.75 px: with its legs the tangents then split it in
+  // quarters). s = +1: filled on the chord's side; -1: beyond the arc, the
+  // control triangle minus that region.
+  // The control points in pixels from the centre: solving g1 . x = dtau1,
+  // g2 . x = dtau2, whose inverse has the columns e1 and e2 (a unit step of
+  // tau1 or tau2).
+  float det = g1.x * g2.y - g1.y * g2.x;
+  // A long, flat control triangle (k = longest edge / smallest altitude =
+  // steepest / |det|, steepest the largest squared gradient) loses digits
+  // here: an 11.6 x 0.006 px piece of a Noto Sans CJK glyph at 32 px/em (k
+  // about 2,000) put 0.17 of coverage into an empty pixel. Where 1e-7 k^2 px,
+  // which fits that case, exceeds the altitude, the region (within the
+  // altitude of a line) counts as empty: the smaller error.
+  if (1e-7 * steepest * steepest * sqrt(steepest) > det * det) discard;
+  vec2 e1 = vec2(g2.y, -g2.x) / det;
+  vec2 e2 = vec2(-g1.y, g1.x) / det;
+  vec2 p0 = -t1 * e1 - t2 * e2;
+  vec2 c = p0 + e1;
+  vec2 p2 = p0 + e2;
+  float w = v_info.y;
+  // The arc's point nearest the pixel centre: Gauss-Newton on
+  // dot(B(t), B'(t)) = 0 from the centre's projection on the chord.
+  vec2 chord = p2 - p0;
+  float t = clamp(-dot(p0, chord) / max(dot(chord, chord), 1e-30), 0.0, 1.0);
+  vec2 b;
+  vec2 db;
+  for (int i = 0; i < 3; ++i) {
+    arc_at(p0, c, p2, w, t, b, db);
+    t = clamp(t - dot(b, db) / max(dot(db, db), 1e-30), 0.0, 1.0);
   }
+  arc_at(p0, c, p2, w, t, b, db);
+  float dt = min(0.75 / max(length(db), 1e-6), 0.25);
+  vec2 ba;
+  vec2 da;
+  vec2 bc;
+  vec2 dc;
+  arc_at(p0, c, p2, w, max(t - dt, 0.0), ba, da);
+  arc_at(p0, c, p2, w, min(t + dt, 1.0), bc, dc);
+  vec2 q1 = tangents_meet(p0, c - p0, ba, da);
+  vec2 q2 = tangents_meet(ba, da, b, db);
+  vec2 q3 = tangents_meet(b, db, bc, dc);
+  vec2 q4 = tangents_meet(bc, dc, p2, p2 - c);
+  float orient = det > 0.0 ? 1.0 : -1.0;  // the sign of the triangle (p0, c, p2) in these axes
+  float region = orient * (edge_area(p0, q1) + edge_area(q1, q2) + edge_area(q2, q3) + edge_area(q3, q4) +
+                           edge_area(q4, p2) + edge_area(p2, p0));
+  area = v_coef.z > 0.0 ? region : orient * triangle_area(p0, c, p2) - region;
+#endif
   area = clamp(area, 0.0, 1.0);
   if (area <= 0.0) discard;
-  gl_FragColor = u_color * (u_coverage_exponent == 1.0 ? area : pow(area, u_coverage_exponent));
+#if CURVETEXT_GAMMA
+  area = pow(area, u_coverage_exponent);
+#endif
+  gl_FragColor = u_color * area;
 }

@@ -1,5 +1,5 @@
-// Second pass of vbaa / msaa: filters the block's coverage, drawn r times
-// larger into a texture (its alpha), down to one pixel. The kernel is the
+// Second pass of vbaa: filters the block's coverage, drawn r times
+// larger into a texture (its red channel), down to one pixel. The kernel is the
 // r x r texels under the pixel (exact area at r x resolution) plus a ring of
 // one texel around them weighted u_ring (horizontal and vertical neighbours)
 // and u_ring^2 (diagonal ones): the paper's section 5 filter, which weights
@@ -7,8 +7,9 @@
 precision highp float;
 
 uniform sampler2D u_texture;
-uniform vec2 u_texture_size;  // texels
+uniform vec2 u_texture_size;  // texels allocated (the tile may use fewer)
 uniform vec2 u_rect_origin;   // framebuffer pixel (x, y down) of texel block (0, 0)
+uniform float u_rows;         // texel rows the tile uses (its top row is GL row u_rows - 1)
 uniform float u_r;            // texels per pixel, 1..8
 uniform float u_ring;
 uniform vec4 u_color;         // premultiplied
@@ -32,8 +33,8 @@ void main() {
       float w = weight(fi) * weight(fj);
       if (w <= 0.0) continue;
       float col = px * u_r + fi;
-      float row = u_texture_size.y - 1.0 - (py * u_r + fj);  // GL rows up
-      float a = texture2D(u_texture, (vec2(col, row) + 0.5) / u_texture_size).a;
+      float row = u_rows - 1.0 - (py * u_r + fj);  // GL rows up
+      float a = texture2D(u_texture, (vec2(col, row) + 0.5) / u_texture_size).r;  // r: every channel of an RGBA target holds it
       sum += w * a;
       total += w;
     }

@@ -24,6 +24,7 @@
 #include "gpu/vertex_format.hpp"
 #include "support/coverage.hpp"
 #include "support/fonts.hpp"
+#include "support/gpu.hpp"
 
 namespace curvetext {
 namespace {
@@ -393,7 +394,11 @@ TEST(Text, GlyphBatchMatchesFreeTypeReference) {
   Renderer renderer;
   DrawBatch batch = DrawBatch::from_text(cache, font, line, ppem);
   EXPECT_GT(batch.vertex_count(), 0u);
-  EXPECT_GT(batch.gpu_bytes(), batch.vertex_count() * sizeof(gpu::Vertex));  // and the indices
+  if (batch.instanced()) {
+    EXPECT_EQ(batch.gpu_bytes(), 8u * (line.glyphs.size() - 1));  // an offset per glyph but the space
+  } else {
+    EXPECT_GT(batch.gpu_bytes(), batch.vertex_count() * sizeof(gpu::Vertex));  // and the indices
+  }
   renderer.begin(width, height, Color{1, 1, 1, 1});
   renderer.draw(batch, placement, DrawOptions{});
   const test::Coverage got = test::coverage_from_black_on_white(renderer.read_pixels());
@@ -415,6 +420,76 @@ TEST(Text, GlyphBatchMatchesFreeTypeReference) {
   EXPECT_EQ(after.misses, before.misses);
   EXPECT_EQ(after.hits - before.hits, line.glyphs.size());
   EXPECT_EQ(again.vertex_count(), batch.vertex_count());
+}
+
+// The GL tests run twice (tests/CMakeLists.txt): in the context Mesa gives
+// by default (OpenGL ES 3.2), where text blocks are instanced, and in a true
+// OpenGL ES 2.0 context, where they take the GLES2 path. This checks that each
+// run is on the path it is meant to test.
+TEST(Context, TextBlocksTakeThePathOfTheContext) {
+  context();
+  const std::string version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+  const Font font = Font::open(test::kDejaVuSans);
+  GlyphCache cache;
+  const DrawBatch batch = DrawBatch::from_text(cache, font, shape_line(font, "path"), 16.0);
+  std::printf("GL_VERSION %s: %s text blocks\n", version.c_str(), batch.instanced() ? "instanced" : "expanded");
+  if (test::expects_gles2()) {
+    EXPECT_EQ(version.rfind("OpenGL ES 2.0", 0), 0u) << version;
+    EXPECT_FALSE(batch.instanced());
+  } else {
+    EXPECT_EQ(batch.instanced(), gpu::context_instances());
+  }
+}
+
+// A block of N placed glyphs uploads bytes in proportion to N: instanced, 8
+// per placed glyph (the meshes are uploaded once, into the cache); expanded
+// (the GLES2 path), each placement's mesh. The same text repeated k times
+// uploads k times the bytes, and the instanced block adds nothing to the
+// cache's GPU bytes after the first.
+TEST(Text, BlockUploadsBytesInProportionToItsGlyphs) {
+  context();
+  const Font font = Font::open(test::kDejaVuSans);
+  const ShapedLine line = shape_line(font, "The quick brown fox jumps over the lazy dog, 0123456789.");
+  std::size_t inked = 0, vertices = 0, indices = 0;  // of one copy of the line
+  GlyphCache cache;
+  for (const ShapedGlyph& g : line.glyphs) {
+    const gpu::PackedMesh& mesh = GlyphCacheAccess::impl(cache).get(font, g.glyph_id, 16.0)->packed;
+    inked += mesh.empty() ? 0 : 1;
+    vertices += mesh.vertices.size();
+    indices += mesh.indices.size();
+  }
+  ASSERT_GT(inked, 40u);
+  std::vector<PlacedGlyph> placed;
+  std::vector<std::size_t> instanced_bytes, expanded_bytes, cache_gpu_bytes;
+  for (int copies = 1; copies <= 64; copies *= 4) {
+    placed.clear();
+    for (int c = 0; c < copies; ++c) {
+      double pen = 0.0;
+      for (const ShapedGlyph& g : line.glyphs) {
+        placed.push_back(PlacedGlyph{g.glyph_id, pen + g.x_offset, -2400.0 * c});
+        pen += g.x_advance;
+      }
+    }
+    const DrawBatch instanced = DrawBatchAccess::make(
+        gpu::text_block(GlyphCacheAccess::impl(cache), font, placed, 16.0, gpu::BlockPath::Instanced));
+    cache_gpu_bytes.push_back(cache.stats().gpu_bytes);
+    const DrawBatch expanded = DrawBatchAccess::make(
+        gpu::text_block(GlyphCacheAccess::impl(cache), font, placed, 16.0, gpu::BlockPath::Expanded));
+    ASSERT_TRUE(instanced.instanced());
+    ASSERT_FALSE(expanded.instanced());
+    instanced_bytes.push_back(instanced.gpu_bytes());
+    expanded_bytes.push_back(expanded.gpu_bytes());
+    const auto n = static_cast<std::size_t>(copies);
+    EXPECT_EQ(instanced_bytes.back(), 8u * inked * n) << copies << " copies";
+    const std::size_t index_bytes = n * vertices <= gpu::kMaxShortIndexedVertices ? 2 : 4;
+    EXPECT_EQ(expanded_bytes.back(), n * (vertices * sizeof(gpu::Vertex) + indices * index_bytes))
+        << copies << " copies";
+  }
+  for (std::size_t i = 1; i < cache_gpu_bytes.size(); ++i)
+    EXPECT_EQ(cache_gpu_bytes[i], cache_gpu_bytes[0]) << "glyph meshes uploaded again";
+  EXPECT_GT(cache_gpu_bytes[0], 0u);
+  // Per placed glyph, the instanced block is two orders of magnitude smaller.
+  EXPECT_LT(100 * instanced_bytes.back(), expanded_bytes.back());
 }
 
 TEST(Text, CacheEvictsWithinBudget) {
@@ -513,14 +588,25 @@ TEST(Packing, CornersEdgesAndCodes) {
   const std::uint32_t fans[] = {0, 1, 2, 3, 4, 5, 3, 5, 6, 7, 8, 9};
   for (std::size_t i = 0; i < packed.indices.size(); ++i) EXPECT_EQ(packed.indices[i], fans[i]) << i;
 
+  // The two interior triangles' indices come ahead of the curved one's.
+  EXPECT_EQ(packed.interior_indices, 3u * (1 + 2));
+
+  // Appended, the copy's interior indices go after the first's interior ones
+  // and its curved indices at the end: [interior, interior', curved, curved'].
   gpu::PackedMesh both = packed;
   gpu::append_translated(packed, Vec2{100, 0}, both);
   ASSERT_EQ(both.vertices.size(), 2 * packed.vertices.size());
   ASSERT_EQ(both.indices.size(), 2 * packed.indices.size());
+  ASSERT_EQ(both.interior_indices, 2 * packed.interior_indices);
+  const std::size_t interior = packed.interior_indices, curved = packed.indices.size() - interior;
   for (std::size_t i = 0; i < packed.indices.size(); ++i) {
-    EXPECT_EQ(both.indices[packed.indices.size() + i], packed.indices[i] + packed.vertices.size());
+    const bool is_interior = i < interior;
+    const std::size_t original = is_interior ? i : interior + i;  // where `i`'s own copy sits in `both`
+    const std::size_t copy = is_interior ? interior + i : 2 * interior + curved + (i - interior);
+    EXPECT_EQ(both.indices[original], packed.indices[i]) << i;
+    EXPECT_EQ(both.indices[copy], packed.indices[i] + packed.vertices.size()) << i;
     const gpu::Vertex& a = packed.vertices[packed.indices[i]];
-    const gpu::Vertex& b = both.vertices[both.indices[packed.indices.size() + i]];
+    const gpu::Vertex& b = both.vertices[both.indices[copy]];
     EXPECT_EQ(b.pos[0], a.pos[0] + 100.0f);  // the corner moves; its edges do not
     EXPECT_EQ(b.pos[2], a.pos[2]);
     EXPECT_EQ(b.info[0], a.info[0]);
@@ -548,7 +634,8 @@ TEST(DrawBatchUpload, SixteenBitThirtyTwoBitAndArraysDrawTheSame) {
   gpu::PackedMesh packed;
   double pen = 0;
   for (const ShapedGlyph& g : line.glyphs) {
-    gpu::append_translated(*cache.impl().get(font, g.glyph_id, 30.0), Vec2{pen + g.x_offset, g.y_offset}, packed);
+    gpu::append_translated(GlyphCacheAccess::impl(cache).get(font, g.glyph_id, 30.0)->packed,
+                           Vec2{pen + g.x_offset, g.y_offset}, packed);
     pen += g.x_advance;
   }
   ASSERT_FALSE(packed.empty());
@@ -638,31 +725,6 @@ TEST(Parse, Colors) {
     } catch (const Error& e) {
       EXPECT_EQ(e.code(), ErrorCode::InvalidArgument) << bad;
     }
-  }
-}
-
-TEST(Parse, ModesAndErrors) {
-  EXPECT_EQ(parse_antialiasing("none"), AntiAliasing::None);
-  EXPECT_EQ(parse_antialiasing("curves"), AntiAliasing::Curves);
-  EXPECT_EQ(parse_antialiasing("full"), AntiAliasing::Full);
-  EXPECT_EQ(parse_antialiasing("vbaa"), AntiAliasing::Vbaa);
-  EXPECT_EQ(parse_antialiasing("msaa"), AntiAliasing::Msaa);
-  EXPECT_EQ(parse_antialiasing("auto"), AntiAliasing::Auto);
-  EXPECT_EQ(parse_curve_mode("exact"), CurveMode::Exact);
-  EXPECT_EQ(parse_curve_mode("paper"), CurveMode::Paper);
-  for (const char* bad : {"", "Full", "ssaa", "vbaa2"}) {
-    try {
-      parse_antialiasing(bad);
-      FAIL() << bad;
-    } catch (const Error& e) {
-      EXPECT_EQ(e.code(), ErrorCode::InvalidArgument);
-    }
-  }
-  try {
-    parse_curve_mode("loop-blinn");
-    FAIL();
-  } catch (const Error& e) {
-    EXPECT_EQ(e.code(), ErrorCode::InvalidArgument);
   }
 }
 

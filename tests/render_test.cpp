@@ -2,6 +2,7 @@
 // shader on llvmpipe -> pixels), compared with exact area coverage of the same
 // outlines from FreeType's AA rasterizer, supersampled (DESIGN.md section 6).
 // Failing cases write result, reference and diff images to build/test-output.
+#include <GLES2/gl2.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -21,6 +22,7 @@
 #include "curvetext/mesh.hpp"
 #include "curvetext/renderer.hpp"
 #include "curvetext/text_image.hpp"
+#include "curvetext/tolerances.hpp"
 #include "support/coverage.hpp"
 #include "support/fonts.hpp"
 #include "support/gpu.hpp"
@@ -220,6 +222,146 @@ TEST(DrawBatchTransform, MovingAndScalingChangeOnlyUniforms) {
   EXPECT_NEAR(s.ink_ratio, 1.0, 0.03);
 }
 
+// A block moved by a fraction of a pixel (text scrolling or animating) is
+// drawn as the exact coverage of its outline moved by that fraction, in the
+// modes that antialias every edge. Control: compared with the reference of
+// the block a third of a pixel away, the same image must fail.
+TEST(DrawBatchTransform, FractionalOffsetMatchesExactCoverageShifted) {
+  Font font = Font::open(test::kDejaVuSans);
+  const ShapedLine line = shape_line(font, "Scrolling by 0.37 px");
+  DrawBatch batch = DrawBatch::from_text(gpu().cache, font, line, 16.0);
+  const double scale = 16.0 / font.metrics().units_per_em;
+  const Outline outline = line_outline(font, line);
+  const int w = 190, h = 28;
+  constexpr double kLimit = 0.005;  // edge-band mean error (full measures 0.001-0.002 here)
+  for (AntiAliasing aa : {AntiAliasing::Full, AntiAliasing::Vbaa}) {
+    for (const Vec2 offset : {Vec2{0.0, 0.0}, Vec2{0.37, 0.0}, Vec2{0.5, 0.61}, Vec2{0.83, 0.29}}) {
+      const Placement placement{scale, 4.0 + offset.x, 20.0 + offset.y};
+      gpu().renderer.begin(w, h, Color{1, 1, 1, 1});
+      gpu().renderer.draw(batch, placement, DrawOptions(Color{0, 0, 0, 1}, aa));
+      const test::Coverage got = test::coverage_from_black_on_white(gpu().renderer.read_pixels());
+      const test::Coverage want = test::union_coverage(test::place_outline(outline, placement), w, h);
+      const Placement away{scale, placement.origin_x + 1.0 / 3.0, placement.origin_y};
+      const test::Coverage control = test::union_coverage(test::place_outline(outline, away), w, h);
+      const test::CoverageStats s = test::compare(got, want);
+      const test::CoverageStats off = test::compare(got, control);
+      std::printf("%s offset (%.2f, %.2f): edge %.4f, max %.3f, ink %.4f; a third of a pixel away: edge %.4f\n",
+                  aa == AntiAliasing::Full ? "full" : "vbaa", offset.x, offset.y, s.edge_mean_abs, s.max_abs,
+                  s.ink_ratio, off.edge_mean_abs);
+      if (s.edge_mean_abs > kLimit) test::write_comparison("fractional-offset", got, want);
+      EXPECT_LE(s.edge_mean_abs, kLimit);
+      EXPECT_NEAR(s.ink_ratio, 1.0, 0.01);
+      EXPECT_GT(off.edge_mean_abs, 4 * kLimit) << "the control should fail";
+    }
+  }
+}
+
+// vbaa's and msaa's offscreen targets are bounded (tolerances.hpp): a block
+// larger than a tile at r texels per pixel is drawn tile by tile. Three lines
+// of about 1,250 px at r = 8 take several tiles: no seam may show against the
+// exact coverage (every pixel within the mode's own error).
+TEST(OffscreenTiles, WideBlocksAreDrawnTileByTileWithoutSeams) {
+  Font font = Font::open(test::kDejaVuSans);
+  const ShapedLine line = shape_line(font, "Tiles of a bounded offscreen target, drawn one after another.");
+  const double ppem = 40.0;
+  const double scale = ppem / font.metrics().units_per_em;
+  const double line_units = 1.2 * font.metrics().units_per_em;
+  std::vector<PlacedGlyph> placed;
+  const int kLines = 3;
+  for (int k = 0; k < kLines; ++k) {
+    double pen = 0.0;
+    for (const ShapedGlyph& g : line.glyphs) {
+      placed.push_back(PlacedGlyph{g.glyph_id, pen + g.x_offset, g.y_offset - k * line_units});
+      pen += g.x_advance;
+    }
+  }
+  DrawBatch batch = DrawBatch::from_glyphs(gpu().cache, font, placed, ppem);
+  const Placement placement{scale, 6.3, 40.6};
+  const int w = static_cast<int>(std::ceil(line.advance * scale)) + 12;
+  const int h = static_cast<int>(std::ceil(40.6 + (kLines - 1) * line_units * scale)) + 16;
+  ASSERT_GT(static_cast<double>(w) * h * 64, 2.0 * tolerance::kCoverageTileTexels * tolerance::kCoverageTileTexels);
+  test::Coverage want(w, h);
+  for (int k = 0; k < kLines; ++k) {
+    const Placement at{scale, placement.origin_x, placement.origin_y + k * line_units * scale};
+    test::add_union_coverage(test::place_outline(line_outline(font, line), at), want);
+  }
+  struct Mode {
+    AntiAliasing aa;
+    double edge, max;  // limits: edge-band mean and largest pixel error
+  };
+  // msaa's 4 samples leave up to half a pixel of error at thin features; a
+  // seam (a column drawn twice or not at all) would leave a whole one.
+  for (const Mode& m : {Mode{AntiAliasing::Vbaa, 0.004, 0.06}, Mode{AntiAliasing::Msaa, 0.06, 0.75}}) {
+    if (m.aa == AntiAliasing::Msaa && gpu().renderer.msaa_samples() < 2) continue;
+    DrawOptions options(Color{0, 0, 0, 1}, m.aa);
+    options.vbaa_factor = 8;
+    const std::size_t passes = gpu().renderer.offscreen_passes();
+    gpu().renderer.begin(w, h, Color{1, 1, 1, 1});
+    gpu().renderer.draw(batch, placement, options);
+    const std::size_t tiles = gpu().renderer.offscreen_passes() - passes;
+    const test::Coverage got = test::coverage_from_black_on_white(gpu().renderer.read_pixels());
+    const test::CoverageStats s = test::compare(got, want);
+    std::printf("%s over %d px in %zu tiles: edge %.4f, max %.3f, ink %.4f\n",
+                m.aa == AntiAliasing::Vbaa ? "vbaa r=8" : "msaa", w, tiles, s.edge_mean_abs, s.max_abs, s.ink_ratio);
+    if (s.edge_mean_abs > m.edge || s.max_abs > m.max) test::write_comparison("offscreen-tiles", got, want);
+    if (m.aa == AntiAliasing::Vbaa) {
+      EXPECT_GE(tiles, 3u);
+    }
+    EXPECT_LE(s.edge_mean_abs, m.edge);
+    EXPECT_LE(s.max_abs, m.max);
+    EXPECT_NEAR(s.ink_ratio, 1.0, 0.02);
+  }
+}
+
+// Split screen: two viewports of one framebuffer, each showing its own text,
+// as an application draws them (viewport set, then Renderer::draw). Pixel
+// (0, 0) of a draw is its viewport's top left in every mode; each half must
+// match the exact coverage of its own text there, and nothing may leak into
+// the other half.
+TEST(Viewport, SplitScreenDrawsEachTextInItsOwnViewport) {
+  Font font = Font::open(test::kDejaVuSans);
+  const ShapedLine left = shape_line(font, "Left eye");
+  const ShapedLine right = shape_line(font, "Right eye");
+  Gpu& g = gpu();
+  DrawBatch left_batch = DrawBatch::from_text(g.cache, font, left, 24.0);
+  DrawBatch right_batch = DrawBatch::from_text(g.cache, font, right, 24.0);
+  const double scale = 24.0 / font.metrics().units_per_em;
+  const int W = 400, H = 100;
+  // Viewports (GL: x, y from the bottom, w, h) and where their top-left pixel
+  // lands in the image (rows from the top).
+  struct View {
+    int x, y, w, h;
+    const DrawBatch* batch;
+    const ShapedLine* line;
+  };
+  const View views[2] = {{0, 0, 200, 60, &left_batch, &left}, {200, 40, 200, 60, &right_batch, &right}};
+  const Placement in_view{scale, 8.4, 36.3};
+  test::Coverage want(W, H);
+  for (const View& v : views) {
+    const Placement at{scale, in_view.origin_x + v.x, in_view.origin_y + (H - v.y - v.h)};
+    test::add_union_coverage(test::place_outline(line_outline(font, *v.line), at), want);
+  }
+  struct Mode {
+    AntiAliasing aa;
+    double edge;
+  };
+  for (const Mode& m : {Mode{AntiAliasing::Full, 0.005}, Mode{AntiAliasing::Vbaa, 0.005},
+                        Mode{AntiAliasing::Msaa, 0.06}, Mode{AntiAliasing::Curves, 0.12}}) {
+    g.renderer.begin(W, H, Color{1, 1, 1, 1});
+    for (const View& v : views) {
+      glViewport(v.x, v.y, v.w, v.h);
+      g.renderer.draw(*v.batch, in_view, DrawOptions(Color{0, 0, 0, 1}, m.aa));
+    }
+    const test::Coverage got = test::coverage_from_black_on_white(g.renderer.read_pixels());
+    const test::CoverageStats st = test::compare(got, want);
+    std::printf("split screen, mode %d: edge %.4f, max %.3f, ink %.4f\n", static_cast<int>(m.aa), st.edge_mean_abs,
+                st.max_abs, st.ink_ratio);
+    if (st.edge_mean_abs > m.edge) test::write_comparison("split-screen", got, want);
+    EXPECT_LE(st.edge_mean_abs, m.edge) << "mode " << static_cast<int>(m.aa);
+    EXPECT_NEAR(st.ink_ratio, 1.0, m.aa == AntiAliasing::Curves ? 0.1 : 0.03) << "mode " << static_cast<int>(m.aa);
+  }
+}
+
 // --- Zoom accuracy: cubic (CFF) glyphs at 2,000 and 10,000 px/em ---------------
 // A window of the glyph is drawn; the mesh's cubic approximation is chosen for
 // the drawn scale (lod.hpp), so the outline stays within 1/16 px of the true
@@ -327,6 +469,47 @@ test::Coverage draw_circle(double radius, CurveMode mode, double cx, double cy, 
 // fractional positions, in both orientations, drawn at three scales, must
 // then match exact area coverage everywhere, tips included: a pixel the
 // growth missed would keep its whole share of coverage.
+// Each edge grows by how far a pixel's box reaches past it: 0.5 px for an
+// edge along an axis, sqrt(2)/2 for a diagonal one (curve.vert.glsl). A box
+// that overlaps the shape by a thin strip has its centre just inside that
+// reach; grown any less, such a pixel would lose its strip. Axis-aligned and
+// diagonal edges swept across a pixel in steps of 1/64 px put some edge within
+// 1/64 px of every pixel boundary position: each must match exact coverage.
+TEST(FullAntialiasingGrowth, EdgesGrowByThePixelBoxReach) {
+  Outline shapes;
+  auto polygon = [&](std::initializer_list<Vec2> points) {
+    bool first = true;
+    for (Vec2 p : points) {
+      if (first)
+        shapes.move_to(p);
+      else
+        shapes.line_to(p);
+      first = false;
+    }
+    shapes.close();
+  };
+  polygon({{2, 2}, {14, 2}, {14, 9}, {2, 9}});          // axis-aligned edges
+  polygon({{24, 2}, {31, 9}, {24, 16}, {17, 9}});       // diagonal ones
+  polygon({{34, 2}, {46, 4.5}, {44, 14}, {36.5, 12}});  // others
+  const Mesh mesh = build_mesh(shapes);
+  Gpu& g = gpu();  // the context, before the batch uploads
+  DrawBatch batch = DrawBatch::from_mesh(mesh);
+  double worst = 0.0;
+  for (int step = 0; step < 64; ++step) {
+    const double f = step / 64.0;
+    const Placement placement{1.0, 1.0 + f, 19.0 + f * 0.75};
+    g.renderer.begin(50, 22, Color{1, 1, 1, 1});
+    g.renderer.draw(batch, placement, DrawOptions(Color{0, 0, 0, 1}, AntiAliasing::Full));
+    const test::Coverage got = test::coverage_from_black_on_white(g.renderer.read_pixels());
+    const test::Coverage want = test::union_coverage(test::place_outline(shapes, placement), 50, 22);
+    const test::CoverageStats s = test::compare(got, want);
+    worst = std::max(worst, s.max_abs);
+    if (s.max_abs > 2.0 / 255.0) test::write_comparison("edge-reach-" + std::to_string(step), got, want);
+    EXPECT_LE(s.max_abs, 2.0 / 255.0) << "offset " << f << " px";
+  }
+  std::printf("edges swept over a pixel in 64 steps: largest pixel error %.4f\n", worst);
+}
+
 TEST(FullAntialiasingGrowth, SharpTrianglesGetEveryPixelTheyTouch) {
   Outline shapes;
   auto triangle = [&](Vec2 a, Vec2 b, Vec2 c) {

@@ -1,5 +1,6 @@
 // Glyph cache (packed meshes per glyph and level of detail, LRU within a byte
-// budget) and draw batches (one vertex and one index buffer, one draw call).
+// budget, with GPU buffers per glyph for instanced blocks) and draw batches.
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -8,10 +9,28 @@
 #include "curvetext/error.hpp"
 #include "curvetext/lod.hpp"
 #include "gpu/batch_impl.hpp"
+#include "gpu/gl_state.hpp"
 
 namespace curvetext {
 
-GlyphCache::Impl::Packed GlyphCache::Impl::get(const Font& font, std::uint32_t glyph_id, double pixels_per_em) {
+namespace {
+
+// What an entry costs beyond its meshes: the list node, the index's node, the
+// shared glyph and its control block. An empty glyph (a space) costs this
+// much, so no number of them fits a budget for free.
+constexpr std::size_t kEntryBookkeepingBytes =
+    sizeof(gpu::CacheImpl::Entry) + sizeof(gpu::CachedGlyph) + 4 * sizeof(void*) + 32;
+
+Box bounds_of(const gpu::PackedMesh& packed) {
+  Box box;
+  for (const gpu::Vertex& v : packed.vertices) box.add({v.pos[0], v.pos[1]});
+  return box;
+}
+
+}  // namespace
+
+GlyphCache::Impl::Packed GlyphCache::Impl::get(const Font& font, std::uint32_t glyph_id, double pixels_per_em,
+                                               bool upload) {
   const int upem = font.metrics().units_per_em;
   if (!(pixels_per_em > 0) || !std::isfinite(pixels_per_em) || upem <= 0) {
     throw Error(ErrorCode::InvalidArgument, "glyph size must be a positive number of pixels per em");
@@ -21,45 +40,62 @@ GlyphCache::Impl::Packed GlyphCache::Impl::get(const Font& font, std::uint32_t g
   // scale and stored under lod 0; outlines with cubics under their band
   // (lod_for_scale never returns 0: the lowest band is tolerance::kMinLodLog2).
   const int cubic_lod = lod_for_scale(pixels_per_em / upem, upem);
+  std::list<Entry>::iterator entry = lru.end();
   for (int probe : {0, cubic_lod}) {
     auto it = index.find(Key{font.cache_key(), glyph_id, probe});
     if (it != index.end()) {
       lru.splice(lru.begin(), lru, it->second);
       ++stats.hits;
-      return it->second->packed;
+      entry = it->second;
+      break;
     }
   }
-  ++stats.misses;
-  thread_local Outline outline;  // scratch: its storage serves every miss on this thread
-  font.glyph_outline(glyph_id, outline);
-  int lod = 0;
-  MeshOptions options;
-  if (outline.has_cubics()) {
-    lod = cubic_lod;
-    options.cubic_tolerance = cubic_tolerance_for_lod(lod, upem);
+  if (entry == lru.end()) {
+    ++stats.misses;
+    thread_local Outline outline;  // scratch: its storage serves every miss on this thread
+    font.glyph_outline(glyph_id, outline);
+    int lod = 0;
+    MeshOptions options;
+    if (outline.has_cubics()) {
+      lod = cubic_lod;
+      options.cubic_tolerance = cubic_tolerance_for_lod(lod, upem);
+    }
+    auto glyph = std::make_shared<gpu::CachedGlyph>();
+    if (!outline.empty()) {
+      thread_local Mesh mesh;  // scratch: its storage serves every miss on this thread
+      build_mesh(outline, options, mesh);
+      gpu::pack_mesh(mesh, glyph->packed);
+      glyph->bounds = bounds_of(glyph->packed);
+    }
+    const std::size_t cost = glyph->packed.memory_bytes() + kEntryBookkeepingBytes;
+    lru.push_front(Entry{Key{font.cache_key(), glyph_id, lod}, std::move(glyph), cost});
+    index[lru.front().key] = lru.begin();
+    stats.bytes += cost;
+    stats.glyphs += 1;
+    entry = lru.begin();
   }
-  auto packed = std::make_shared<gpu::PackedMesh>();
-  if (!outline.empty()) {
-    thread_local Mesh mesh;  // scratch: its storage serves every miss on this thread
-    build_mesh(outline, options, mesh);
-    gpu::pack_mesh(mesh, *packed);
+  gpu::CachedGlyph& glyph = *entry->glyph;
+  if (upload && !glyph.buffers && !glyph.packed.empty()) {
+    glyph.buffers = gpu::upload_glyph(glyph.packed);
+    entry->cost += glyph.buffers->bytes;
+    stats.bytes += glyph.buffers->bytes;
+    stats.gpu_bytes += glyph.buffers->bytes;
   }
-  Packed result = packed;
+  Packed result = entry->glyph;
+  evict();
+  return result;
+}
 
-  const std::size_t size = result->memory_bytes();
-  lru.push_front(Entry{Key{font.cache_key(), glyph_id, lod}, result});
-  index[lru.front().key] = lru.begin();
-  stats.bytes += size;
-  stats.glyphs += 1;
-  // Evict least recently used glyphs, but never the one just built.
+// Drops least recently used glyphs past the budget, but never the newest.
+void GlyphCache::Impl::evict() {
   while (stats.bytes > budget_bytes && lru.size() > 1) {
     const Entry& victim = lru.back();
-    stats.bytes -= victim.packed->memory_bytes();
+    stats.bytes -= victim.cost;
+    if (victim.glyph->buffers) stats.gpu_bytes -= victim.glyph->buffers->bytes;
     stats.glyphs -= 1;
     index.erase(victim.key);
     lru.pop_back();
   }
-  return result;
 }
 
 GlyphCache::GlyphCache(std::size_t budget_bytes) : impl_(std::make_unique<Impl>(budget_bytes)) {}
@@ -94,20 +130,25 @@ template <typename T>
 void upload_buffer(GLenum target, GLuint& buffer, const std::vector<T>& data) {
   glGenBuffers(1, &buffer);
   if (buffer == 0) throw Error(ErrorCode::Gl, "glGenBuffers failed (is a GL context current?)");
-  glBindBuffer(target, buffer);
+  const gpu::BufferBindingScope bound(target, buffer);  // the application's binding comes back
   glBufferData(target, static_cast<GLsizeiptr>(data.size() * sizeof(T)), data.data(), GL_STATIC_DRAW);
-  glBindBuffer(target, 0);
 }
 
 }  // namespace
 
 namespace gpu {
 
-std::unique_ptr<DrawBatch::Impl> upload(PackedMesh packed, IndexUpload how) {
-  auto impl = std::make_unique<DrawBatch::Impl>();
-  static std::uint64_t next_serial = 0;
-  impl->serial = ++next_serial;
-  for (const Vertex& v : packed.vertices) impl->bounds.add({v.pos[0], v.pos[1]});
+namespace {
+std::uint64_t next_serial() {
+  static std::atomic<std::uint64_t> serial{0};
+  return serial.fetch_add(1, std::memory_order_relaxed) + 1;
+}
+}  // namespace
+
+std::unique_ptr<BatchImpl> upload(PackedMesh packed, IndexUpload how) {
+  auto impl = std::make_unique<BatchImpl>();
+  impl->serial = next_serial();
+  impl->bounds = bounds_of(packed);
   if (packed.indices.empty()) return impl;
   if (how == IndexUpload::Bits16 && packed.vertices.size() > kMaxShortIndexedVertices)
     throw Error(ErrorCode::InvalidArgument, "16-bit indices cannot reach past 65,536 vertices");
@@ -123,6 +164,7 @@ std::unique_ptr<DrawBatch::Impl> upload(PackedMesh packed, IndexUpload how) {
   }
   impl->vertex_count = packed.vertices.size();
   impl->index_count = packed.indices.size();
+  impl->interior_index_count = packed.interior_indices;
   upload_buffer(GL_ARRAY_BUFFER, impl->vbo, packed.vertices);
   if (how == IndexUpload::Bits16) {
     const std::vector<std::uint16_t> shorts(packed.indices.begin(), packed.indices.end());
@@ -137,34 +179,167 @@ std::unique_ptr<DrawBatch::Impl> upload(PackedMesh packed, IndexUpload how) {
   return impl;
 }
 
+std::shared_ptr<const GlyphBuffers> upload_glyph(const PackedMesh& packed) {
+  auto buffers = std::make_shared<GlyphBuffers>();
+  buffers->vertex_count = packed.vertices.size();
+  buffers->index_count = static_cast<GLsizei>(packed.indices.size());
+  buffers->interior_index_count = static_cast<GLsizei>(packed.interior_indices);
+  upload_buffer(GL_ARRAY_BUFFER, buffers->vbo, packed.vertices);
+  if (packed.vertices.size() <= kMaxShortIndexedVertices) {
+    const std::vector<std::uint16_t> shorts(packed.indices.begin(), packed.indices.end());
+    upload_buffer(GL_ELEMENT_ARRAY_BUFFER, buffers->ibo, shorts);
+    buffers->index_type = GL_UNSIGNED_SHORT;
+  } else {
+    upload_buffer(GL_ELEMENT_ARRAY_BUFFER, buffers->ibo, packed.indices);
+    buffers->index_type = GL_UNSIGNED_INT;
+  }
+  buffers->bytes = packed.gpu_bytes();
+  if (GLenum err = glGetError(); err != GL_NO_ERROR)
+    throw Error(ErrorCode::Gl, "glyph buffer upload failed (GL error 0x" + gl_error_text(err) + ")");
+  return buffers;
+}
+
+bool context_instances() {
+  const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+  if (version == nullptr) return false;
+  const bool gles = std::strncmp(version, "OpenGL ES ", 10) == 0;
+  int major = 0, minor = 0;
+  if (std::sscanf(gles ? version + 10 : version, "%d.%d", &major, &minor) != 2) return false;
+  return gles ? major >= 3 : (major > 3 || (major == 3 && minor >= 3));
+}
+
+namespace {
+
+// The GLES2 path: each placement's mesh copied into one buffer.
+std::unique_ptr<BatchImpl> expanded_block(std::span<const CacheImpl::Packed> glyphs,
+                                          std::span<const PlacedGlyph> placed) {
+  std::size_t vertices = 0, indices = 0;
+  for (const auto& g : glyphs) {
+    vertices += g->packed.vertices.size();
+    indices += g->packed.indices.size();
+  }
+  PackedMesh packed;
+  packed.vertices.reserve(vertices);
+  packed.indices.reserve(indices);
+  // Two passes keep every interior triangle ahead of every curved one.
+  std::vector<std::uint32_t> bases(placed.size());
+  for (std::size_t i = 0; i < placed.size(); ++i) {
+    const PackedMesh& glyph = glyphs[i]->packed;
+    bases[i] = static_cast<std::uint32_t>(packed.vertices.size());
+    append_vertices_translated(glyph, Vec2{placed[i].x, placed[i].y}, packed);
+    for (std::size_t k = 0; k < glyph.interior_indices; ++k) packed.indices.push_back(bases[i] + glyph.indices[k]);
+  }
+  packed.interior_indices = packed.indices.size();
+  for (std::size_t i = 0; i < placed.size(); ++i) {
+    const PackedMesh& glyph = glyphs[i]->packed;
+    for (std::size_t k = glyph.interior_indices; k < glyph.indices.size(); ++k)
+      packed.indices.push_back(bases[i] + glyph.indices[k]);
+  }
+  return upload(std::move(packed));
+}
+
+// Instancing: one offset per placement, grouped by glyph (a counting sort:
+// linear in the placements).
+std::unique_ptr<BatchImpl> instanced_block(std::span<const CacheImpl::Packed> glyphs,
+                                           std::span<const PlacedGlyph> placed) {
+  auto impl = std::make_unique<BatchImpl>();
+  impl->serial = next_serial();
+  std::unordered_map<const CachedGlyph*, std::size_t> run_of;
+  std::vector<std::size_t> run_index(placed.size(), SIZE_MAX);
+  for (std::size_t i = 0; i < placed.size(); ++i) {
+    const CachedGlyph& g = *glyphs[i];
+    if (g.packed.empty()) continue;
+    const auto [it, fresh] = run_of.try_emplace(&g, impl->runs.size());
+    if (fresh) impl->runs.push_back(BatchImpl::Run{g.buffers, 0, 0});
+    run_index[i] = it->second;
+    ++impl->runs[it->second].count;
+    const Vec2 offset{placed[i].x, placed[i].y};
+    impl->bounds.add(g.bounds.min + offset);
+    impl->bounds.add(g.bounds.max + offset);
+  }
+  GLsizei next = 0;
+  for (auto& run : impl->runs) {
+    run.first = next;
+    next += run.count;
+  }
+  impl->placements = static_cast<std::size_t>(next);
+  if (impl->runs.empty()) return impl;
+  std::vector<GLsizei> fill(impl->runs.size());
+  for (std::size_t r = 0; r < impl->runs.size(); ++r) fill[r] = impl->runs[r].first;
+  std::vector<float> offsets(2 * impl->placements);
+  for (std::size_t i = 0; i < placed.size(); ++i) {
+    if (run_index[i] == SIZE_MAX) continue;
+    const auto slot = static_cast<std::size_t>(fill[run_index[i]]++);
+    offsets[2 * slot] = static_cast<float>(placed[i].x);
+    offsets[2 * slot + 1] = static_cast<float>(placed[i].y);
+  }
+  upload_buffer(GL_ARRAY_BUFFER, impl->offsets_vbo, offsets);
+  if (GLenum err = glGetError(); err != GL_NO_ERROR)
+    throw Error(ErrorCode::Gl, "text block upload failed (GL error 0x" + gl_error_text(err) + ")");
+  return impl;
+}
+
+}  // namespace
+
+std::unique_ptr<BatchImpl> text_block(CacheImpl& cache, const Font& font, std::span<const PlacedGlyph> glyphs,
+                                      double pixels_per_em, BlockPath path) {
+  for (const PlacedGlyph& g : glyphs)
+    if (!std::isfinite(g.x) || !std::isfinite(g.y))
+      throw Error(ErrorCode::InvalidArgument, "glyph positions must be finite");
+  check_no_pending_error("DrawBatch::from_glyphs");
+  if (path == BlockPath::Auto) path = context_instances() ? BlockPath::Instanced : BlockPath::Expanded;
+  const bool instanced = path == BlockPath::Instanced;
+  // Held here: the cache may drop a glyph of this block while fetching a later one.
+  std::vector<CacheImpl::Packed> meshes;
+  meshes.reserve(glyphs.size());
+  for (const PlacedGlyph& g : glyphs) meshes.push_back(cache.get(font, g.glyph_id, pixels_per_em, instanced));
+  return instanced ? instanced_block(meshes, glyphs) : expanded_block(meshes, glyphs);
+}
+
 }  // namespace gpu
 
 DrawBatch DrawBatch::from_text(GlyphCache& cache, const Font& font, const ShapedLine& line, double pixels_per_em) {
-  gpu::PackedMesh packed;
+  std::vector<PlacedGlyph> placed;
+  placed.reserve(line.glyphs.size());
   double pen_x = 0.0, pen_y = 0.0;
   for (const ShapedGlyph& g : line.glyphs) {
-    auto glyph = cache.impl().get(font, g.glyph_id, pixels_per_em);
-    gpu::append_translated(*glyph, Vec2{pen_x + g.x_offset, pen_y + g.y_offset}, packed);
+    placed.push_back(PlacedGlyph{g.glyph_id, pen_x + g.x_offset, pen_y + g.y_offset});
     pen_x += g.x_advance;
     pen_y += g.y_advance;
   }
-  return DrawBatch(gpu::upload(std::move(packed)));
+  return from_glyphs(cache, font, placed, pixels_per_em);
 }
 
-DrawBatch DrawBatch::from_mesh(const Mesh& mesh) { return DrawBatch(gpu::upload(gpu::pack_mesh(mesh))); }
+DrawBatch DrawBatch::from_glyphs(GlyphCache& cache, const Font& font, std::span<const PlacedGlyph> glyphs,
+                                 double pixels_per_em) {
+  return DrawBatch(gpu::text_block(GlyphCacheAccess::impl(cache), font, glyphs, pixels_per_em));
+}
+
+DrawBatch DrawBatch::from_mesh(const Mesh& mesh) {
+  gpu::check_no_pending_error("DrawBatch::from_mesh");
+  return DrawBatch(gpu::upload(gpu::pack_mesh(mesh)));
+}
 
 DrawBatch::DrawBatch(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 DrawBatch::DrawBatch(DrawBatch&&) noexcept = default;
 DrawBatch& DrawBatch::operator=(DrawBatch&&) noexcept = default;
 DrawBatch::~DrawBatch() = default;
 
-std::size_t DrawBatch::vertex_count() const { return impl_ ? impl_->vertex_count : 0; }
+std::size_t DrawBatch::vertex_count() const {
+  if (!impl_) return 0;
+  if (!impl_->instanced()) return impl_->vertex_count;
+  std::size_t n = 0;
+  for (const Impl::Run& run : impl_->runs) n += run.glyph->vertex_count * static_cast<std::size_t>(run.count);
+  return n;
+}
 std::size_t DrawBatch::gpu_bytes() const {
   if (!impl_) return 0;
+  if (impl_->instanced()) return impl_->placements * 2 * sizeof(float);
   const std::size_t index_bytes = impl_->index_type == GL_UNSIGNED_SHORT ? 2
                                   : impl_->index_type == GL_UNSIGNED_INT ? 4
                                                                          : 0;
   return impl_->vertex_count * sizeof(gpu::Vertex) + impl_->index_count * index_bytes;
 }
+bool DrawBatch::instanced() const { return impl_ && impl_->instanced(); }
 
 }  // namespace curvetext

@@ -3,34 +3,87 @@
 
 #include <GLES2/gl2.h>
 
+#include <atomic>
 #include <cstdint>
 #include <list>
 #include <memory>
+#include <span>
 #include <unordered_map>
 #include <vector>
 
-#include "curvetext/renderer.hpp"
+#include "curvetext/draw_batch.hpp"
+#include "curvetext/glyph_cache.hpp"
 #include "gpu/vertex_format.hpp"
 
 namespace curvetext {
 
+namespace gpu {
+
+// One glyph's packed mesh in GPU buffers of its own, drawn once per placement
+// by instancing. Shared by the cache entry and every block that places the
+// glyph; deleted with the last of them (the context that made it current).
+struct GlyphBuffers {
+  GLuint vbo = 0;
+  GLuint ibo = 0;
+  GLsizei index_count = 0;
+  GLsizei interior_index_count = 0;  // the interior triangles' indices come first
+  GLenum index_type = 0;             // GL_UNSIGNED_SHORT or GL_UNSIGNED_INT
+  std::size_t vertex_count = 0;
+  std::size_t bytes = 0;
+
+  GlyphBuffers() = default;
+  GlyphBuffers(const GlyphBuffers&) = delete;
+  GlyphBuffers& operator=(const GlyphBuffers&) = delete;
+  ~GlyphBuffers() {
+    if (vbo != 0) glDeleteBuffers(1, &vbo);
+    if (ibo != 0) glDeleteBuffers(1, &ibo);
+  }
+};
+
+// A glyph cache entry: the packed mesh, the box of its base positions
+// (outline units), and its GPU buffers once an instanced block needed them.
+struct CachedGlyph {
+  PackedMesh packed;
+  Box bounds;
+  std::shared_ptr<const GlyphBuffers> buffers;
+};
+
+}  // namespace gpu
+
 struct DrawBatch::Impl {
-  GLuint vbo = 0;  // 0 when there is nothing to draw
+  // Expanded: every placement's vertices in one buffer (GLES2, meshes).
+  GLuint vbo = 0;  // 0 when there is nothing to draw or the batch is instanced
   GLuint ibo = 0;  // 0 when drawn as plain arrays (index_type 0)
   std::size_t vertex_count = 0;
-  std::size_t index_count = 0;  // with index_type 0: vertex_count (3 per triangle)
-  GLenum index_type = 0;        // GL_UNSIGNED_SHORT, GL_UNSIGNED_INT, or 0: no index buffer
-  Box bounds;                   // of the vertices' base positions (outline units; growth offsets not included)
-  std::uint64_t serial = 0;     // unique per upload: the vbaa pass is reused while it and the transform match
+  std::size_t index_count = 0;           // with index_type 0: vertex_count (3 per triangle)
+  std::size_t interior_index_count = 0;  // the interior triangles' indices (or vertices) come first
+  GLenum index_type = 0;                 // GL_UNSIGNED_SHORT, GL_UNSIGNED_INT, or 0: no index buffer
+
+  // Instanced: per placement, its offset (2 floats, outline units), grouped
+  // by glyph; one run of placements per distinct glyph.
+  struct Run {
+    std::shared_ptr<const gpu::GlyphBuffers> glyph;
+    GLsizei first = 0;  // placement index of the run's first offset
+    GLsizei count = 0;
+  };
+  GLuint offsets_vbo = 0;
+  std::vector<Run> runs;
+  std::size_t placements = 0;
+
+  Box bounds;                // of the vertices' base positions (outline units; growth offsets not included)
+  std::uint64_t serial = 0;  // unique per upload: an offscreen pass is reused while it and the transform match
 
   Impl() = default;
   Impl(const Impl&) = delete;
   Impl& operator=(const Impl&) = delete;
-  // Needs the context that created the buffer to be current.
+  // Needs the context that created the buffers to be current.
   ~Impl() {
     if (vbo != 0) glDeleteBuffers(1, &vbo);
     if (ibo != 0) glDeleteBuffers(1, &ibo);
+    if (offsets_vbo != 0) glDeleteBuffers(1, &offsets_vbo);
   }
+  bool instanced() const { return offsets_vbo != 0; }
+  bool empty() const { return instanced() ? runs.empty() : vbo == 0 || vertex_count == 0; }
 };
 
 struct GlyphCache::Impl {
@@ -47,37 +100,65 @@ struct GlyphCache::Impl {
       return static_cast<std::size_t>(h);
     }
   };
-  using Packed = std::shared_ptr<const gpu::PackedMesh>;
+  using Packed = std::shared_ptr<gpu::CachedGlyph>;
   struct Entry {
     Key key;
-    Packed packed;
+    Packed glyph;
+    std::size_t cost = 0;  // bytes counted in the budget
   };
 
   explicit Impl(std::size_t budget) : budget_bytes(budget) {}
 
   // The packed mesh of a glyph for drawing at `pixels_per_em`; builds it on
-  // a miss. The returned pointer stays valid even if the entry is evicted.
-  Packed get(const Font& font, std::uint32_t glyph_id, double pixels_per_em);
+  // a miss, and uploads its GPU buffers when `upload` is set and it has none.
+  // The returned pointer stays valid even if the entry is evicted.
+  Packed get(const Font& font, std::uint32_t glyph_id, double pixels_per_em, bool upload = false);
 
   std::size_t budget_bytes;
   std::list<Entry> lru;  // most recently used first
   std::unordered_map<Key, std::list<Entry>::iterator, KeyHash> index;
   Stats stats;
+
+ private:
+  void evict();
 };
 
-// Makes a batch from an upload (the library and tests).
+// Reach the private state of DrawBatch and GlyphCache (friends of each):
+// the library's gpu/ code and the tests.
 struct DrawBatchAccess {
-  static DrawBatch make(std::unique_ptr<DrawBatch::Impl> impl) { return DrawBatch(std::move(impl)); }
+  using Impl = DrawBatch::Impl;
+  // Makes a batch from an upload.
+  static DrawBatch make(std::unique_ptr<Impl> impl) { return DrawBatch(std::move(impl)); }
+  static const Impl& impl(const DrawBatch& batch) { return *batch.impl_; }
+};
+struct GlyphCacheAccess {
+  using Impl = GlyphCache::Impl;
+  static Impl& impl(GlyphCache& cache) { return *cache.impl_; }
 };
 
 namespace gpu {
+using BatchImpl = DrawBatchAccess::Impl;
+using CacheImpl = GlyphCacheAccess::Impl;
+
 // How a batch's indices reach the GPU (see vertex_format.hpp).
 enum class IndexUpload { Auto, Bits16, Bits32, Arrays };
 // Uploads `packed` into a new batch's buffers. Auto picks 16-bit indices up to
 // 65,536 vertices, else 32-bit where the context has them, else Arrays (the
 // triangles expanded into plain vertex arrays); the others force a way, for
 // tests (Bits16 throws InvalidArgument past 65,536 vertices).
-std::unique_ptr<DrawBatch::Impl> upload(gpu::PackedMesh packed, IndexUpload how = IndexUpload::Auto);
+std::unique_ptr<BatchImpl> upload(gpu::PackedMesh packed, IndexUpload how = IndexUpload::Auto);
+
+// How a text block reaches the GPU: Auto instances where the context can
+// (GLES 3, desktop GL 3.3), else copies each placement's mesh (Expanded, the
+// GLES2 path); tests force either.
+enum class BlockPath { Auto, Expanded, Instanced };
+std::unique_ptr<BatchImpl> text_block(CacheImpl& cache, const Font& font, std::span<const PlacedGlyph> glyphs,
+                                      double pixels_per_em, BlockPath path = BlockPath::Auto);
+// A glyph's own GPU buffers for instanced drawing (16-bit indices up to
+// 65,536 vertices, else 32-bit: instancing contexts have them).
+std::shared_ptr<const GlyphBuffers> upload_glyph(const PackedMesh& packed);
+// Whether the current context draws instanced (GLES 3+, desktop GL 3.3+).
+bool context_instances();
 }  // namespace gpu
 
 }  // namespace curvetext

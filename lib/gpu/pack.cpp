@@ -111,24 +111,38 @@ void pack_mesh(const Mesh& mesh, PackedMesh& out) {
   };
   for (const auto& tri : mesh.triangles)
     add({mesh.points[tri[0]], mesh.points[tri[1]], mesh.points[tri[2]]}, kInterior, 0.0f);
+  const std::size_t interior = ni;
   for (const CurvedTriangle& ct : mesh.curves)
     add({mesh.points[ct.p0], mesh.points[ct.control], mesh.points[ct.p2]}, ct.convex ? kConvexCurve : kConcaveCurve,
         static_cast<float>(ct.weight));
   out.vertices.insert(out.vertices.end(), vertices, vertices + nv);
-  out.indices.insert(out.indices.end(), indices, indices + ni);
+  const auto split = out.indices.begin() + static_cast<std::ptrdiff_t>(out.interior_indices);
+  out.indices.insert(split, indices, indices + interior);
+  out.indices.insert(out.indices.end(), indices + interior, indices + ni);
+  out.interior_indices += interior;
 }
 
 void append_translated(const PackedMesh& in, Vec2 offset, PackedMesh& out) {
   const auto base = static_cast<std::uint32_t>(out.vertices.size());
-  out.vertices.reserve(out.vertices.size() + in.vertices.size());
+  append_vertices_translated(in, offset, out);
+  std::vector<std::uint32_t> interior(in.indices.begin(),
+                                      in.indices.begin() + static_cast<std::ptrdiff_t>(in.interior_indices));
+  for (std::uint32_t& i : interior) i += base;
+  out.indices.insert(out.indices.begin() + static_cast<std::ptrdiff_t>(out.interior_indices), interior.begin(),
+                     interior.end());
+  out.interior_indices += interior.size();
+  for (std::size_t k = in.interior_indices; k < in.indices.size(); ++k) out.indices.push_back(base + in.indices[k]);
+}
+
+void append_vertices_translated(const PackedMesh& in, Vec2 offset, PackedMesh& out) {
+  // No exact reserve here: appended glyph by glyph, that would copy the
+  // whole block per glyph. Callers that know the total reserve it once.
   for (Vertex v : in.vertices) {
     // Add in double so equal inputs stay equal after the shift.
     v.pos[0] = static_cast<float>(static_cast<double>(v.pos[0]) + offset.x);
     v.pos[1] = static_cast<float>(static_cast<double>(v.pos[1]) + offset.y);
     out.vertices.push_back(v);
   }
-  out.indices.reserve(out.indices.size() + in.indices.size());
-  for (std::uint32_t i : in.indices) out.indices.push_back(base + i);
 }
 
 }  // namespace curvetext::gpu

@@ -8,4 +8,5 @@ extern const char* const curve_frag_glsl;
 extern const char* const area_frag_glsl;
 extern const char* const resolve_vert_glsl;
 extern const char* const resolve_frag_glsl;
+extern const char* const composite_frag_glsl;
 }  // namespace curvetext::shader_source

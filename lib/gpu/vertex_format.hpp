@@ -67,7 +67,10 @@ inline constexpr std::size_t kMaxShortIndexedVertices = 65536;
 // not: the shaders do not cull).
 struct PackedMesh {
   std::vector<Vertex> vertices;
+  // The interior triangles' indices first, [0, interior_indices), then the
+  // curved triangles': full antialiasing draws them with two programs.
   std::vector<std::uint32_t> indices;
+  std::size_t interior_indices = 0;
 
   bool empty() const { return indices.empty(); }
   // Bytes in a vertex buffer and an index buffer of the width a batch of
@@ -79,7 +82,8 @@ struct PackedMesh {
   std::size_t memory_bytes() const { return vertices.size() * sizeof(Vertex) + indices.size() * sizeof(std::uint32_t); }
 };
 
-// Appends the packed triangles (interior and curved) of `mesh`.
+// Appends the packed triangles (interior and curved) of `mesh`, keeping the
+// interior triangles' indices ahead of the curved ones'.
 void pack_mesh(const Mesh& mesh, PackedMesh& out);
 inline PackedMesh pack_mesh(const Mesh& mesh) {
   PackedMesh out;
@@ -88,8 +92,12 @@ inline PackedMesh pack_mesh(const Mesh& mesh) {
 }
 
 // Appends `in` translated by `offset` (outline units), its indices moved past
-// the vertices already in `out`. Barycentrics are translation invariant, so
+// the vertices already in `out`, interior ones ahead of curved ones (which
+// moves out's curved indices: a block of many glyphs is assembled in two
+// passes instead, lib/gpu/batch.cpp). Barycentrics are translation invariant, so
 // only positions change.
 void append_translated(const PackedMesh& in, Vec2 offset, PackedMesh& out);
+// Only the vertices of `in`, translated (no indices).
+void append_vertices_translated(const PackedMesh& in, Vec2 offset, PackedMesh& out);
 
 }  // namespace curvetext::gpu

@@ -2,6 +2,8 @@
 // refers to these names instead of writing numbers.
 #pragma once
 
+#include <cstddef>
+
 namespace curvetext::tolerance {
 
 // --- Curves -----------------------------------------------------------------
@@ -59,6 +61,17 @@ inline constexpr float kThinTrianglePx = 1.0f / 256.0f;
 // pass, in pixels: the triangles' growth (kFringeWidthPx) plus the filter's ring
 // of one texel, rounded up.
 inline constexpr double kOffscreenBorderPx = 2.0;
+
+// Offscreen coverage textures of full / vbaa antialiasing (lib/gpu/renderer.cpp):
+// at most kCoverageTileTexels per side (RGBA8: 16 MiB), a larger block drawn
+// tile by tile; up to kCoverageSlots of them keep their passes for reuse, as
+// long as they hold at most kCoverageBudgetBytes together (past that the least
+// recently used one is redrawn). msaa's multisampled renderbuffer: at most
+// kMsaaTileTexels per side (4 samples: 16 MiB).
+inline constexpr int kCoverageTileTexels = 2048;
+inline constexpr std::size_t kCoverageSlots = 8;
+inline constexpr std::size_t kCoverageBudgetBytes = std::size_t{48} << 20;
+inline constexpr int kMsaaTileTexels = 1024;
 
 // `auto` antialiasing uses vbaa up to this many pixels per em (on screen) and
 // full above it, from bench/quality_bench's table: vbaa has the lowest edge
