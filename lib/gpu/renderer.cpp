@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <vector>
 #include <cstdlib>
 #include <cmath>
@@ -12,56 +11,17 @@
 #include <cstring>
 #include <initializer_list>
 #include <string>
+#include <utility>
+
+#include "curvetext/renderer.hpp"
 
 #include "curvetext/error.hpp"
 #include "curvetext/tolerances.hpp"
 #include "gpu/batch_impl.hpp"
+#include "gpu/gl_state.hpp"
 #include "gpu/shader_sources.hpp"
 
 namespace curvetext {
-
-AntiAliasing parse_antialiasing(std::string_view text) {
-  if (text == "none") return AntiAliasing::None;
-  if (text == "curves") return AntiAliasing::Curves;
-  if (text == "full") return AntiAliasing::Full;
-  if (text == "vbaa") return AntiAliasing::Vbaa;
-  if (text == "msaa") return AntiAliasing::Msaa;
-  if (text == "auto") return AntiAliasing::Auto;
-  throw Error(ErrorCode::InvalidArgument,
-              "unknown antialiasing mode '" + std::string(text) + "' (use none, curves, full, vbaa, msaa or auto)");
-}
-
-Blending parse_blending(std::string_view text) {
-  if (text == "srgb") return Blending::Srgb;
-  if (text == "linear") return Blending::Linear;
-  throw Error(ErrorCode::InvalidArgument, "unknown blending '" + std::string(text) + "' (use srgb or linear)");
-}
-
-float parse_vbaa_filter(std::string_view text) {
-  if (text == "box") return 0.0f;
-  if (text == "paper") return tolerance::kVbaaPaperRing;
-  double v = 0.0;
-  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (ec != std::errc() || ptr != text.data() + text.size() || !std::isfinite(v) || v < 0.0 || v > 1.0)
-    throw Error(ErrorCode::InvalidArgument,
-                "unknown vbaa filter '" + std::string(text) + "' (use box, paper, or a ring weight from 0 to 1)");
-  return static_cast<float>(v);
-}
-
-void check_coverage_gamma(double gamma, std::string_view what) {
-  if (!std::isfinite(gamma) || gamma < tolerance::kMinCoverageGamma || gamma > tolerance::kMaxCoverageGamma) {
-    char buf[160];
-    std::snprintf(buf, sizeof buf, " must be a number from %g to %g, got %g", tolerance::kMinCoverageGamma,
-                  tolerance::kMaxCoverageGamma, gamma);
-    throw Error(ErrorCode::InvalidArgument, std::string(what) + buf);
-  }
-}
-
-CurveMode parse_curve_mode(std::string_view text) {
-  if (text == "exact") return CurveMode::Exact;
-  if (text == "paper") return CurveMode::Paper;
-  throw Error(ErrorCode::InvalidArgument, "unknown curve mode '" + std::string(text) + "' (use exact or paper)");
-}
 
 namespace {
 
@@ -100,8 +60,9 @@ std::string preamble(GLenum type, bool gles) {
   return p;
 }
 
-void compile(const Shader& shader, GLenum type, const char* source, bool gles) {
+void compile(const Shader& shader, GLenum type, const char* source, bool gles, const char* defines_ = "") {
   std::string text = preamble(type, gles);
+  text += defines_;
   // Tolerances the shaders share with the library (tolerances.hpp), named
   // there only; preprocessor lines may precede #extension.
   char defines[160];
@@ -109,9 +70,19 @@ void compile(const Shader& shader, GLenum type, const char* source, bool gles) {
                 "#define CURVETEXT_PIXEL_REACH_PX %.7f\n#define CURVETEXT_THIN_TRIANGLE_PX %.9f\n",
                 static_cast<double>(tolerance::kFringeWidthPx), static_cast<double>(tolerance::kThinTrianglePx));
   text += defines;
-  // #extension must precede other statements but follow #version; on desktop
-  // core the derivatives are built in and the directive only warns.
-  text += source;
+  // #extension must precede other statements but follow #version. Desktop
+  // GLSL 3.30 has the derivatives built in, and its preamble has declared
+  // the fragment output already, so the directive goes.
+  if (gles) {
+    text += source;
+  } else {
+    for (const char* line = source; *line != '\0';) {
+      const char* end = std::strchr(line, '\n');
+      const std::size_t n = end != nullptr ? static_cast<std::size_t>(end - line + 1) : std::strlen(line);
+      if (std::strncmp(line, "#extension", 10) != 0) text.append(line, n);
+      line += n;
+    }
+  }
   const char* src = text.c_str();
   glShaderSource(shader.id, 1, &src, nullptr);
   glCompileShader(shader.id);
@@ -194,26 +165,42 @@ struct Renderer::Impl {
   GLuint program = 0;
   ProgramUniforms curve_u;  // of `program`
   GLint u_aa = -1, u_debug = -1;
-  // Full AA: the same vertex stage, the exact area of each triangle per pixel.
-  GLuint area_program = 0;
-  ProgramUniforms area_u;
-  Blending blending = Blending::Srgb;  // of the target begin() made
+  // Full AA: the same vertex stage, the exact area of each triangle per
+  // pixel; one program for interior triangles, one for curved ones.
+  // Each also with gamma (CURVETEXT_GAMMA 1, [1][...]), compiled when first
+  // needed: a software rasteriser runs every path of a shader, so the pow of
+  // gamma would cost every fragment even where gamma is 1.
+  GLuint area_program[2][2] = {{0, 0}, {0, 0}};
+  ProgramUniforms area_u[2][2];
+  Blending blending = Blending::Srgb;         // of the target begin() made
+  Blending target_blending = Blending::Srgb;  // of the framebuffer the current draw targets
   bool gles = true;
+  gpu::ContextInfo info;  // of the context current at construction
+  GLuint vao = 0;         // curvetext's own vertex array object (GLES 3, desktop GL 3)
+  // Coverage textures with one 8-bit channel (GL_R8) where the context renders
+  // into them (GLES 3, desktop GL 3), else RGBA8: a quarter of the memory and
+  // of the bytes the passes write and the composite reads.
+  bool single_channel = false;
+  std::size_t texel_bytes() const { return single_channel ? 1u : 4u; }
   GLuint framebuffer = 0;
   GLuint texture = 0;
   int width = 0, height = 0;
 
-  // vbaa / msaa: the second pass's program and offscreen targets.
-  GLuint resolve_program = 0;
-  GLint u_r_texture = -1, u_r_texture_size = -1, u_r_rect_origin = -1, u_r_r = -1, u_r_ring = -1, u_r_color = -1,
-        u_r_coverage_exponent = -1;
+  // The second pass of full / vbaa / msaa: a quad over the block's box that
+  // reads its coverage texture, one fetch per pixel (composite.frag.glsl) or
+  // through vbaa's filter (resolve.frag.glsl).
+  struct QuadProgram {
+    GLuint id = 0;
+    GLint texture = -1, texture_size = -1, rect_origin = -1, rows = -1, r = -1, ring = -1, color = -1,
+          coverage_exponent = -1;
+  };
+  QuadProgram resolve, composite[2];  // composite[1]: with gamma, made when first needed
   GLuint quad_vbo = 0;
-  GLuint off_fbo = 0, off_tex = 0;
-  int off_w = 0, off_h = 0;
-  GLuint ms_fbo = 0, ms_rb = 0;
-  int ms_w = 0, ms_h = 0;
   int max_samples = 0;    // 0: no multisampled renderbuffers
   int max_offscreen = 0;  // largest offscreen side
+
+  // What a coverage texture holds: the batch, its transform, the tile of the
+  // framebuffer (with its apron) and how it was drawn.
   struct OffscreenKey {
     std::uint64_t serial = 0;
     std::array<double, 9> matrix{};
@@ -221,64 +208,143 @@ struct Renderer::Impl {
     bool msaa = false, paper = false;
     bool operator==(const OffscreenKey&) const = default;
   };
-  OffscreenKey offscreen_key;
-  bool offscreen_valid = false;
+  // A coverage texture, allocated once and grown (never per draw), up to a
+  // tile of tolerance::kCoverageTileTexels per side; the pass it holds is
+  // reused while its key matches. A new one is made while there are fewer
+  // than kCoverageSlots and they fit kCoverageBudgetBytes; else the least
+  // recently used one takes the new pass.
+  struct Slot {
+    GLuint fbo = 0, texture = 0;
+    int w = 0, h = 0;  // allocated texels
+    OffscreenKey key;
+    bool valid = false;
+    std::uint64_t used = 0;
+  };
+  std::vector<Slot> slots;
+  std::uint64_t clock = 0;
+  // msaa: one multisampled renderbuffer, grown up to kMsaaTileTexels per side.
+  GLuint ms_fbo = 0, ms_rb = 0;
+  int ms_w = 0, ms_h = 0;
   std::size_t offscreen_passes = 0;
 
-  void ensure_offscreen(int w, int h, bool msaa) {
-    offscreen_valid = false;
-    if (off_fbo == 0 || off_w < w || off_h < h || off_w != w || off_h != h) {
-      if (off_fbo != 0) glDeleteFramebuffers(1, &off_fbo);
-      if (off_tex != 0) glDeleteTextures(1, &off_tex);
-      glGenTextures(1, &off_tex);
-      glBindTexture(GL_TEXTURE_2D, off_tex);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-      glBindTexture(GL_TEXTURE_2D, 0);
-      glGenFramebuffers(1, &off_fbo);
-      glBindFramebuffer(GL_FRAMEBUFFER, off_fbo);
-      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, off_tex, 0);
-      if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-        throw Error(ErrorCode::Gl, "offscreen antialiasing framebuffer incomplete");
-      off_w = w;
-      off_h = h;
-    }
-    if (msaa && (ms_fbo == 0 || ms_w != w || ms_h != h)) {
-      if (ms_fbo != 0) glDeleteFramebuffers(1, &ms_fbo);
-      if (ms_rb != 0) glDeleteRenderbuffers(1, &ms_rb);
-      glGenRenderbuffers(1, &ms_rb);
-      glBindRenderbuffer(GL_RENDERBUFFER, ms_rb);
-      glRenderbufferStorageMultisample(GL_RENDERBUFFER, max_samples, GL_RGBA8, w, h);
-      glGenFramebuffers(1, &ms_fbo);
-      glBindFramebuffer(GL_FRAMEBUFFER, ms_fbo);
-      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, ms_rb);
-      if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-        throw Error(ErrorCode::Gl, "multisampled framebuffer incomplete");
-      ms_w = w;
-      ms_h = h;
-    }
+  // The slot holding `key`'s pass (hit), else the least recently used one,
+  // grown to w x h texels and marked empty.
+  Slot& slot_for(const OffscreenKey& key, int w, int h, bool& hit) {
+    ++clock;
+    for (Slot& s : slots)
+      if (s.valid && s.key == key) {
+        s.used = clock;
+        hit = true;
+        return s;
+      }
+    hit = false;
+    std::size_t bytes = 0;
+    for (const Slot& s : slots) bytes += texel_bytes() * static_cast<std::size_t>(s.w) * static_cast<std::size_t>(s.h);
+    const std::size_t needed =
+        texel_bytes() * static_cast<std::size_t>(round_up(w)) * static_cast<std::size_t>(round_up(h));
+    if (slots.empty() ||
+        (slots.size() < tolerance::kCoverageSlots && bytes + needed <= tolerance::kCoverageBudgetBytes))
+      slots.emplace_back();
+    Slot& s =
+        *std::min_element(slots.begin(), slots.end(), [](const Slot& a, const Slot& b) { return a.used < b.used; });
+    s.used = clock;
+    s.valid = false;
+    if (s.fbo == 0 || s.w < w || s.h < h) allocate(s, std::max(s.w, round_up(w)), std::max(s.h, round_up(h)));
+    return s;
   }
-  void resolve_multisample(int w, int h) {
+  static int round_up(int n) { return (n + 63) / 64 * 64; }
+  void allocate(Slot& s, int w, int h) {
+    if (s.fbo != 0) glDeleteFramebuffers(1, &s.fbo);
+    if (s.texture != 0) glDeleteTextures(1, &s.texture);
+    glGenTextures(1, &s.texture);
+    glBindTexture(GL_TEXTURE_2D, s.texture);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    if (single_channel)
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, w, h, 0, GL_RED, GL_UNSIGNED_BYTE, nullptr);
+    else
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glGenFramebuffers(1, &s.fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, s.fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, s.texture, 0);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+      throw Error(ErrorCode::Gl, "offscreen antialiasing framebuffer incomplete");
+    s.w = w;
+    s.h = h;
+  }
+  void ensure_multisample(int w, int h) {
+    if (ms_fbo != 0 && ms_w >= w && ms_h >= h) return;
+    w = std::max(ms_w, round_up(w));
+    h = std::max(ms_h, round_up(h));
+    if (ms_fbo != 0) glDeleteFramebuffers(1, &ms_fbo);
+    if (ms_rb != 0) glDeleteRenderbuffers(1, &ms_rb);
+    glGenRenderbuffers(1, &ms_rb);
+    glBindRenderbuffer(GL_RENDERBUFFER, ms_rb);
+    // The format of the coverage textures it is resolved into (a resolve
+    // blit cannot convert).
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, max_samples, single_channel ? GL_R8 : GL_RGBA8, w, h);
+    glGenFramebuffers(1, &ms_fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, ms_fbo);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, ms_rb);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+      throw Error(ErrorCode::Gl, "multisampled framebuffer incomplete");
+    ms_w = w;
+    ms_h = h;
+  }
+  void resolve_multisample(const Slot& s, int w, int h) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, ms_fbo);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, off_fbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, s.fbo);
     glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
   }
+
+  // curvetext's own state for its draws (the caller restores the
+  // application's): its VAO, additive blend equation, no depth, stencil,
+  // culling, rasterizer discard or primitive restart.
+  void bind_own_state() {
+    if (info.gl3()) {
+      if (vao == 0) glGenVertexArrays(1, &vao);
+      glBindVertexArray(vao);
+      glDisable(GL_RASTERIZER_DISCARD);
+      if (info.gles) glDisable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
+    }
+    glBlendEquation(GL_FUNC_ADD);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_CULL_FACE);
+  }
+
+  // Each program compiled and linked on first use (Error(Gl) if it fails).
+  void make_curve_program();
+  void make_area_programs(bool gamma);  // area_program[gamma]
+  const QuadProgram& composite_program(bool gamma);
+  const QuadProgram& resolve_program();
+
+  // The passes of Renderer::draw (below).
+  void draw_curves(const gpu::BatchImpl& b, const Transform& full, float vw, float vh, const DrawOptions& options);
+  bool draw_offscreen(const gpu::BatchImpl& b, const Transform& full, float vw, float vh,
+                      const gpu::GlStateBackup& target, const DrawOptions& options);
+  void draw_area(const gpu::BatchImpl& b, const Transform& full, float vw, float vh, const std::array<float, 4>& color,
+                 float gamma, CurveMode curve_mode, bool accumulate);
+  void draw_debug_edges(const gpu::BatchImpl& b, const Transform& full, float vw, float vh);
 
   Impl() = default;
   Impl(const Impl&) = delete;
   Impl& operator=(const Impl&) = delete;
   ~Impl() {
     release_target();
-    if (program != 0) glDeleteProgram(program);
-    if (area_program != 0) glDeleteProgram(area_program);
-    if (resolve_program != 0) glDeleteProgram(resolve_program);
+    for (GLuint p : {program, area_program[0][0], area_program[0][1], area_program[1][0], area_program[1][1],
+                     resolve.id, composite[0].id, composite[1].id})
+      if (p != 0) glDeleteProgram(p);
     if (quad_vbo != 0) glDeleteBuffers(1, &quad_vbo);
-    if (off_fbo != 0) glDeleteFramebuffers(1, &off_fbo);
-    if (off_tex != 0) glDeleteTextures(1, &off_tex);
+    if (vao != 0) glDeleteVertexArrays(1, &vao);
+    for (Slot& s : slots) {
+      if (s.fbo != 0) glDeleteFramebuffers(1, &s.fbo);
+      if (s.texture != 0) glDeleteTextures(1, &s.texture);
+    }
     if (ms_fbo != 0) glDeleteFramebuffers(1, &ms_fbo);
     if (ms_rb != 0) glDeleteRenderbuffers(1, &ms_rb);
   }
@@ -291,45 +357,83 @@ struct Renderer::Impl {
   }
 };
 
-Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
-  if (glGetString(GL_VERSION) == nullptr) {
-    throw Error(ErrorCode::Gl, "no current GL context (create a HeadlessContext or make one current)");
-  }
-  const bool gles = is_gles();
+// Names Renderer::Impl for the helpers below (a friend of Renderer).
+struct RendererAccess {
+  using Impl = Renderer::Impl;
+};
+
+namespace {
+using RendererImpl = RendererAccess::Impl;
+
+// Compiles and links one of the second pass's programs.
+RendererImpl::QuadProgram quad_program(const char* fragment_source, bool gles, const char* defines, const char* what) {
+  Shader vs(GL_VERTEX_SHADER), fs(GL_FRAGMENT_SHADER);
+  compile(vs, GL_VERTEX_SHADER, shader_source::resolve_vert_glsl, gles);
+  compile(fs, GL_FRAGMENT_SHADER, fragment_source, gles, defines);
+  RendererImpl::QuadProgram q;
+  q.id = link_program(vs, fs, {"a_clip", "a_pixel"}, what);
+  q.texture = glGetUniformLocation(q.id, "u_texture");
+  q.texture_size = glGetUniformLocation(q.id, "u_texture_size");
+  q.rect_origin = glGetUniformLocation(q.id, "u_rect_origin");
+  q.rows = glGetUniformLocation(q.id, "u_rows");
+  q.r = glGetUniformLocation(q.id, "u_r");
+  q.ring = glGetUniformLocation(q.id, "u_ring");
+  q.color = glGetUniformLocation(q.id, "u_color");
+  q.coverage_exponent = glGetUniformLocation(q.id, "u_coverage_exponent");
+  return q;
+}
+}  // namespace
+
+void Renderer::Impl::make_curve_program() {
+  if (program != 0) return;
   Shader vs(GL_VERTEX_SHADER), fs(GL_FRAGMENT_SHADER);
   if (vs.id == 0 || fs.id == 0) throw Error(ErrorCode::Gl, "glCreateShader failed");
   compile(vs, GL_VERTEX_SHADER, shader_source::curve_vert_glsl, gles);
   compile(fs, GL_FRAGMENT_SHADER, shader_source::curve_frag_glsl, gles);
+  program = link_program(vs, fs, {"a_pos", "a_info", "a_offset"}, "curve shader program");
+  curve_u = ProgramUniforms::of(program);
+  u_aa = glGetUniformLocation(program, "u_aa");
+  u_debug = glGetUniformLocation(program, "u_debug");
+}
+
+const Renderer::Impl::QuadProgram& Renderer::Impl::resolve_program() {
+  if (resolve.id == 0) resolve = quad_program(shader_source::resolve_frag_glsl, gles, "", "vbaa filter program");
+  return resolve;
+}
+
+void Renderer::Impl::make_area_programs(bool gamma) {
+  const int g = gamma ? 1 : 0;
+  if (area_program[g][0] != 0) return;
+  for (int curved = 0; curved < 2; ++curved) {
+    Shader vs(GL_VERTEX_SHADER), fs(GL_FRAGMENT_SHADER);
+    compile(vs, GL_VERTEX_SHADER, shader_source::curve_vert_glsl, gles);
+    const std::string defines = std::string("#define CURVETEXT_AREA_CURVED ") + (curved ? "1" : "0") +
+                                "\n#define CURVETEXT_GAMMA " + (gamma ? "1" : "0") + "\n";
+    compile(fs, GL_FRAGMENT_SHADER, shader_source::area_frag_glsl, gles, defines.c_str());
+    area_program[g][curved] = link_program(vs, fs, {"a_pos", "a_info", "a_offset"}, "full antialiasing program");
+    area_u[g][curved] = ProgramUniforms::of(area_program[g][curved]);
+  }
+}
+
+const Renderer::Impl::QuadProgram& Renderer::Impl::composite_program(bool gamma) {
+  QuadProgram& q = composite[gamma ? 1 : 0];
+  if (q.id == 0)
+    q = quad_program(shader_source::composite_frag_glsl, gles,
+                     gamma ? "#define CURVETEXT_GAMMA 1\n" : "#define CURVETEXT_GAMMA 0\n",
+                     "coverage composite program");
+  return q;
+}
+
+Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
+  if (glGetString(GL_VERSION) == nullptr) {
+    throw Error(ErrorCode::Gl, "no current GL context (create a HeadlessContext or make one current)");
+  }
   Impl& r = *impl_;
-  r.program = link_program(vs, fs, {"a_pos", "a_info"}, "curve shader program");
-  r.curve_u = ProgramUniforms::of(r.program);
-  r.u_aa = glGetUniformLocation(r.program, "u_aa");
-  r.u_debug = glGetUniformLocation(r.program, "u_debug");
-  r.gles = gles;
-
-  {
-    Shader avs(GL_VERTEX_SHADER), afs(GL_FRAGMENT_SHADER);
-    compile(avs, GL_VERTEX_SHADER, shader_source::curve_vert_glsl, gles);
-    compile(afs, GL_FRAGMENT_SHADER, shader_source::area_frag_glsl, gles);
-    r.area_program = link_program(avs, afs, {"a_pos", "a_info"}, "full antialiasing program");
-    r.area_u = ProgramUniforms::of(r.area_program);
-  }
-
-  // The vbaa / msaa filter pass.
-  {
-    Shader rvs(GL_VERTEX_SHADER), rfs(GL_FRAGMENT_SHADER);
-    compile(rvs, GL_VERTEX_SHADER, shader_source::resolve_vert_glsl, gles);
-    compile(rfs, GL_FRAGMENT_SHADER, shader_source::resolve_frag_glsl, gles);
-    r.resolve_program = link_program(rvs, rfs, {"a_clip", "a_pixel"}, "vbaa/msaa filter program");
-    r.u_r_texture = glGetUniformLocation(r.resolve_program, "u_texture");
-    r.u_r_texture_size = glGetUniformLocation(r.resolve_program, "u_texture_size");
-    r.u_r_rect_origin = glGetUniformLocation(r.resolve_program, "u_rect_origin");
-    r.u_r_r = glGetUniformLocation(r.resolve_program, "u_r");
-    r.u_r_ring = glGetUniformLocation(r.resolve_program, "u_ring");
-    r.u_r_color = glGetUniformLocation(r.resolve_program, "u_color");
-    r.u_r_coverage_exponent = glGetUniformLocation(r.resolve_program, "u_coverage_exponent");
-    glGenBuffers(1, &r.quad_vbo);
-  }
+  r.gles = is_gles();
+  r.info = gpu::ContextInfo::current();
+  // The programs are compiled when a mode first needs them (a process that
+  // draws once, as the CLI does, compiles only its mode's).
+  glGenBuffers(1, &r.quad_vbo);
   GLint max_texture = 0, max_renderbuffer = 0, max_viewport[2] = {0, 0};
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_renderbuffer);
@@ -339,9 +443,10 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
   const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
   int major = 0;
   if (version != nullptr) {
-    const char* digits = gles ? version + 10 : version;  // "OpenGL ES 3.2 ..." or "4.6 ..."
-    if (std::strlen(version) > 10 || !gles) major = std::atoi(digits);
+    const char* digits = r.gles ? version + 10 : version;  // "OpenGL ES 3.2 ..." or "4.6 ..."
+    if (std::strlen(version) > 10 || !r.gles) major = std::atoi(digits);
   }
+  r.single_channel = major >= 3;
   if (major >= 3) {
     GLint samples = 0;
     glGetIntegerv(GL_MAX_SAMPLES, &samples);
@@ -370,52 +475,65 @@ void Renderer::begin(int width, int height, Color background, Blending blending)
                                                 " exceeds the GL maximum of " + std::to_string(limit) +
                                                 " pixels per side");
   }
-  if (r.framebuffer == 0 || r.width != width || r.height != height || r.blending != blending) {
-    r.release_target();
-    glGenTextures(1, &r.texture);
-    glBindTexture(GL_TEXTURE_2D, r.texture);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    // RGBA/UNSIGNED_BYTE is colour-renderable in every GLES2 implementation.
-    // Linear blending: an sRGB texture, which GL decodes before blending and
-    // encodes after (always on in GLES 3; desktop GL needs GL_FRAMEBUFFER_SRGB).
-    if (blending == Blending::Linear)
-      glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    else
-      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    glBindTexture(GL_TEXTURE_2D, 0);
-    if (GLenum err = glGetError(); err != GL_NO_ERROR) {
+  gpu::check_no_pending_error("Renderer::begin");
+  // The framebuffer bound may be the renderer's own from an earlier begin(),
+  // which is about to be replaced: not one to bind again afterwards.
+  GLint bound = 0;
+  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &bound);
+  if (r.framebuffer != 0 && static_cast<GLuint>(bound) == r.framebuffer) glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  {
+    // Everything but the framebuffer binding and viewport this sets up comes
+    // back as the application had it.
+    const gpu::GlStateBackup state(r.info);
+    if (r.framebuffer == 0 || r.width != width || r.height != height || r.blending != blending) {
       r.release_target();
-      throw Error(ErrorCode::Gl, "cannot allocate a " + std::to_string(width) + "x" + std::to_string(height) +
-                                     " framebuffer texture (GL error " + hex(err) + ")");
+      glGenTextures(1, &r.texture);
+      glBindTexture(GL_TEXTURE_2D, r.texture);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+      // RGBA/UNSIGNED_BYTE is colour-renderable in every GLES2 implementation.
+      // Linear blending: an sRGB texture, which GL decodes before blending and
+      // encodes after (always on in GLES 3; desktop GL needs GL_FRAMEBUFFER_SRGB).
+      if (blending == Blending::Linear)
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+      else
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+      glBindTexture(GL_TEXTURE_2D, 0);
+      if (GLenum err = glGetError(); err != GL_NO_ERROR) {
+        r.release_target();
+        throw Error(ErrorCode::Gl, "cannot allocate a " + std::to_string(width) + "x" + std::to_string(height) +
+                                       " framebuffer texture (GL error " + hex(err) + ")");
+      }
+      glGenFramebuffers(1, &r.framebuffer);
+      glBindFramebuffer(GL_FRAMEBUFFER, r.framebuffer);
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, r.texture, 0);
+      const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+      if (status != GL_FRAMEBUFFER_COMPLETE) {
+        r.release_target();
+        throw Error(ErrorCode::Gl, "offscreen framebuffer incomplete (status " + hex(status) + ")");
+      }
+      r.width = width;
+      r.height = height;
+      r.blending = blending;
     }
-    glGenFramebuffers(1, &r.framebuffer);
+    if (!r.gles) {
+      constexpr GLenum kFramebufferSrgb = 0x8DB9;  // GL_FRAMEBUFFER_SRGB (desktop GL only)
+      if (blending == Blending::Linear)
+        glEnable(kFramebufferSrgb);
+      else
+        glDisable(kFramebufferSrgb);
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, r.framebuffer);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, r.texture, 0);
-    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-    if (status != GL_FRAMEBUFFER_COMPLETE) {
-      r.release_target();
-      throw Error(ErrorCode::Gl, "offscreen framebuffer incomplete (status " + hex(status) + ")");
-    }
-    r.width = width;
-    r.height = height;
-    r.blending = blending;
-  }
-  if (!r.gles) {
-    constexpr GLenum kFramebufferSrgb = 0x8DB9;  // GL_FRAMEBUFFER_SRGB (desktop GL only)
-    if (blending == Blending::Linear)
-      glEnable(kFramebufferSrgb);
-    else
-      glDisable(kFramebufferSrgb);
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    const std::array<float, 4> bg = premultiplied(background, blending);
+    glClearColor(bg[0], bg[1], bg[2], bg[3]);
+    glClear(GL_COLOR_BUFFER_BIT);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, r.framebuffer);
   glViewport(0, 0, width, height);
-  glDisable(GL_SCISSOR_TEST);
-  const std::array<float, 4> bg = premultiplied(background, blending);
-  glClearColor(bg[0], bg[1], bg[2], bg[3]);
-  glClear(GL_COLOR_BUFFER_BIT);
 }
 
 void Renderer::draw(const DrawBatch& batch, const Placement& placement, const DrawOptions& options) {
@@ -424,22 +542,19 @@ void Renderer::draw(const DrawBatch& batch, const Placement& placement, const Dr
       !std::isfinite(placement.origin_y)) {
     throw Error(ErrorCode::InvalidArgument, "placement needs a finite non-zero scale and a finite origin");
   }
-  const DrawBatch::Impl& b = batch.impl();
-  if (b.vbo == 0 || b.vertex_count == 0) return;
-
-  // Without begin(), draw into whatever framebuffer and viewport the caller has bound.
-  float vw = static_cast<float>(r.width), vh = static_cast<float>(r.height);
-  if (r.framebuffer != 0) {
-    glBindFramebuffer(GL_FRAMEBUFFER, r.framebuffer);
-    glViewport(0, 0, r.width, r.height);
-  } else {
-    GLint vp[4] = {0, 0, 0, 0};
-    glGetIntegerv(GL_VIEWPORT, vp);
-    vw = static_cast<float>(vp[2]);
-    vh = static_cast<float>(vp[3]);
-  }
-
+  const gpu::BatchImpl& b = DrawBatchAccess::impl(batch);
+  if (b.empty()) return;
   placement.transform.validate();
+  gpu::check_no_pending_error("Renderer::draw");
+
+  // The application's state comes back as it was when this returns or throws.
+  const gpu::GlStateBackup state(r.info);
+  r.bind_own_state();
+  // Into the framebuffer and viewport bound now (the renderer's own after
+  // begin(), else the application's); pixel (0, 0) is the viewport's top left.
+  const float vw = static_cast<float>(state.viewport()[2]), vh = static_cast<float>(state.viewport()[3]);
+  r.target_blending = r.framebuffer != 0 && state.draw_framebuffer() == r.framebuffer ? r.blending : Blending::Srgb;
+
   const double s = placement.scale;
   // Outline units -> pixels (x_px = s x + ox, y_px = oy - s y), then the
   // projective transform.
@@ -449,22 +564,21 @@ void Renderer::draw(const DrawBatch& batch, const Placement& placement, const Dr
     // The paper's Figure 1: its single pass, with what curved triangles discard shown.
     DrawOptions shown = options;
     if (shown.antialiasing != AntiAliasing::None) shown.antialiasing = AntiAliasing::Curves;
-    draw_curves(b, full, vw, vh, shown);
-    draw_debug_edges(b, full, vw, vh);
+    r.draw_curves(b, full, vw, vh, shown);
+    r.draw_debug_edges(b, full, vw, vh);
     return;
   }
   if (options.antialiasing == AntiAliasing::None || options.antialiasing == AntiAliasing::Curves) {
-    draw_curves(b, full, vw, vh, options);
+    r.draw_curves(b, full, vw, vh, options);
     return;
   }
-  GLint target_fbo = 0;
-  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &target_fbo);
-  if (draw_offscreen(b, full, vw, vh, static_cast<GLuint>(target_fbo), options)) return;
+  if (r.draw_offscreen(b, full, vw, vh, state, options)) return;
   // No coverage buffer fits (a block past the GL texture limit, or a
   // perspective that puts part of it behind the eye): the triangles' areas
   // blend straight into the target. Where two triangles split a pixel,
   // source-over blending then loses up to a quarter of it (a + b - ab).
-  draw_area(b, full, vw, vh, premultiplied(options.color, r.blending), options.gamma, options.curve_mode, false);
+  r.draw_area(b, full, vw, vh, premultiplied(options.color, r.target_blending), options.gamma, options.curve_mode,
+              false);
 }
 
 namespace {
@@ -483,10 +597,14 @@ GLfloat coverage_exponent(float gamma) {
                            static_cast<float>(tolerance::kMaxCoverageGamma));
 }
 
-// Binds the batch's vertex buffer to the attributes at locations 0, 1
-// (link_program binds them in order).
-void bind_vertices(const DrawBatch::Impl& b) {
-  glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
+// The curve programs' attributes (link_program binds them in this order):
+// a_pos and a_info from a vertex buffer, a_offset per instance or constant.
+constexpr GLuint kOffsetAttribute = gpu::kConstantAttribute;
+static_assert(kOffsetAttribute == gpu::kVertexAttributes, "a_offset follows a_pos and a_info");
+
+// Points a_pos and a_info at `vbo`'s vertices.
+void bind_vertices(GLuint vbo) {
+  glBindBuffer(GL_ARRAY_BUFFER, vbo);
   const GLsizei stride = static_cast<GLsizei>(sizeof(gpu::Vertex));
   for (GLuint i = 0; i < gpu::kVertexAttributes; ++i) {
     glEnableVertexAttribArray(i);
@@ -496,22 +614,65 @@ void bind_vertices(const DrawBatch::Impl& b) {
 }
 
 void unbind_vertices() {
-  for (GLuint i = 0; i < gpu::kVertexAttributes; ++i) glDisableVertexAttribArray(i);
+  for (GLuint i = 0; i <= kOffsetAttribute; ++i) glDisableVertexAttribArray(i);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
 }
 
-// Draws the batch's triangles with the current program and blending.
-void draw_triangles(const DrawBatch::Impl& b) {
+// Which of a batch's triangles a draw takes.
+enum class Part { All, Interior, Curved };
+
+// The range [first, first + count) of a batch's (or glyph's) indices that
+// `part` takes, of `count` in all with the interior ones first.
+std::pair<std::size_t, std::size_t> part_range(Part part, std::size_t count, std::size_t interior) {
+  if (part == Part::Interior) return {0, interior};
+  if (part == Part::Curved) return {interior, count - interior};
+  return {0, count};
+}
+
+std::size_t index_size(GLenum type) { return type == GL_UNSIGNED_INT ? 4 : type == GL_UNSIGNED_SHORT ? 2 : 0; }
+
+// An instanced block: per distinct glyph, its mesh drawn once per placement,
+// a_offset stepping through the run's offsets.
+void draw_instanced(const gpu::BatchImpl& b, Part part) {
+  glEnableVertexAttribArray(kOffsetAttribute);
+  glVertexAttribDivisor(kOffsetAttribute, 1);
+  for (const gpu::BatchImpl::Run& run : b.runs) {
+    bind_vertices(run.glyph->vbo);
+    glBindBuffer(GL_ARRAY_BUFFER, b.offsets_vbo);
+    glVertexAttribPointer(kOffsetAttribute, 2, GL_FLOAT, GL_FALSE, 0,
+                          reinterpret_cast<const void*>(static_cast<std::uintptr_t>(run.first) * 2 * sizeof(float)));
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, run.glyph->ibo);
+    const auto [first, count] = part_range(part, static_cast<std::size_t>(run.glyph->index_count),
+                                           static_cast<std::size_t>(run.glyph->interior_index_count));
+    if (count == 0) continue;
+    glDrawElementsInstanced(GL_TRIANGLES, static_cast<GLsizei>(count), run.glyph->index_type,
+                            reinterpret_cast<const void*>(first * index_size(run.glyph->index_type)), run.count);
+  }
+  glVertexAttribDivisor(kOffsetAttribute, 0);
+}
+
+// Draws the batch's triangles (those `part` takes) with the current program
+// and blending.
+void draw_triangles(const gpu::BatchImpl& b, Part part = Part::All) {
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_CULL_FACE);  // triangles come in either orientation
-  bind_vertices(b);
-  if (b.index_type != 0) {
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, b.ibo);
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(b.index_count), b.index_type, nullptr);
+  if (b.instanced()) {
+    draw_instanced(b, part);
   } else {
-    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(b.vertex_count));
+    bind_vertices(b.vbo);
+    glDisableVertexAttribArray(kOffsetAttribute);
+    glVertexAttrib2f(kOffsetAttribute, 0.0f, 0.0f);
+    const auto [first, count] = part_range(part, b.index_count, b.interior_index_count);
+    if (count == 0) {
+    } else if (b.index_type != 0) {
+      glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, b.ibo);
+      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count), b.index_type,
+                     reinterpret_cast<const void*>(first * index_size(b.index_type)));
+    } else {
+      glDrawArrays(GL_TRIANGLES, static_cast<GLint>(first), static_cast<GLsizei>(count));
+    }
   }
   unbind_vertices();
   if (GLenum err = glGetError(); err != GL_NO_ERROR) {
@@ -523,31 +684,37 @@ void draw_triangles(const DrawBatch::Impl& b) {
 
 // Full AA: every triangle's exact area per pixel (shaders/area.frag.glsl),
 // added into the bound framebuffer (`accumulate`) or blended over it.
-void Renderer::draw_area(const DrawBatch::Impl& b, const Transform& full, float vw, float vh,
-                         const std::array<float, 4>& color, float gamma, CurveMode curve_mode, bool accumulate) {
-  Impl& r = *impl_;
-  glUseProgram(r.area_program);
-  set_view(r.area_u.transform, r.area_u.viewport, full, vw, vh);
-  glUniform1f(r.area_u.fringe_px, tolerance::kFringeWidthPx);
-  glUniform4f(r.area_u.color, color[0], color[1], color[2], color[3]);
-  glUniform1f(r.area_u.coverage_exponent, coverage_exponent(gamma));
-  glUniform1i(r.area_u.curve_mode, curve_mode == CurveMode::Paper ? 1 : 0);
+void Renderer::Impl::draw_area(const gpu::BatchImpl& b, const Transform& full, float vw, float vh,
+                               const std::array<float, 4>& color, float gamma, CurveMode curve_mode, bool accumulate) {
+  Impl& r = *this;
   glEnable(GL_BLEND);
   if (accumulate)
     glBlendFunc(GL_ONE, GL_ONE);
   else
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  draw_triangles(b);
+  const bool with_gamma = coverage_exponent(gamma) != 1.0f;
+  r.make_area_programs(with_gamma);
+  for (int curved = 0; curved < 2; ++curved) {
+    const ProgramUniforms& u = r.area_u[with_gamma][curved];
+    glUseProgram(r.area_program[with_gamma][curved]);
+    set_view(u.transform, u.viewport, full, vw, vh);
+    glUniform1f(u.fringe_px, tolerance::kFringeWidthPx);
+    glUniform4f(u.color, color[0], color[1], color[2], color[3]);
+    glUniform1f(u.coverage_exponent, coverage_exponent(gamma));
+    glUniform1i(u.curve_mode, curve_mode == CurveMode::Paper ? 1 : 0);
+    draw_triangles(b, curved ? Part::Curved : Part::Interior);
+  }
 }
 
 // none and curves (and msaa's in/out pass): the paper's single pass.
-void Renderer::draw_curves(const DrawBatch::Impl& b, const Transform& full, float vw, float vh,
-                           const DrawOptions& options) {
-  Impl& r = *impl_;
+void Renderer::Impl::draw_curves(const gpu::BatchImpl& b, const Transform& full, float vw, float vh,
+                                 const DrawOptions& options) {
+  Impl& r = *this;
+  r.make_curve_program();
   glUseProgram(r.program);
   set_view(r.curve_u.transform, r.curve_u.viewport, full, vw, vh);
   glUniform1f(r.curve_u.fringe_px, 0.0f);  // triangles as they are
-  const std::array<float, 4> color = premultiplied(options.color, r.blending);
+  const std::array<float, 4> color = premultiplied(options.color, r.target_blending);
   glUniform4f(r.curve_u.color, color[0], color[1], color[2], color[3]);
   glUniform1f(r.curve_u.coverage_exponent, coverage_exponent(options.gamma));
   glUniform1i(r.u_debug, options.debug ? 1 : 0);
@@ -560,17 +727,72 @@ void Renderer::draw_curves(const DrawBatch::Impl& b, const Transform& full, floa
 
 int Renderer::msaa_samples() const { return impl_->max_samples; }
 
+namespace {
+
+// Draws a tile's coverage texture into the target as a quad over the tile's
+// pixels: one fetch per pixel (full, msaa), or vbaa's filter over the r x r
+// texels of each pixel and their ring.
+void composite_tile(RendererImpl& r, const RendererImpl::Slot& slot, int tx, int ty, int w, int h, float vw, float vh,
+                    const DrawOptions& options, bool filter) {
+  const RendererImpl::QuadProgram& q =
+      filter ? r.resolve_program() : r.composite_program(coverage_exponent(options.gamma) != 1.0f);
+  const int factor = slot.key.factor;
+  glUseProgram(q.id);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, slot.texture);
+  glUniform1i(q.texture, 0);
+  glUniform2f(q.texture_size, static_cast<float>(slot.w), static_cast<float>(slot.h));
+  glUniform2f(q.rect_origin, static_cast<float>(slot.key.x0), static_cast<float>(slot.key.y0));
+  glUniform1f(q.rows, static_cast<float>(slot.key.h));
+  if (filter) {
+    glUniform1f(q.r, static_cast<float>(factor));
+    glUniform1f(q.ring, std::clamp(options.vbaa_ring, 0.0f, 1.0f));
+  }
+  const std::array<float, 4> color = premultiplied(options.color, r.target_blending);
+  glUniform4f(q.color, color[0], color[1], color[2], color[3]);
+  glUniform1f(q.coverage_exponent, coverage_exponent(options.gamma));
+  const float x0 = static_cast<float>(tx), x1 = static_cast<float>(tx + w);
+  const float y0 = static_cast<float>(ty), y1 = static_cast<float>(ty + h);
+  const float cx0 = 2.0f * x0 / vw - 1.0f, cx1 = 2.0f * x1 / vw - 1.0f;
+  const float cy0 = 1.0f - 2.0f * y0 / vh, cy1 = 1.0f - 2.0f * y1 / vh;
+  // Each corner as (clip x, clip y, pixel x, pixel y down); the pixel
+  // position reaches the fragment stage as a highp varying (resolve.vert.glsl).
+  const GLfloat quad[24] = {cx0, cy0, x0, y0, cx1, cy0, x1, y0, cx1, cy1, x1, y1,
+                            cx0, cy0, x0, y0, cx1, cy1, x1, y1, cx0, cy1, x0, y1};
+  glBindBuffer(GL_ARRAY_BUFFER, r.quad_vbo);
+  glBufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STREAM_DRAW);
+  glEnableVertexAttribArray(0);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 4 * sizeof(GLfloat), nullptr);
+  glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, 4 * sizeof(GLfloat),
+                        reinterpret_cast<const void*>(2 * sizeof(GLfloat)));
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  glDrawArrays(GL_TRIANGLES, 0, 6);
+  glDisableVertexAttribArray(0);
+  glDisableVertexAttribArray(1);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+}  // namespace
+
 // full, vbaa and msaa: the block's projected bounding box (plus a border) is
-// drawn into an offscreen texture: for full, the sum of its triangles' exact
-// areas per pixel; for vbaa (paper section 5) the same r times larger; for
-// msaa, an in/out pass into a multisampled renderbuffer resolved into it.
-// Then a quad over the box filters it into the target. The offscreen pass is
-// kept and reused while the batch, its transform, the box and the mode stay
-// the same. False when it cannot be done here (the caller blends the areas
-// directly).
-bool Renderer::draw_offscreen(const DrawBatch::Impl& b, const Transform& full, float vw, float vh, GLuint target_fbo,
-                              const DrawOptions& options) {
-  Impl& r = *impl_;
+// drawn into offscreen coverage textures: for full, the sum of its
+// triangles' exact areas per pixel; for vbaa (paper section 5) the same r
+// times larger; for msaa, an in/out pass into a multisampled renderbuffer
+// resolved into one. A box larger than a texture tile
+// (tolerance::kCoverageTileTexels, kMsaaTileTexels) is done tile by tile, so
+// the memory these passes hold is bounded whatever the block's size or r.
+// Each tile has an apron of a pixel all round (vbaa's ring reads it). Then a
+// quad per tile puts the coverage into the target. A tile's pass is kept and
+// reused while the batch, its transform, the tile and the mode stay the same
+// (up to tolerance::kCoverageSlots passes, so a static block stays cached
+// beside a changing label). False when it cannot be done here (the caller
+// blends the areas directly).
+bool Renderer::Impl::draw_offscreen(const gpu::BatchImpl& b, const Transform& full, float vw, float vh,
+                                    const gpu::GlStateBackup& target, const DrawOptions& options) {
+  Impl& r = *this;
   const bool msaa = options.antialiasing == AntiAliasing::Msaa && r.max_samples >= 2;
   const bool vbaa = options.antialiasing == AntiAliasing::Vbaa;
   if (b.bounds.empty()) return true;
@@ -590,80 +812,66 @@ bool Renderer::draw_offscreen(const DrawBatch::Impl& b, const Transform& full, f
   const int x1 = std::min(static_cast<int>(vw), static_cast<int>(std::ceil(box.max.x + border)));
   const int y1 = std::min(static_cast<int>(vh), static_cast<int>(std::ceil(box.max.y + border)));
   if (x1 <= x0 || y1 <= y0) return true;  // off screen
-  const int w = x1 - x0, h = y1 - y0;
-  int factor = vbaa ? std::clamp(options.vbaa_factor, 1, 8) : 1;
-  // Degrade gracefully: a smaller factor where the texture would pass the GL
-  // maximum (factor 1 is full).
-  while (factor > 1 && (w * factor > r.max_offscreen || h * factor > r.max_offscreen)) --factor;
-  if (w * factor > r.max_offscreen || h * factor > r.max_offscreen) return false;
-  const int tw = w * factor, th = h * factor;
-
-  Impl::OffscreenKey key{b.serial, full.m, x0, y0, w, h, factor, msaa, options.curve_mode == CurveMode::Paper};
-  if (!(r.offscreen_valid && key == r.offscreen_key)) {
-    r.ensure_offscreen(tw, th, msaa);
-    // Draw the block's coverage (white, so alpha holds it) into the texture,
-    // or the multisampled renderbuffer, with the box's origin at (0, 0).
-    glBindFramebuffer(GL_FRAMEBUFFER, msaa ? r.ms_fbo : r.off_fbo);
-    glViewport(0, 0, tw, th);
-    glDisable(GL_SCISSOR_TEST);
-    glClearColor(0, 0, 0, 0);
-    glClear(GL_COLOR_BUFFER_BIT);
-    const Transform to_texture = Transform::scale(factor, factor) * Transform::translation(-x0, -y0) * full;
-    if (msaa) {
-      DrawOptions pass = options;
-      pass.color = Color{1, 1, 1, 1};
-      pass.antialiasing = AntiAliasing::None;
-      pass.gamma = 1.0f;  // applied after the filter
-      const Blending target_blending = r.blending;
-      r.blending = Blending::Srgb;  // the coverage texture is plain RGBA
-      draw_curves(b, to_texture, static_cast<float>(tw), static_cast<float>(th), pass);
-      r.blending = target_blending;
-      r.resolve_multisample(tw, th);
-    } else {
-      draw_area(b, to_texture, static_cast<float>(tw), static_cast<float>(th), {1.0f, 1.0f, 1.0f, 1.0f}, 1.0f,
-                options.curve_mode, true);
+  const int factor = vbaa ? std::clamp(options.vbaa_factor, 1, 8) : 1;
+  // Tiles hold at most `area` texels (a long line of text is one wide tile),
+  // with sides within the GL maximum; the apron is a pixel on each side.
+  const long long side = tolerance::kCoverageTileTexels;
+  const long long area =
+      msaa ? static_cast<long long>(tolerance::kMsaaTileTexels) * tolerance::kMsaaTileTexels : side * side;
+  const long long f = factor;
+  const int tile_w = static_cast<int>(std::min<long long>({x1 - x0, r.max_offscreen / f - 2, area / (3 * f * f) - 2}));
+  const int tile_h =
+      static_cast<int>(std::min<long long>({y1 - y0, r.max_offscreen / f - 2, area / ((tile_w + 2) * f) / f - 2}));
+  if (tile_w < 1 || tile_h < 1) return false;
+  const bool paper = options.curve_mode == CurveMode::Paper;
+  for (int ty = y0; ty < y1; ty += tile_h) {
+    for (int tx = x0; tx < x1; tx += tile_w) {
+      const int w = std::min(tile_w, x1 - tx), h = std::min(tile_h, y1 - ty);
+      // The tile's texels: its pixels and the apron, r per pixel.
+      const Impl::OffscreenKey key{b.serial,         full.m, tx - 1, ty - 1, (w + 2) * factor,
+                                   (h + 2) * factor, factor, msaa,   paper};
+      bool hit = false;
+      Impl::Slot& slot = r.slot_for(key, key.w, key.h, hit);
+      if (!hit) {
+        if (msaa) r.ensure_multisample(key.w, key.h);
+        glBindFramebuffer(GL_FRAMEBUFFER, msaa ? r.ms_fbo : slot.fbo);
+        glViewport(0, 0, key.w, key.h);
+        glDisable(GL_SCISSOR_TEST);  // the application's scissor is for its target
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        // A slot grown for a larger tile is cleared within this one only. (A
+        // scissored clear is a drawn quad on some drivers: Mesa compiles a
+        // shader for its first one, so a slot made for this tile is cleared whole.)
+        const bool larger = slot.w > Impl::round_up(key.w) || slot.h > Impl::round_up(key.h);
+        if (larger) {
+          glEnable(GL_SCISSOR_TEST);
+          glScissor(0, 0, key.w, key.h);
+        }
+        glClearColor(0, 0, 0, 0);
+        glClear(GL_COLOR_BUFFER_BIT);
+        if (larger) glDisable(GL_SCISSOR_TEST);
+        const Transform to_texture = Transform::scale(factor, factor) * Transform::translation(-key.x0, -key.y0) * full;
+        const float kw = static_cast<float>(key.w), kh = static_cast<float>(key.h);
+        if (msaa) {
+          DrawOptions pass = options;
+          pass.color = Color{1, 1, 1, 1};
+          pass.antialiasing = AntiAliasing::None;
+          pass.gamma = 1.0f;  // applied by the composite
+          const Blending drawn_blending = r.target_blending;
+          r.target_blending = Blending::Srgb;  // the coverage texture is plain RGBA
+          draw_curves(b, to_texture, kw, kh, pass);
+          r.target_blending = drawn_blending;
+          r.resolve_multisample(slot, key.w, key.h);
+        } else {
+          draw_area(b, to_texture, kw, kh, {1.0f, 1.0f, 1.0f, 1.0f}, 1.0f, options.curve_mode, true);
+        }
+        slot.key = key;
+        slot.valid = true;
+        ++r.offscreen_passes;
+      }
+      target.apply_target();
+      composite_tile(r, slot, tx, ty, w, h, vw, vh, options, vbaa && factor > 1);
     }
-    r.offscreen_key = key;
-    r.offscreen_valid = true;
-    ++r.offscreen_passes;
   }
-
-  // The filter pass into the target, over the box only.
-  glBindFramebuffer(GL_FRAMEBUFFER, target_fbo);
-  glViewport(0, 0, static_cast<GLsizei>(vw), static_cast<GLsizei>(vh));
-  glUseProgram(r.resolve_program);
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, r.off_tex);
-  glUniform1i(r.u_r_texture, 0);
-  glUniform2f(r.u_r_texture_size, static_cast<float>(tw), static_cast<float>(th));
-  glUniform2f(r.u_r_rect_origin, static_cast<float>(x0), static_cast<float>(y0));
-  glUniform1f(r.u_r_r, static_cast<float>(factor));
-  glUniform1f(r.u_r_ring, vbaa && factor > 1 ? std::clamp(options.vbaa_ring, 0.0f, 1.0f) : 0.0f);
-  const std::array<float, 4> color = premultiplied(options.color, r.blending);
-  glUniform4f(r.u_r_color, color[0], color[1], color[2], color[3]);
-  glUniform1f(r.u_r_coverage_exponent, coverage_exponent(options.gamma));
-  const float cx0 = 2.0f * static_cast<float>(x0) / vw - 1.0f, cx1 = 2.0f * static_cast<float>(x1) / vw - 1.0f;
-  const float cy0 = 1.0f - 2.0f * static_cast<float>(y0) / vh, cy1 = 1.0f - 2.0f * static_cast<float>(y1) / vh;
-  // Each corner as (clip x, clip y, pixel x, pixel y down); the pixel
-  // position reaches the fragment stage as a highp varying (resolve.vert.glsl).
-  const GLfloat px0 = static_cast<GLfloat>(x0), px1 = static_cast<GLfloat>(x1);
-  const GLfloat py0 = static_cast<GLfloat>(y0), py1 = static_cast<GLfloat>(y1);
-  const GLfloat quad[24] = {cx0, cy0, px0, py0, cx1, cy0, px1, py0, cx1, cy1, px1, py1,
-                            cx0, cy0, px0, py0, cx1, cy1, px1, py1, cx0, cy1, px0, py1};
-  glBindBuffer(GL_ARRAY_BUFFER, r.quad_vbo);
-  glBufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STREAM_DRAW);
-  glEnableVertexAttribArray(0);
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 4 * sizeof(GLfloat), nullptr);
-  glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, 4 * sizeof(GLfloat),
-                        reinterpret_cast<const void*>(2 * sizeof(GLfloat)));
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  glDrawArrays(GL_TRIANGLES, 0, 6);
-  glDisableVertexAttribArray(0);
-  glDisableVertexAttribArray(1);
-  glBindBuffer(GL_ARRAY_BUFFER, 0);
-  glBindTexture(GL_TEXTURE_2D, 0);
   if (GLenum err = glGetError(); err != GL_NO_ERROR) {
     throw Error(ErrorCode::Gl, std::string(msaa   ? "msaa"
                                            : vbaa ? "vbaa"
@@ -676,8 +884,9 @@ bool Renderer::draw_offscreen(const DrawBatch::Impl& b, const Transform& full, f
 // --debug: every triangle's edges in a flat colour (the curve program with
 // u_debug = 2 draws the triangles themselves and keeps only the pixels within
 // a pixel of an edge), over what draw_curves drew.
-void Renderer::draw_debug_edges(const DrawBatch::Impl& b, const Transform& full, float vw, float vh) {
-  Impl& r = *impl_;
+void Renderer::Impl::draw_debug_edges(const gpu::BatchImpl& b, const Transform& full, float vw, float vh) {
+  Impl& r = *this;
+  r.make_curve_program();
   glUseProgram(r.program);
   set_view(r.curve_u.transform, r.curve_u.viewport, full, vw, vh);
   glUniform1f(r.curve_u.fringe_px, 0.0f);  // the triangles themselves, not grown
@@ -695,10 +904,10 @@ std::size_t Renderer::offscreen_passes() const { return impl_->offscreen_passes;
 Image Renderer::read_pixels() {
   Impl& r = *impl_;
   if (r.framebuffer == 0) throw Error(ErrorCode::InvalidArgument, "read_pixels needs begin() first");
-  glBindFramebuffer(GL_FRAMEBUFFER, r.framebuffer);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  gpu::check_no_pending_error("Renderer::read_pixels");
+  const gpu::GlStateBackup state(r.info);
   Image gl_rows(r.width, r.height);
-  glReadPixels(0, 0, r.width, r.height, GL_RGBA, GL_UNSIGNED_BYTE, gl_rows.rgba.data());
+  gpu::read_rgba(r.info, r.framebuffer, r.width, r.height, gl_rows.rgba.data());
   if (GLenum err = glGetError(); err != GL_NO_ERROR) {
     throw Error(ErrorCode::Gl, "glReadPixels failed (GL error " + hex(err) + ")");
   }

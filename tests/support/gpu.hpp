@@ -8,8 +8,16 @@
 
 namespace curvetext::test {
 
+// The context kind of the GL tests: CURVETEXT_TEST_CONTEXT=gles2 (default),
+// gles3, gl-core or gl-compat (tests/CMakeLists.txt runs them in several).
+ContextKind test_context_kind();
+// Whether this run asked Mesa for OpenGL ES 2.0 (MESA_GLES_VERSION_OVERRIDE=2.0,
+// as tests/CMakeLists.txt does for the "gles2." runs): the tests then check
+// that they really got it.
+bool expects_gles2();
+
 struct Gpu {
-  HeadlessContext context = HeadlessContext::create();
+  HeadlessContext context = HeadlessContext::create(test_context_kind());
   Renderer renderer;
   GlyphCache cache;
 };

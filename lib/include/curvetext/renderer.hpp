@@ -4,17 +4,14 @@
 // without one.
 #pragma once
 
-#include <array>
-#include <cstdint>
+#include <cstddef>
 #include <memory>
-#include <string>
-#include <vector>
 
 #include "curvetext/color.hpp"
-#include "curvetext/font.hpp"
+#include "curvetext/draw_batch.hpp"
+#include "curvetext/export.hpp"
+#include "curvetext/glyph_cache.hpp"
 #include "curvetext/image.hpp"
-#include "curvetext/mesh.hpp"
-#include "curvetext/shaping.hpp"
 #include "curvetext/transform.hpp"
 
 namespace curvetext {
@@ -43,23 +40,12 @@ enum class Blending {
            // (GLES 3 / desktop GL 3); colours are sRGB and converted
 };
 
-AntiAliasing parse_antialiasing(std::string_view text);
-Blending parse_blending(std::string_view text);  // "srgb" | "linear"
-// vbaa's filter: "box" (ring 0), "paper" (tolerance::kVbaaPaperRing) or a
-// ring weight from 0 to 1. Throws Error(InvalidArgument).
-float parse_vbaa_filter(std::string_view text);
-// Coverage gamma: finite, within [kMinCoverageGamma, kMaxCoverageGamma].
-// Throws Error(InvalidArgument) naming `what`.
-void check_coverage_gamma(double gamma,
-                          std::string_view what = "gamma");  // "none" | "curves" | "full" | "vbaa" | "msaa" | "auto"
-CurveMode parse_curve_mode(std::string_view text);           // "exact" | "paper"
-
 // Maps outline units (y up) to framebuffer pixels (y down, pixel (i,j) covers
 // [i,i+1]x[j,j+1]):  x_px = scale * x + origin_x,  y_px = origin_y - scale * y.
 // Then `transform` (rotation, scale, skew, perspective; identity by
 // default) maps those pixels to the framebuffer's.
 struct Placement {
-  double scale = 1.0;
+  double scale = 1.0;  // pixels per outline unit, not 0
   double origin_x = 0.0;
   double origin_y = 0.0;
   Transform transform;
@@ -69,8 +55,9 @@ struct Placement {
       : scale(scale_), origin_x(origin_x_), origin_y(origin_y_), transform(transform_) {}
 };
 
+// How Renderer::draw draws one batch.
 struct DrawOptions {
-  Color color{0, 0, 0, 1};
+  Color color{0, 0, 0, 1};  // straight alpha, sRGB
   AntiAliasing antialiasing = AntiAliasing::Full;
   CurveMode curve_mode = CurveMode::Exact;
   // vbaa: texels per pixel of the offscreen pass (1..8) and the weight of the
@@ -79,7 +66,8 @@ struct DrawOptions {
   float vbaa_ring = 0.0f;
   // Coverage is raised to 1/gamma before blending: above 1 edge pixels get
   // more ink (dark text on light looks heavier, small text more contrast),
-  // below 1 less. 1 (default) leaves exact area coverage.
+  // below 1 less. 1 (default) leaves exact area coverage. Clamped to
+  // [tolerance::kMinCoverageGamma, kMaxCoverageGamma].
   float gamma = 1.0f;
   // Shows the method at work (paper Figure 1): pixels a curved triangle
   // discards (outside its curve) in orange, and every triangle's edges in
@@ -91,95 +79,70 @@ struct DrawOptions {
       : color(color_), antialiasing(aa), curve_mode(mode) {}
 };
 
-// Bytes `mesh` takes in GPU vertex and index buffers once packed (interior and
-// curved triangles, each grown for antialiasing; 32-byte vertices, 16-bit
-// indices up to 65,536 vertices, else 32-bit), as DrawBatch uploads it.
-std::size_t gpu_bytes(const Mesh& mesh);
-
-// Meshes packed for the GPU, per glyph, keyed by (font cache key, glyph, level
-// of detail), with a memory budget (least recently used glyphs are dropped).
-class GlyphCache {
+// Compiled shaders, offscreen coverage textures for full / vbaa / msaa, and
+// optionally a framebuffer of its own (begin). Owns those GL objects: they
+// belong to the context current at construction, which must be current
+// whenever the renderer is used or destroyed. Not thread-safe: one thread
+// (and its context) at a time; distinct renderers may be used on distinct
+// threads with distinct contexts.
+//
+// A guest in the application's context (GLES 2, GLES 3, desktop GL 3.3+
+// core or compatibility): draw(), begin() and read_pixels() read the state
+// they change and put it back before returning, also when they throw: the
+// program, vertex array object (curvetext draws with its own where the
+// context has them; on GLES 2, vertex attributes 0 to 2: arrays, pointers,
+// buffers), array and element buffer bindings, attribute 2's current value,
+// the draw and read framebuffers, renderbuffer, active texture and texture
+// unit 0's 2D binding, viewport, scissor test and box, blend enable,
+// equations and functions, depth, stencil and cull-face tests, rasterizer
+// discard, primitive restart, colour mask, clear colour, and the pixel pack
+// state. Exceptions: begin() leaves the renderer's framebuffer bound and the
+// viewport on it (its purpose); on desktop GL with Blending::Linear it enables
+// GL_FRAMEBUFFER_SRGB. Buffers a DrawBatch uploads leave the bindings as
+// they were. A GL error the application left pending when a call begins is
+// not taken for curvetext's: the call throws Error(Gl) saying so, before
+// changing anything, and the error flag is then clear.
+class CURVETEXT_API Renderer {
  public:
-  explicit GlyphCache(std::size_t budget_bytes = 64u << 20);
-  ~GlyphCache();
-  GlyphCache(const GlyphCache&) = delete;
-  GlyphCache& operator=(const GlyphCache&) = delete;
-
-  struct Stats {
-    std::size_t glyphs = 0;
-    std::size_t bytes = 0;
-    std::size_t hits = 0;
-    std::size_t misses = 0;
-  };
-  Stats stats() const;
-
-  struct Impl;
-  Impl& impl() { return *impl_; }
-
- private:
-  std::unique_ptr<Impl> impl_;
-};
-
-// One vertex buffer and one index buffer drawn with one draw call. Built from shaped text (one
-// font) or from arbitrary meshes; moving or scaling it changes only uniforms.
-class DrawBatch {
- public:
-  // Glyph meshes from `cache` (built on a miss at the level of detail for
-  // `pixels_per_em`), placed at the shaped pen positions from pen (0,0).
-  static DrawBatch from_text(GlyphCache& cache, const Font& font, const ShapedLine& line, double pixels_per_em);
-  // One mesh at offset (0,0).
-  static DrawBatch from_mesh(const Mesh& mesh);
-
-  DrawBatch(DrawBatch&&) noexcept;
-  DrawBatch& operator=(DrawBatch&&) noexcept;
-  ~DrawBatch();
-
-  std::size_t vertex_count() const;  // in the vertex buffer
-  std::size_t gpu_bytes() const;     // vertex and index buffers
-
-  struct Impl;
-  Impl& impl() const { return *impl_; }
-
- private:
-  friend struct DrawBatchAccess;  // lib/gpu/batch_impl.hpp
-  explicit DrawBatch(std::unique_ptr<Impl> impl);
-  std::unique_ptr<Impl> impl_;
-};
-
-// Compiled shaders and an offscreen RGBA8 framebuffer. Needs a current GLES2
-// (or desktop GL) context; throws Error(Gl) when shaders fail to compile.
-class Renderer {
- public:
+  // Needs a current GLES2 (or later, or desktop GL 3.3) context. Throws
+  // Error(Gl) when there is none. Each mode's shaders are compiled on the
+  // first draw that needs them: that draw throws Error(Gl) if one fails to
+  // compile or link.
   Renderer();
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  // Binds an offscreen framebuffer of this size (throws Error(InvalidArgument)
-  // above the GL maximum) and clears it to `background`.
+  // Binds the renderer's own RGBA8 framebuffer of width x height pixels
+  // (made again when the size or blending changes), sets the viewport to it
+  // and clears it to `background`. Throws Error(InvalidArgument) for a size
+  // that is not positive or above the GL maximum (or
+  // tolerance::kMaxImageSidePx), Error(Gl) when it cannot be allocated.
   void begin(int width, int height, Color background, Blending blending = Blending::Srgb);
-  // Premultiplied source-over blending of `color` * coverage.
+  // Draws `batch` with premultiplied source-over blending of `options.color`
+  // times coverage into the framebuffer bound now (begin()'s, or the
+  // application's), within its viewport, whose top-left pixel is (0, 0) of
+  // the placement, and its scissor box and colour mask. `batch` must have been built
+  // with this context (or one sharing with it). Throws
+  // Error(InvalidArgument) for a non-finite or zero scale, a non-finite
+  // origin or a transform Transform::validate refuses, Error(Gl) when a GL
+  // call fails.
   void draw(const DrawBatch& batch, const Placement& placement, const DrawOptions& options);
   // Samples per pixel msaa uses here: GL_MAX_SAMPLES capped at 16 (llvmpipe
   // offers 4); 0 where the context has no multisampled renderbuffers.
   int msaa_samples() const;
-  // The framebuffer as straight-alpha RGBA (sRGB encoded), row 0 at the top.
+  // begin()'s framebuffer as straight-alpha RGBA (sRGB encoded), row 0 at
+  // the top; a new image the caller owns. Throws Error(InvalidArgument)
+  // without begin(), Error(Gl) when reading fails.
   Image read_pixels();
   // How many times full / vbaa / msaa drew their offscreen pass (a draw of
   // the same batch with the same transform into the same box reuses the
   // last one).
   std::size_t offscreen_passes() const;
 
-  struct Impl;
-
  private:
-  void draw_curves(const DrawBatch::Impl& batch, const Transform& full, float width, float height,
-                   const DrawOptions& options);
-  bool draw_offscreen(const DrawBatch::Impl& batch, const Transform& full, float width, float height,
-                      unsigned target_framebuffer, const DrawOptions& options);
-  void draw_area(const DrawBatch::Impl& batch, const Transform& full, float width, float height,
-                 const std::array<float, 4>& color, float gamma, CurveMode curve_mode, bool accumulate);
-  void draw_debug_edges(const DrawBatch::Impl& batch, const Transform& full, float width, float height);
+  friend struct RendererAccess;  // lib/gpu/renderer.cpp
+  struct CURVETEXT_HIDDEN Impl;
   std::unique_ptr<Impl> impl_;
 };
 

@@ -1,0 +1,314 @@
+// The library is a guest in the application's GL context (DESIGN.md section
+// 5): in every context kind and every antialiasing mode, a draw leaves the
+// application's GL state as it found it, draws into the application's
+// framebuffer within its viewport and scissor, and does not take an error the
+// application left pending for its own.
+#include <GLES3/gl3.h>
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cctype>
+#include <cstdint>
+#include <utility>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "curvetext/error.hpp"
+#include "curvetext/font.hpp"
+#include "curvetext/headless.hpp"
+#include "curvetext/renderer.hpp"
+#include "curvetext/shaping.hpp"
+#include "support/fonts.hpp"
+#include "support/gpu.hpp"
+
+namespace curvetext {
+namespace {
+
+bool desktop() {
+  const char* v = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+  return std::string(v).rfind("OpenGL ES", 0) != 0;
+}
+bool gl3() {
+  GLint major = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &major);
+  glGetError();  // GLES 2 has no GL_MAJOR_VERSION
+  return major >= 3;
+}
+
+// Everything the state contract covers, as glGet reports it, by name.
+struct State {
+  std::vector<std::pair<std::string, double>> values;
+
+  void add(const std::string& name, GLint v) { values.emplace_back(name, v); }
+  void addf(const std::string& name, GLfloat v) { values.emplace_back(name, v); }
+
+  static State read() {
+    State s;
+    auto i = [&](const char* name, GLenum e) {
+      GLint v = 0;
+      glGetIntegerv(e, &v);
+      s.add(name, v);
+    };
+    auto on = [&](const char* name, GLenum e) { s.add(name, glIsEnabled(e)); };
+    i("program", GL_CURRENT_PROGRAM);
+    i("array buffer", GL_ARRAY_BUFFER_BINDING);
+    i("element buffer", GL_ELEMENT_ARRAY_BUFFER_BINDING);
+    i("renderbuffer", GL_RENDERBUFFER_BINDING);
+    i("active texture", GL_ACTIVE_TEXTURE);
+    i("texture 2d (active unit)", GL_TEXTURE_BINDING_2D);
+    i("blend src rgb", GL_BLEND_SRC_RGB);
+    i("blend dst rgb", GL_BLEND_DST_RGB);
+    i("blend src alpha", GL_BLEND_SRC_ALPHA);
+    i("blend dst alpha", GL_BLEND_DST_ALPHA);
+    i("blend equation rgb", GL_BLEND_EQUATION_RGB);
+    i("blend equation alpha", GL_BLEND_EQUATION_ALPHA);
+    on("blend", GL_BLEND);
+    on("depth test", GL_DEPTH_TEST);
+    on("stencil test", GL_STENCIL_TEST);
+    on("cull face", GL_CULL_FACE);
+    on("scissor test", GL_SCISSOR_TEST);
+    i("pack alignment", GL_PACK_ALIGNMENT);
+    i("unpack alignment", GL_UNPACK_ALIGNMENT);
+    GLint box[4];
+    glGetIntegerv(GL_VIEWPORT, box);
+    for (int k = 0; k < 4; ++k) s.add("viewport " + std::to_string(k), box[k]);
+    glGetIntegerv(GL_SCISSOR_BOX, box);
+    for (int k = 0; k < 4; ++k) s.add("scissor box " + std::to_string(k), box[k]);
+    GLboolean mask[4];
+    glGetBooleanv(GL_COLOR_WRITEMASK, mask);
+    for (int k = 0; k < 4; ++k) s.add("colour mask " + std::to_string(k), mask[k]);
+    GLfloat clear[4];
+    glGetFloatv(GL_COLOR_CLEAR_VALUE, clear);
+    for (int k = 0; k < 4; ++k) s.addf("clear colour " + std::to_string(k), clear[k]);
+    GLint unit = 0;
+    glGetIntegerv(GL_ACTIVE_TEXTURE, &unit);
+    glActiveTexture(GL_TEXTURE0);
+    i("texture 2d (unit 0)", GL_TEXTURE_BINDING_2D);
+    glActiveTexture(static_cast<GLenum>(unit));
+    for (GLuint a = 0; a < 3; ++a) {
+      const std::string n = "attribute " + std::to_string(a) + " ";
+      GLint v = 0;
+      glGetVertexAttribiv(a, GL_VERTEX_ATTRIB_ARRAY_ENABLED, &v);
+      s.add(n + "enabled", v);
+      glGetVertexAttribiv(a, GL_VERTEX_ATTRIB_ARRAY_SIZE, &v);
+      s.add(n + "size", v);
+      glGetVertexAttribiv(a, GL_VERTEX_ATTRIB_ARRAY_STRIDE, &v);
+      s.add(n + "stride", v);
+      glGetVertexAttribiv(a, GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING, &v);
+      s.add(n + "buffer", v);
+      void* p = nullptr;
+      glGetVertexAttribPointerv(a, GL_VERTEX_ATTRIB_ARRAY_POINTER, &p);
+      s.add(n + "pointer", static_cast<GLint>(reinterpret_cast<std::uintptr_t>(p)));
+      if (a != 0) {  // attribute 0's current value cannot be queried in a compatibility profile
+        GLfloat cur[4];
+        glGetVertexAttribfv(a, GL_CURRENT_VERTEX_ATTRIB, cur);
+        for (int k = 0; k < 4; ++k) s.addf(n + "current " + std::to_string(k), cur[k]);
+      }
+    }
+    if (gl3()) {
+      i("vertex array", GL_VERTEX_ARRAY_BINDING);
+      i("draw framebuffer", GL_DRAW_FRAMEBUFFER_BINDING);
+      i("read framebuffer", GL_READ_FRAMEBUFFER_BINDING);
+      i("pixel pack buffer", GL_PIXEL_PACK_BUFFER_BINDING);
+      i("pixel unpack buffer", GL_PIXEL_UNPACK_BUFFER_BINDING);
+      i("pack row length", GL_PACK_ROW_LENGTH);
+      on("rasterizer discard", GL_RASTERIZER_DISCARD);
+      for (GLuint a = 0; a < 3; ++a) {
+        GLint v = 0;
+        glGetVertexAttribiv(a, GL_VERTEX_ATTRIB_ARRAY_DIVISOR, &v);
+        s.add("attribute " + std::to_string(a) + " divisor", v);
+      }
+    } else {
+      i("framebuffer", GL_FRAMEBUFFER_BINDING);
+    }
+    return s;
+  }
+};
+
+GLuint compile_app_program() {
+  const bool d = desktop();
+  const std::string vs = d ? "#version 330 core\nlayout(location = 0) in vec4 p;\nvoid main() { gl_Position = p; }\n"
+                           : "#version 100\nattribute vec4 p;\nvoid main() { gl_Position = p; }\n";
+  const std::string fs = d ? "#version 330 core\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n"
+                           : "#version 100\nvoid main() { gl_FragColor = vec4(1.0); }\n";
+  auto shader = [](GLenum type, const std::string& src) {
+    const GLuint s = glCreateShader(type);
+    const char* p = src.c_str();
+    glShaderSource(s, 1, &p, nullptr);
+    glCompileShader(s);
+    return s;
+  };
+  const GLuint program = glCreateProgram();
+  glAttachShader(program, shader(GL_VERTEX_SHADER, vs));
+  glAttachShader(program, shader(GL_FRAGMENT_SHADER, fs));
+  glBindAttribLocation(program, 0, "p");
+  glLinkProgram(program);
+  return program;
+}
+
+// An application's frame in progress: its own framebuffer, program, VAO,
+// buffers, textures and every piece of state set away from the defaults.
+struct AppState {
+  static constexpr int kSize = 256;
+  GLuint fbo = 0, color = 0, texture0 = 0, texture3 = 0, vao = 0, vbo = 0, ibo = 0, rbo = 0, program = 0, unpack = 0;
+
+  AppState() {
+    glGenTextures(1, &color);
+    glBindTexture(GL_TEXTURE_2D, color);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, kSize, kSize, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color, 0);
+    glViewport(0, 0, kSize, kSize);
+    glClearColor(1, 1, 1, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glGenTextures(1, &texture0);
+    glGenTextures(1, &texture3);
+    glGenRenderbuffers(1, &rbo);
+    glBindRenderbuffer(GL_RENDERBUFFER, rbo);
+    program = compile_app_program();
+    glUseProgram(program);
+    if (gl3()) {
+      glGenVertexArrays(1, &vao);
+      glBindVertexArray(vao);
+      // A texture upload with no data reads from a bound unpack buffer.
+      glGenBuffers(1, &unpack);
+      glBindBuffer(GL_PIXEL_UNPACK_BUFFER, unpack);
+      glBufferData(GL_PIXEL_UNPACK_BUFFER, 16, nullptr, GL_STREAM_DRAW);
+    }
+    glGenBuffers(1, &vbo);
+    glGenBuffers(1, &ibo);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo);
+    glBufferData(GL_ARRAY_BUFFER, 256, nullptr, GL_STATIC_DRAW);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ibo);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, 64, nullptr, GL_STATIC_DRAW);
+    for (GLuint a = 0; a < 3; ++a) {
+      glEnableVertexAttribArray(a);
+      glVertexAttribPointer(a, 2 + static_cast<GLint>(a), GL_FLOAT, GL_FALSE, 36, reinterpret_cast<void*>(4 * a));
+    }
+    glVertexAttrib4f(2, 0.5f, 0.25f, 0.125f, 1.0f);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, texture0);
+    glActiveTexture(GL_TEXTURE3);
+    glBindTexture(GL_TEXTURE_2D, texture3);
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_DST_COLOR, GL_ONE, GL_ZERO);
+    glBlendEquationSeparate(GL_FUNC_SUBTRACT, GL_FUNC_ADD);
+    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_STENCIL_TEST);
+    glEnable(GL_CULL_FACE);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(20, 30, 180, 120);
+    glViewport(10, 20, 220, 160);
+    glClearColor(0.1f, 0.2f, 0.3f, 0.4f);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
+    glPixelStorei(GL_PACK_ALIGNMENT, 2);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 8);
+  }
+
+  // Pixels of the application's framebuffer, read without disturbing the
+  // state compared (saved and put back around the read).
+  std::vector<std::uint8_t> pixels() const {
+    std::vector<std::uint8_t> out(static_cast<std::size_t>(kSize) * kSize * 4);
+    GLint pack = 0, read_fbo = 0;
+    glGetIntegerv(GL_PACK_ALIGNMENT, &pack);
+    glGetIntegerv(gl3() ? GL_READ_FRAMEBUFFER_BINDING : GL_FRAMEBUFFER_BINDING, &read_fbo);
+    glBindFramebuffer(gl3() ? GL_READ_FRAMEBUFFER : GL_FRAMEBUFFER, fbo);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE, out.data());
+    glPixelStorei(GL_PACK_ALIGNMENT, pack);
+    glBindFramebuffer(gl3() ? GL_READ_FRAMEBUFFER : GL_FRAMEBUFFER, static_cast<GLuint>(read_fbo));
+    return out;
+  }
+};
+
+void expect_same(const State& before, const State& after, const std::string& where) {
+  ASSERT_EQ(before.values.size(), after.values.size());
+  for (std::size_t k = 0; k < before.values.size(); ++k)
+    EXPECT_EQ(before.values[k].second, after.values[k].second) << where << ": " << before.values[k].first;
+}
+
+class GlState : public ::testing::TestWithParam<ContextKind> {};
+
+TEST_P(GlState, EveryModeLeavesTheApplicationsStateAndDrawsInItsViewport) {
+  // The run under Mesa's OpenGL ES 2.0 override (tests/CMakeLists.txt) tests
+  // a true GLES2 context, without VAOs: the others are not available there.
+  const bool gles2_run = test::expects_gles2();
+  if (gles2_run && GetParam() != ContextKind::Gles2) GTEST_SKIP() << "OpenGL ES 2.0 only in this run";
+  HeadlessContext context = HeadlessContext::create(GetParam());
+  std::printf("%s: %s\n", context_kind_name(GetParam()), context.version().c_str());
+  if (gles2_run) {
+    ASSERT_EQ(context.version().rfind("OpenGL ES 2.0", 0), 0u) << context.version();
+  }
+  {
+    const Font font = Font::open(test::kDejaVuSans);
+    GlyphCache cache;
+    Renderer renderer;
+    AppState app;
+    const ShapedLine line = shape_line(font, "Guest");
+    const DrawBatch batch = DrawBatch::from_text(cache, font, line, 48.0);
+    const State before = State::read();
+    for (AntiAliasing aa :
+         {AntiAliasing::None, AntiAliasing::Curves, AntiAliasing::Full, AntiAliasing::Vbaa, AntiAliasing::Msaa}) {
+      // The viewport is 220 x 160 at (10, 20) (GL rows up): the text at
+      // (6, 60) in its pixels lands inside it and inside the scissor box.
+      renderer.draw(batch, Placement(48.0 / font.metrics().units_per_em, 16.0, 100.0),
+                    DrawOptions(Color{0, 0, 0, 1}, aa));
+      EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+      expect_same(
+          before, State::read(),
+          std::string(context_kind_name(GetParam())) + " after a draw in mode " + std::to_string(static_cast<int>(aa)));
+    }
+    // Ink only inside the scissor box (x 20..200, GL rows 30..150).
+    const std::vector<std::uint8_t> px = app.pixels();
+    std::size_t inside = 0, outside = 0;
+    for (int y = 0; y < AppState::kSize; ++y)
+      for (int x = 0; x < AppState::kSize; ++x) {
+        const bool dark = px[(static_cast<std::size_t>(y) * AppState::kSize + x) * 4] < 128;
+        const bool in = x >= 20 && x < 200 && y >= 30 && y < 150;
+        (in ? inside : outside) += dark ? 1 : 0;
+      }
+    EXPECT_GT(inside, 200u);
+    EXPECT_EQ(outside, 0u);
+
+    // An error the application left pending is reported as its own, and
+    // nothing is drawn or changed.
+    glBindTexture(GL_TEXTURE_2D, 0xFFFFFF);  // not a texture name: GL_INVALID_OPERATION on core, fine elsewhere
+    glEnable(0x1234);                        // GL_INVALID_ENUM everywhere
+    glBindTexture(GL_TEXTURE_2D, app.texture3);
+    try {
+      renderer.draw(batch, Placement(48.0 / font.metrics().units_per_em, 16.0, 100.0), DrawOptions{});
+      ADD_FAILURE() << "a pending application error went unreported";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("pending"), std::string::npos) << e.what();
+    }
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    expect_same(before, State::read(), "after the pending-error draw");
+    // Building a block reports it the same way.
+    glEnable(0x1234);
+    try {
+      (void)DrawBatch::from_text(cache, font, line, 24.0);
+      ADD_FAILURE() << "a pending application error went unreported by DrawBatch::from_text";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("pending"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    expect_same(before, State::read(), "after the pending-error block");
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Kinds, GlState,
+                         ::testing::Values(ContextKind::Gles2, ContextKind::Gles3, ContextKind::GlCore,
+                                           ContextKind::GlCompat),
+                         [](const ::testing::TestParamInfo<ContextKind>& p) {
+                           std::string n = context_kind_name(p.param);
+                           for (char& c : n)
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return n;
+                         });
+
+}  // namespace
+}  // namespace curvetext
