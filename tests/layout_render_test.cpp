@@ -4,9 +4,12 @@
 // says (DESIGN.md section 6). This checks what the other layout tests cannot:
 // that every line, run, font and alignment shift reaches the pixels. Failing
 // cases write result, reference and diff images to build/test-output.
+#include <GLES2/gl2.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -16,6 +19,7 @@
 #include "curvetext/layout.hpp"
 #include "curvetext/paragraph_image.hpp"
 #include "curvetext/renderer.hpp"
+#include "curvetext/text_block.hpp"
 #include "support/coverage.hpp"
 #include "support/fonts.hpp"
 #include "support/layout_support.hpp"
@@ -308,6 +312,71 @@ TEST(ParagraphBlending, GammaAndLinearLightFollowExactCoverage) {
                         (blending == Blending::Linear ? "_linear" : "_srgb"),
                     r, 0.02, 0.03);
     }
+  }
+}
+
+// A paragraph drawn into the application's framebuffer in one call
+// (TextBlock): coloured runs in their colours, an underline and a
+// strikethrough, inside a viewport that does not start at the framebuffer's
+// corner. The pixels are the image path's (render_paragraph_image draws the
+// same block, and RenderedParagraph compares that with exact coverage),
+// moved by the viewport's offset, and nothing is drawn outside the viewport.
+TEST(TextBlockDraw, ParagraphInTheAppsViewportMatchesTheImagePath) {
+  FontCollection fonts;
+  ParagraphStyle style;
+  style.default_style.fonts = {test::kDejaVuSans};
+  style.default_style.size_px = 20;
+  style.width = 230;
+  TextStyle red = style.default_style, marked = style.default_style;
+  red.color = Color{0.8f, 0.1f, 0.1f, 1.0f};
+  marked.underline = true;
+  marked.strikethrough = true;
+  const std::string text = "A block of text drawn in one call, its colours and bars included.";
+  const Paragraph p = Paragraph::layout(fonts, text, {TextSpan{2, 7, red}, TextSpan{20, 27, marked}}, style);
+  const TextBlock block = TextBlock::from_paragraph(gpu().cache, p);
+  EXPECT_GE(block.group_count(), 3u);  // plain, red, plain again (bars with their group)
+  for (AntiAliasing aa : {AntiAliasing::Full, AntiAliasing::Vbaa, AntiAliasing::Curves}) {
+    ParagraphImageOptions options;
+    options.antialiasing = aa;
+    options.margin_px = 10;
+    const Image image = render_paragraph_image(gpu().renderer, gpu().cache, p, options);
+    const int dx = 37, dy = 21;  // the viewport's offset (GL: from the bottom left)
+    const int W = image.width + dx + 13, H = image.height + dy + 9;
+    gpu().renderer.begin(W, H, Color{1, 1, 1, 1});
+    glViewport(dx, dy, image.width, image.height);
+    DrawOptions draw;
+    draw.antialiasing = aa;
+    block.draw(gpu().renderer, options.margin_px, options.margin_px, draw);
+    const Image app = gpu().renderer.read_pixels();
+    // Rows from the top: the viewport's top row is H - (dy + height).
+    const int top = H - (dy + image.height);
+    int differ = 0, outside_ink = 0, largest = 0;
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x) {
+        const std::uint8_t* a = app.pixel(x, y);
+        const bool inside = x >= dx && x < dx + image.width && y >= top && y < top + image.height;
+        if (!inside) {
+          outside_ink += a[0] != 255 || a[1] != 255 || a[2] != 255;
+          continue;
+        }
+        const std::uint8_t* b = image.pixel(x - dx, y - top);
+        int d = 0;
+        for (int k = 0; k < 3; ++k) d = std::max(d, std::abs(a[k] - b[k]));
+        largest = std::max(largest, d);
+        differ += d > 1;
+      }
+    std::printf("text block, mode %d: %d pixels differ from the image path by more than 1/255, largest %d\n",
+                static_cast<int>(aa), differ, largest);
+    // A pixel centre on a straight edge may fall either way when the
+    // viewport's offset rounds the edge differently: `curves` leaves such
+    // edges aliased.
+    EXPECT_LE(differ, aa == AntiAliasing::Curves ? 2 : 0) << "mode " << static_cast<int>(aa);
+    EXPECT_EQ(outside_ink, 0) << "mode " << static_cast<int>(aa);
+    // Red ink where the red run is.
+    int red_pixels = 0;
+    for (std::size_t i = 0; i < image.rgba.size(); i += 4)
+      red_pixels += image.rgba[i] > 150 && image.rgba[i + 1] < 100 && image.rgba[i + 2] < 100;
+    EXPECT_GT(red_pixels, 20) << "mode " << static_cast<int>(aa);
   }
 }
 

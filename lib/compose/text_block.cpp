@@ -1,0 +1,121 @@
+// A paragraph's glyph runs and decorations as draw batches (text_block.hpp).
+
+#include "curvetext/text_block.hpp"
+
+#include <hb-ot.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "curvetext/error.hpp"
+#include "curvetext/image_style.hpp"
+#include "curvetext/mesh.hpp"
+#include "font/harfbuzz_font.hpp"
+
+namespace curvetext {
+
+struct TextBlock::Group {
+  Color color;
+  double size_px = 0.0;
+  double scale = 1.0;  // pixels per font unit
+  std::optional<DrawBatch> glyphs;
+  std::optional<DrawBatch> bars;  // pixels, y up (placement scale 1)
+};
+
+namespace {
+
+// Consecutive runs with the same face, size and colour become one group: one
+// draw, and under full, vbaa or msaa one offscreen pass over the group's box.
+struct GroupInProgress {
+  const Font* font = nullptr;
+  double size_px = 0.0;
+  Color color;
+  std::vector<PlacedGlyph> glyphs;  // font units, y up, from the layout box's origin
+  Outline bars;
+
+  bool takes(const GlyphRun& run, const Color& c) const {
+    return font == run.font.get() && size_px == run.size_px && color.r == c.r && color.g == c.g && color.b == c.b &&
+           color.a == c.a;
+  }
+};
+
+// A bar from the font's post / OS/2 metrics, as thick as it says (at least a
+// pixel), in layout pixels with y up.
+void add_bar(Outline& bars, const LayoutLine& line, const GlyphRun& run, hb_ot_metrics_tag_t offset_tag,
+             hb_ot_metrics_tag_t size_tag, double fallback_offset) {
+  hb_font_t* hb = harfbuzz_font(*run.font);
+  const double scale = run.size_px / run.font->metrics().units_per_em;
+  hb_position_t offset = 0, thickness = 0;
+  const double off =
+      hb_ot_metrics_get_position(hb, offset_tag, &offset) ? offset * scale : fallback_offset * run.size_px;
+  double t = hb_ot_metrics_get_position(hb, size_tag, &thickness) ? thickness * scale
+                                                                  : run.font->metrics().units_per_em * 0.05 * scale;
+  t = std::max(t, 1.0);
+  const double top = line.baseline - off - t / 2.0;
+  const double x0 = run.x, x1 = run.x + run.width;
+  bars.move_to({x0, -top});
+  bars.line_to({x1, -top});
+  bars.line_to({x1, -(top + t)});
+  bars.line_to({x0, -(top + t)});
+  bars.close();
+}
+
+}  // namespace
+
+TextBlock::TextBlock() = default;
+TextBlock::TextBlock(TextBlock&&) noexcept = default;
+TextBlock& TextBlock::operator=(TextBlock&&) noexcept = default;
+TextBlock::~TextBlock() = default;
+
+TextBlock TextBlock::from_paragraph(GlyphCache& cache, const Paragraph& paragraph, double on_screen_scale) {
+  if (!(on_screen_scale > 0.0) || !std::isfinite(on_screen_scale))
+    throw Error(ErrorCode::InvalidArgument, "a text block's on-screen scale must be positive and finite");
+  TextBlock block;
+  block.on_screen_scale_ = on_screen_scale;
+  GroupInProgress group;
+  auto finish = [&] {
+    if (group.font == nullptr) return;
+    Group g;
+    g.color = group.color;
+    g.size_px = group.size_px;
+    g.scale = group.size_px / group.font->metrics().units_per_em;
+    if (!group.glyphs.empty())
+      g.glyphs.emplace(DrawBatch::from_glyphs(cache, *group.font, group.glyphs, group.size_px * on_screen_scale));
+    if (!group.bars.empty()) g.bars.emplace(DrawBatch::from_mesh(build_mesh(group.bars)));
+    block.groups_.push_back(std::move(g));
+  };
+  for (const LayoutLine& line : paragraph.lines()) {
+    for (const GlyphRun& run : line.runs) {
+      if (run.glyphs.empty()) continue;
+      const TextStyle& style = paragraph.styles()[run.style];
+      if (!group.takes(run, style.color)) {
+        finish();
+        group = GroupInProgress{run.font.get(), run.size_px, style.color, {}, {}};
+      }
+      const double scale = run.size_px / run.font->metrics().units_per_em;
+      for (const PositionedGlyph& g : run.glyphs) group.glyphs.push_back(PlacedGlyph{g.id, g.x / scale, -g.y / scale});
+      if (style.underline)
+        add_bar(group.bars, line, run, HB_OT_METRICS_TAG_UNDERLINE_OFFSET, HB_OT_METRICS_TAG_UNDERLINE_SIZE, -0.1);
+      if (style.strikethrough)
+        add_bar(group.bars, line, run, HB_OT_METRICS_TAG_STRIKEOUT_OFFSET, HB_OT_METRICS_TAG_STRIKEOUT_SIZE, 0.3);
+    }
+  }
+  finish();
+  return block;
+}
+
+void TextBlock::draw(Renderer& renderer, double x, double y, const DrawOptions& options,
+                     const Transform& transform) const {
+  for (const Group& g : groups_) {
+    DrawOptions draw = options;
+    draw.color = g.color;
+    draw.antialiasing = resolve_antialiasing(options.antialiasing, g.size_px * on_screen_scale_);
+    if (g.glyphs) renderer.draw(*g.glyphs, Placement(g.scale, x, y, transform), draw);
+    if (g.bars) renderer.draw(*g.bars, Placement(1.0, x, y, transform), draw);
+  }
+}
+
+std::size_t TextBlock::group_count() const { return groups_.size(); }
+
+}  // namespace curvetext

@@ -1,0 +1,53 @@
+// A laid-out paragraph (layout.hpp) ready to draw into the application's own
+// framebuffer, frame after frame: its glyph runs grouped by face, size and
+// colour (consecutive runs), each group one DrawBatch over the glyph meshes of
+// a GlyphCache, with the group's underlines and strikethroughs as one mesh.
+// Built once; drawn again, moved or transformed, it changes only uniforms.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "curvetext/export.hpp"
+#include "curvetext/layout.hpp"
+#include "curvetext/renderer.hpp"
+#include "curvetext/transform.hpp"
+
+namespace curvetext {
+
+// Owns GL buffers as DrawBatch does: the context (or one sharing with it)
+// that builds a block must be current when it is drawn or destroyed. Not
+// thread-safe: one thread (and its context) at a time. Holds the paragraph's
+// fonts (shared) but not the paragraph.
+class CURVETEXT_API TextBlock {
+ public:
+  // `on_screen_scale`: how much larger than its layout the block will be
+  // drawn (the largest stretch of the transform it is drawn with), which
+  // picks the glyph meshes' level of detail and `auto` antialiasing per
+  // group; 1 for text drawn at its layout size. Throws
+  // Error(InvalidArgument) for a scale that is not positive and finite, and
+  // the errors of DrawBatch's builders.
+  static TextBlock from_paragraph(GlyphCache& cache, const Paragraph& paragraph, double on_screen_scale = 1.0);
+
+  TextBlock(TextBlock&&) noexcept;
+  TextBlock& operator=(TextBlock&&) noexcept;
+  ~TextBlock();
+
+  // Draws the block with its layout box's top-left at (x, y): pixels from
+  // the top-left of the viewport bound now, y down; then `transform` (pixels
+  // to pixels). Each group in its style's colour (options.color is not used);
+  // antialiasing, with `auto` resolved per group from its pixels per em on
+  // screen, curve mode, vbaa filter, gamma and the debug view from `options`.
+  // Renderer::draw's GL state contract holds. Throws as Renderer::draw.
+  void draw(Renderer& renderer, double x, double y, const DrawOptions& options, const Transform& transform = {}) const;
+
+  std::size_t group_count() const;
+
+ private:
+  struct Group;
+  TextBlock();
+  std::vector<Group> groups_;
+  double on_screen_scale_ = 1.0;
+};
+
+}  // namespace curvetext
