@@ -4,8 +4,9 @@
 set -euo pipefail
 
 packages=(
-  # toolchain
-  build-essential cmake pkg-config
+  # toolchain (also what the package test's consumers build with: cmake, pkg-config, binutils),
+  # and the formatter scripts/check-format.sh runs
+  build-essential cmake pkg-config clang-format
   # fonts and text: outlines, shaping, bidi, line breaking, fallback
   libfreetype-dev libharfbuzz-dev libfribidi-dev libunibreak-dev libfontconfig-dev
   # Thai word boundaries (a dictionary; UAX #14 leaves them to one)
@@ -26,6 +27,9 @@ packages=(
   fonts-inter-variable
   # a colour bitmap (CBDT) emoji face: layout must skip it in fallback
   fonts-noto-color-emoji
+  # the example apps (examples/): windows and GL contexts, the camera's maths, and the
+  # virtual X server (with xauth for xvfb-run) that their tests run them in
+  libglfw3-dev libsdl2-dev libglm-dev xvfb xauth
 )
 
 missing=()

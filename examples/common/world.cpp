@@ -1,0 +1,77 @@
+#include "common/world.hpp"
+
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace example {
+
+namespace {
+
+constexpr const char* kLabel = "curvetext";
+constexpr double kLabelEm = 1.6;       // world units per em
+constexpr double kSignPadding = 0.35;  // world units around the text
+constexpr curvetext::Color kLabelColor{0.10f, 0.10f, 0.16f, 1.0f};
+
+}  // namespace
+
+glm::mat4 camera_at(int frame, int width, int height) {
+  const float t = static_cast<float>(frame) / 60.0f;  // "seconds" at 60 frames a second
+  const glm::vec3 target(1.5f * std::sin(0.7f * t), 0.8f * std::sin(0.45f * t), 0.0f);  // pans
+  const float distance = 13.5f + 3.0f * std::sin(0.9f * t);                             // zooms
+  const float yaw = glm::radians(-18.0f + 30.0f * std::sin(0.5f * t + 0.6f));           // rotates
+  const float pitch = glm::radians(52.0f);                                              // above the plane
+  // From the south-west (-y) of the target, looking north and down: the
+  // board's +y is up on screen, so the label reads upright.
+  const glm::vec3 eye =
+      target + distance * glm::vec3(std::cos(pitch) * std::sin(yaw), -std::cos(pitch) * std::cos(yaw), std::sin(pitch));
+  const glm::mat4 view = glm::lookAt(eye, target, glm::vec3(0.0f, 0.0f, 1.0f));
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
+  return glm::perspective(glm::radians(45.0f), aspect, 0.1f, 100.0f) * view;
+}
+
+curvetext::Transform plane_to_viewport(const glm::mat4& vp, int width, int height) {
+  // A point (x, y, 0, 1) goes to clip = x * col0 + y * col1 + col3; the
+  // viewport then takes X = w/2 (cx + cw), Y = h/2 (cw - cy) over W = cw.
+  // glm is column-major: vp[column][row]. The input's second coordinate is
+  // -y, so column 1 enters negated.
+  const double hw = width / 2.0, hh = height / 2.0;
+  auto entry = [&](int column, int row) { return static_cast<double>(vp[column][row]); };
+  curvetext::Transform t;
+  const int columns[3] = {0, 1, 3};
+  const double sign[3] = {1.0, -1.0, 1.0};
+  for (int k = 0; k < 3; ++k) {
+    const int c = columns[k];
+    t.m[0 + k] = sign[k] * hw * (entry(c, 0) + entry(c, 3));
+    t.m[3 + k] = sign[k] * hh * (entry(c, 3) - entry(c, 1));
+    t.m[6 + k] = sign[k] * entry(c, 3);
+  }
+  return t;
+}
+
+WorldLabel world_label(std::shared_ptr<const curvetext::Font> font) {
+  const curvetext::FontMetrics m = font->metrics();
+  const double scale = kLabelEm / m.units_per_em;  // world units per font unit
+  const double width = line_width(*font, kLabel, kLabelEm);
+  // Centred on the world origin: the baseline a third of an em below it. As
+  // a line at (x0, -baseline_y) with kLabelEm "pixels" per em, its Placement
+  // maps font units to the plane's (x, -y).
+  const double x0 = -width / 2.0, baseline_y = -kLabelEm / 3.0;
+  WorldLabel label;
+  // pixels_per_em only picks a level of detail; TrueType outlines have no
+  // cubics, so one mesh serves every size the camera shows.
+  label.text = line_item(std::move(font), kLabel, kLabelEm, x0, -baseline_y, kLabelColor);
+  label.text.pixels_per_em = 64.0;
+  const double top = baseline_y + m.ascender * scale, bottom = baseline_y + m.descender * scale;
+  label.sign_min = glm::vec2(x0 - kSignPadding, bottom - kSignPadding);
+  label.sign_max = glm::vec2(x0 + width + kSignPadding, top + kSignPadding);
+  return label;
+}
+
+curvetext::Placement label_placement(const WorldLabel& label, const glm::mat4& view_projection, int width, int height) {
+  curvetext::Placement p = label.text.placement;
+  p.transform = plane_to_viewport(view_projection, width, height);
+  return p;
+}
+
+}  // namespace example
