@@ -31,6 +31,22 @@ std::string hex(GLenum e) {
   return buf;
 }
 
+// A new texture of w x h texels, no data, sampled nearest and clamped: the
+// renderer's framebuffers and coverage textures. Leaves no texture bound (the
+// caller restores the application's binding).
+GLuint new_texture(GLint internal_format, GLenum format, int w, int h) {
+  GLuint texture = 0;
+  glGenTextures(1, &texture);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glTexImage2D(GL_TEXTURE_2D, 0, internal_format, w, h, 0, format, GL_UNSIGNED_BYTE, nullptr);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  return texture;
+}
+
 // Owns one GL shader object.
 struct Shader {
   GLuint id = 0;
@@ -256,17 +272,7 @@ struct Renderer::Impl {
   void allocate(Slot& s, int w, int h) {
     if (s.fbo != 0) glDeleteFramebuffers(1, &s.fbo);
     if (s.texture != 0) glDeleteTextures(1, &s.texture);
-    glGenTextures(1, &s.texture);
-    glBindTexture(GL_TEXTURE_2D, s.texture);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    if (single_channel)
-      glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, w, h, 0, GL_RED, GL_UNSIGNED_BYTE, nullptr);
-    else
-      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    glBindTexture(GL_TEXTURE_2D, 0);
+    s.texture = single_channel ? new_texture(GL_R8, GL_RED, w, h) : new_texture(GL_RGBA, GL_RGBA, w, h);
     glGenFramebuffers(1, &s.fbo);
     glBindFramebuffer(GL_FRAMEBUFFER, s.fbo);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, s.texture, 0);
@@ -487,20 +493,10 @@ void Renderer::begin(int width, int height, Color background, Blending blending)
     const gpu::GlStateBackup state(r.info);
     if (r.framebuffer == 0 || r.width != width || r.height != height || r.blending != blending) {
       r.release_target();
-      glGenTextures(1, &r.texture);
-      glBindTexture(GL_TEXTURE_2D, r.texture);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
       // RGBA/UNSIGNED_BYTE is colour-renderable in every GLES2 implementation.
       // Linear blending: an sRGB texture, which GL decodes before blending and
       // encodes after (always on in GLES 3; desktop GL needs GL_FRAMEBUFFER_SRGB).
-      if (blending == Blending::Linear)
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-      else
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-      glBindTexture(GL_TEXTURE_2D, 0);
+      r.texture = new_texture(blending == Blending::Linear ? GL_SRGB8_ALPHA8 : GL_RGBA, GL_RGBA, width, height);
       if (GLenum err = glGetError(); err != GL_NO_ERROR) {
         r.release_target();
         throw Error(ErrorCode::Gl, "cannot allocate a " + std::to_string(width) + "x" + std::to_string(height) +
