@@ -5,6 +5,9 @@
 // Failing cases write result, reference and diff images to build/test-output.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <numbers>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -14,6 +17,7 @@
 #include "curvetext/font.hpp"
 #include "curvetext/headless.hpp"
 #include "curvetext/renderer.hpp"
+#include "curvetext/shaping.hpp"
 #include "curvetext/text_image.hpp"
 #include "curvetext/transform.hpp"
 #include "support/coverage.hpp"
@@ -61,6 +65,85 @@ void expect_close(const std::string& name, const Result& r, double edge_limit, d
 // 48 px (bench/quality_bench); full AA's areas are exact at any angle (the
 // triangles' edges clip the pixel box), so rotation should not change the
 // order of the error.
+// A column-major model-view-projection (as glm builds one): a camera 6 units
+// from the plane z = 0, looking at (1, 0.5, 0) from above and to the side,
+// a 50 degree vertical field of view.
+std::array<float, 16> camera_mvp(double aspect) {
+  auto mul = [](const std::array<double, 16>& a, const std::array<double, 16>& b) {
+    std::array<double, 16> c{};
+    for (int col = 0; col < 4; ++col)
+      for (int row = 0; row < 4; ++row)
+        for (int k = 0; k < 4; ++k) c[4 * col + row] += a[4 * k + row] * b[4 * col + k];
+    return c;
+  };
+  const double f = 1.0 / std::tan(25.0 * std::numbers::pi / 180.0), n = 0.1, far = 100.0;
+  const std::array<double, 16> projection = {
+      f / aspect, 0, 0, 0, 0, f, 0, 0, 0, 0, (far + n) / (n - far), -1, 0, 0, 2 * far * n / (n - far), 0};
+  // look-at from eye e to target t with up +y.
+  const double e[3] = {3.0, -2.5, 5.0}, t[3] = {1.0, 0.5, 0.0};
+  double fw[3] = {t[0] - e[0], t[1] - e[1], t[2] - e[2]};
+  const double fl = std::sqrt(fw[0] * fw[0] + fw[1] * fw[1] + fw[2] * fw[2]);
+  for (double& v : fw) v /= fl;
+  double side[3] = {fw[1] * 0 - fw[2] * 1, fw[2] * 0 - fw[0] * 0, fw[0] * 1 - fw[1] * 0};  // fw x up
+  const double sl = std::sqrt(side[0] * side[0] + side[1] * side[1] + side[2] * side[2]);
+  for (double& v : side) v /= sl;
+  const double up[3] = {side[1] * fw[2] - side[2] * fw[1], side[2] * fw[0] - side[0] * fw[2],
+                        side[0] * fw[1] - side[1] * fw[0]};
+  const double dot_s = side[0] * e[0] + side[1] * e[1] + side[2] * e[2];
+  const double dot_u = up[0] * e[0] + up[1] * e[1] + up[2] * e[2];
+  const double dot_f = fw[0] * e[0] + fw[1] * e[1] + fw[2] * e[2];
+  const std::array<double, 16> view = {side[0], up[0], -fw[0], 0, side[1], up[1],  -fw[1], 0,
+                                       side[2], up[2], -fw[2], 0, -dot_s,  -dot_u, dot_f,  1};
+  const std::array<double, 16> m = mul(projection, view);
+  std::array<float, 16> out{};
+  for (int i = 0; i < 16; ++i) out[static_cast<std::size_t>(i)] = static_cast<float>(m[static_cast<std::size_t>(i)]);
+  return out;
+}
+
+// Placement::on_plane puts outline points where the model-view-projection
+// and the viewport put the plane's points (the GL pipeline's arithmetic,
+// written out), upright; and text drawn so matches the exact coverage of its
+// outline under that map.
+TEST(Plane, OnPlaneFollowsTheModelViewProjection) {
+  const int w = 320, h = 200;
+  const std::array<float, 16> mvp = camera_mvp(static_cast<double>(w) / h);
+  const double units = 0.002;  // plane units per outline unit
+  const Placement placement = Placement::on_plane(mvp.data(), w, h, units, 0.25, 0.4);
+  double worst = 0.0;
+  for (const Vec2 o : {Vec2{0, 0}, Vec2{500, 0}, Vec2{0, 700}, Vec2{1200, -300}}) {
+    const double X = 0.25 + units * o.x, Y = 0.4 + units * o.y;  // on the plane, y up
+    double clip[4];
+    for (int row = 0; row < 4; ++row)
+      clip[row] = mvp[static_cast<std::size_t>(row)] * X + mvp[static_cast<std::size_t>(4 + row)] * Y +
+                  mvp[static_cast<std::size_t>(12 + row)];
+    const Vec2 want{(clip[0] / clip[3] + 1.0) / 2.0 * w, (1.0 - clip[1] / clip[3]) / 2.0 * h};
+    const Vec2 pre{placement.scale * o.x + placement.origin_x, placement.origin_y - placement.scale * o.y};
+    const Vec2 got = placement.transform.apply(pre);
+    worst = std::max({worst, std::abs(got.x - want.x), std::abs(got.y - want.y)});
+  }
+  EXPECT_LT(worst, 1e-3) << "pixels from the pipeline's projection";
+  const float bad[16] = {std::nanf(""), 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  EXPECT_THROW(Transform::plane_to_viewport(bad, w, h), Error);
+  EXPECT_THROW(Transform::plane_to_viewport(mvp.data(), 0, h), Error);
+
+  // Drawn: "Plane" on the plane, against the exact coverage of its outline.
+  const Font font = Font::open(test::kDejaVuSans);
+  const ShapedLine line = shape_line(font, "Plane");
+  DrawBatch batch = DrawBatch::from_text(gpu().cache, font, line, 48.0);
+  gpu().renderer.begin(w, h, Color{1, 1, 1, 1});
+  gpu().renderer.draw(batch, placement, DrawOptions(Color{0, 0, 0, 1}, AntiAliasing::Full));
+  const test::Coverage got = test::coverage_from_black_on_white(gpu().renderer.read_pixels());
+  Placement untransformed = placement;
+  untransformed.transform = Transform{};
+  const test::Coverage want = test::union_coverage(
+      transform_outline(test::place_outline(test::line_outline(font, line), untransformed), placement.transform), w, h);
+  const test::CoverageStats st = test::compare(got, want);
+  std::printf("text on a plane: edge %.4f, max %.3f, ink %.4f (%zu edge pixels)\n", st.edge_mean_abs, st.max_abs,
+              st.ink_ratio, st.edge_pixels);
+  EXPECT_GT(st.edge_pixels, 200u);
+  test::expect_coverage("text-on-plane", got, want, st, 0.01, 0.02);
+}
+
 TEST(Rotation, ThirtyDegreesMatchesExactCoverage) {
   for (double size : {16.0, 48.0}) {
     for (const char* path : {test::kDejaVuSans, test::kNimbusRoman}) {

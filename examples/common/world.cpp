@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include <glm/gtc/type_ptr.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace example {
@@ -30,25 +31,6 @@ glm::mat4 camera_at(int frame, int width, int height) {
   return glm::perspective(glm::radians(45.0f), aspect, 0.1f, 100.0f) * view;
 }
 
-curvetext::Transform plane_to_viewport(const glm::mat4& vp, int width, int height) {
-  // A point (x, y, 0, 1) goes to clip = x * col0 + y * col1 + col3; the
-  // viewport then takes X = w/2 (cx + cw), Y = h/2 (cw - cy) over W = cw.
-  // glm is column-major: vp[column][row]. The input's second coordinate is
-  // -y, so column 1 enters negated.
-  const double hw = width / 2.0, hh = height / 2.0;
-  auto entry = [&](int column, int row) { return static_cast<double>(vp[column][row]); };
-  curvetext::Transform t;
-  const int columns[3] = {0, 1, 3};
-  const double sign[3] = {1.0, -1.0, 1.0};
-  for (int k = 0; k < 3; ++k) {
-    const int c = columns[k];
-    t.m[0 + k] = sign[k] * hw * (entry(c, 0) + entry(c, 3));
-    t.m[3 + k] = sign[k] * hh * (entry(c, 3) - entry(c, 1));
-    t.m[6 + k] = sign[k] * entry(c, 3);
-  }
-  return t;
-}
-
 WorldLabel world_label(std::shared_ptr<const curvetext::Font> font) {
   const curvetext::FontMetrics m = font->metrics();
   const double scale = kLabelEm / m.units_per_em;  // world units per font unit
@@ -70,7 +52,7 @@ WorldLabel world_label(std::shared_ptr<const curvetext::Font> font) {
 
 curvetext::Placement label_placement(const WorldLabel& label, const glm::mat4& view_projection, int width, int height) {
   curvetext::Placement p = label.text.placement;
-  p.transform = plane_to_viewport(view_projection, width, height);
+  p.transform = curvetext::Transform::plane_to_viewport(glm::value_ptr(view_projection), width, height);
   return p;
 }
 

@@ -17,15 +17,10 @@ namespace example {
 // frame number, not the clock, so a frame is the same on every run).
 glm::mat4 camera_at(int frame, int width, int height);
 
-// The projective map from the world plane z = 0, seen through
-// `view_projection`, to the pixels of a width x height viewport (y down), as
-// a Placement's transform: its input is (x, -y) for the world point (x, y, 0),
-// since a Placement hands its transform y-down coordinates.
-curvetext::Transform plane_to_viewport(const glm::mat4& view_projection, int width, int height);
-
 // The label lying on the board: its text as placed glyphs, with a Placement
 // from font units to the world plane (x, -y) that the caller completes with
-// plane_to_viewport, and the sign under it (world units).
+// Transform::plane_to_viewport (label_placement), and the sign under it (world
+// units).
 struct WorldLabel {
   TextItem text;       // placement.transform: identity until drawn
   glm::vec2 sign_min;  // the sign's corners on the plane

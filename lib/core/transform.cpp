@@ -35,6 +35,28 @@ Transform Transform::perspective(double degrees, double distance) {
   return Transform{{1, 0, 0, 0, c, 0, 0, s / distance, 1}};
 }
 
+Transform Transform::plane_to_viewport(const float mvp[16], double width, double height) {
+  if (!(width > 0.0) || !(height > 0.0) || !std::isfinite(width) || !std::isfinite(height))
+    throw Error(ErrorCode::InvalidArgument, "the viewport's sides must be positive and finite");
+  for (int i = 0; i < 16; ++i)
+    if (!std::isfinite(mvp[i])) throw Error(ErrorCode::InvalidArgument, "the matrix has a NaN or infinite entry");
+  // (x, y, 0, 1) goes to clip = x col0 + y col1 + col3 (z's column drops out);
+  // the viewport takes X = w/2 (cx + cw), Y = h/2 (cw - cy), over W = cw. The
+  // input's second coordinate is -y, so column 1 enters negated.
+  const double hw = width / 2.0, hh = height / 2.0;
+  auto entry = [&](int column, int row) { return static_cast<double>(mvp[4 * column + row]); };
+  Transform t;
+  const int columns[3] = {0, 1, 3};
+  const double sign[3] = {1.0, -1.0, 1.0};
+  for (int k = 0; k < 3; ++k) {
+    const int c = columns[k];
+    t.m[0 + k] = sign[k] * hw * (entry(c, 0) + entry(c, 3));
+    t.m[3 + k] = sign[k] * hh * (entry(c, 3) - entry(c, 1));
+    t.m[6 + k] = sign[k] * entry(c, 3);
+  }
+  return t;
+}
+
 Transform Transform::about(Vec2 c) const { return translation(c.x, c.y) * *this * translation(-c.x, -c.y); }
 
 bool Transform::is_identity() const { return m == Transform{}.m; }

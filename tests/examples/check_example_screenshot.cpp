@@ -30,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/gtc/type_ptr.hpp>
 #include <glm/glm.hpp>
 
 #include "curvetext/error.hpp"
@@ -120,7 +121,7 @@ std::vector<NamedItem> frame_items(const Args& args, const std::map<std::string,
 // The world camera's plane transform maps points as glm's projection does.
 bool check_plane_transform(const std::map<std::string, std::string>& info, int width, int height) {
   const glm::mat4 vp = example::camera_at(std::stoi(info.at("frame")), width, height);
-  const curvetext::Transform t = example::plane_to_viewport(vp, width, height);
+  const curvetext::Transform t = curvetext::Transform::plane_to_viewport(glm::value_ptr(vp), width, height);
   double worst = 0.0;
   for (const glm::vec2 p : {glm::vec2(-3, -1), glm::vec2(3, -1), glm::vec2(3, 1), glm::vec2(-2, 1.5f)}) {
     const glm::vec4 clip = vp * glm::vec4(p, 0.0f, 1.0f);

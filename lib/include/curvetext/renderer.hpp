@@ -53,6 +53,16 @@ struct Placement {
   Placement() = default;
   Placement(double scale_, double origin_x_, double origin_y_, const Transform& transform_ = {})
       : scale(scale_), origin_x(origin_x_), origin_y(origin_y_), transform(transform_) {}
+
+  // Text lying on a 3D scene's plane z = 0, seen through a column-major
+  // model-view-projection matrix (glm::value_ptr(mvp)) in a viewport of
+  // width x height pixels: outline units (y up) at `units_per_outline_unit`
+  // plane units each, the outline's origin at the plane's (x, y), upright
+  // along the plane's +y. Throws as Transform::plane_to_viewport.
+  static Placement on_plane(const float mvp[16], double viewport_width, double viewport_height,
+                            double units_per_outline_unit, double x, double y) {
+    return Placement(units_per_outline_unit, x, -y, Transform::plane_to_viewport(mvp, viewport_width, viewport_height));
+  }
 };
 
 // How Renderer::draw draws one batch.

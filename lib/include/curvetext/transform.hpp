@@ -29,6 +29,15 @@ struct CURVETEXT_API Transform {
   static Transform perspective(double degrees, double distance);
   // The same map about the point c: T(c) * this * T(-c).
   Transform about(Vec2 c) const;
+  // A 3D scene's plane z = 0 seen through a model-view-projection matrix, as
+  // OpenGL and glm hold it (column-major: mvp[4 * column + row];
+  // glm::value_ptr(m)), to the pixels of a viewport of width x height (y down
+  // from its top-left). The input is (x, -y) for the plane's point (x, y, 0):
+  // as a Placement's transform, the Placement's y-down pixels are the plane's
+  // coordinates with y flipped, so text lies upright along the plane's +y
+  // (Placement::on_plane does this). Throws Error(InvalidArgument) for a
+  // non-finite entry or a viewport side that is not positive and finite.
+  static Transform plane_to_viewport(const float mvp[16], double width, double height);
 
   bool is_identity() const;
   bool is_affine() const;
