@@ -54,8 +54,11 @@ Hud::Hud(curvetext::FontCollection& fonts, int width, int height)
   panel_ = Rect{kMargin, std::max(kBarHeight + kMargin, height - kMargin - panel_height), kPanelWidth, panel_height};
 }
 
+curvetext::Vec2 Hud::paragraph_origin() const { return {panel_.x + kPanelPadding, panel_.y + kPanelPadding}; }
+
 std::vector<TextItem> Hud::paragraph_items() const {
-  return example::paragraph_items(paragraph_, panel_.x + kPanelPadding, panel_.y + kPanelPadding);
+  const curvetext::Vec2 origin = paragraph_origin();
+  return example::paragraph_items(paragraph_, origin.x, origin.y);
 }
 
 TextItem Hud::score_item(const std::string& score) const {

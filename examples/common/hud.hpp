@@ -36,7 +36,11 @@ class Hud {
   static constexpr curvetext::Color kBarColor{0.04f, 0.05f, 0.09f, 0.78f};
   static constexpr curvetext::Color kPanelColor{0.05f, 0.06f, 0.10f, 0.85f};
 
-  // The paragraph, which never changes: upload it once.
+  // The paragraph, which never changes (the apps make one curvetext::TextBlock
+  // of it), and where its layout box's top-left goes (window pixels).
+  const curvetext::Paragraph& paragraph() const { return paragraph_; }
+  curvetext::Vec2 paragraph_origin() const;
+  // The same as items placed one per run: what the checker compares with.
   std::vector<TextItem> paragraph_items() const;
   // The score and the FPS counter, which change while the app runs.
   TextItem score_item(const std::string& score) const;

@@ -63,19 +63,12 @@ std::vector<TextItem> paragraph_items(const curvetext::Paragraph& paragraph, dou
   return items;
 }
 
-TextBlock::TextBlock(curvetext::GlyphCache& cache, TextItem item)
+ItemBatch::ItemBatch(curvetext::GlyphCache& cache, TextItem item)
     : item_(std::move(item)),
       batch_(curvetext::DrawBatch::from_glyphs(cache, *item_.font, item_.glyphs, item_.pixels_per_em)) {}
 
-void TextBlock::draw(curvetext::Renderer& renderer, const Placement& placement) const {
+void ItemBatch::draw(curvetext::Renderer& renderer, const Placement& placement) const {
   renderer.draw(batch_, placement, curvetext::DrawOptions(item_.color, curvetext::AntiAliasing::Full));
-}
-
-std::vector<TextBlock> upload(curvetext::GlyphCache& cache, std::vector<TextItem> items) {
-  std::vector<TextBlock> blocks;
-  blocks.reserve(items.size());
-  for (TextItem& item : items) blocks.emplace_back(cache, std::move(item));
-  return blocks;
 }
 
 }  // namespace example

@@ -42,9 +42,9 @@ std::vector<TextItem> paragraph_items(const curvetext::Paragraph& paragraph, dou
 
 // A TextItem uploaded for drawing; keep it while the text stays the same
 // (moving it only needs another Placement).
-class TextBlock {
+class ItemBatch {
  public:
-  TextBlock(curvetext::GlyphCache& cache, TextItem item);
+  ItemBatch(curvetext::GlyphCache& cache, TextItem item);
   void draw(curvetext::Renderer& renderer) const { draw(renderer, item_.placement); }
   void draw(curvetext::Renderer& renderer, const curvetext::Placement& placement) const;
   const TextItem& item() const { return item_; }
@@ -53,7 +53,5 @@ class TextBlock {
   TextItem item_;
   curvetext::DrawBatch batch_;
 };
-
-std::vector<TextBlock> upload(curvetext::GlyphCache& cache, std::vector<TextItem> items);
 
 }  // namespace example

@@ -16,6 +16,7 @@
 #include "curvetext/font_collection.hpp"
 #include "curvetext/glyph_cache.hpp"
 #include "curvetext/renderer.hpp"
+#include "curvetext/text_block.hpp"
 #include "common/app.hpp"
 #include "common/gl_program.hpp"
 #include "common/hud.hpp"
@@ -144,7 +145,7 @@ void Scene2D::prepare(int frame, int width, int height, const example::Hud& hud)
 class TextLayer {
  public:
   TextLayer(int width, int height)
-      : hud_(fonts_, width, height), paragraph_(example::upload(cache_, hud_.paragraph_items())) {}
+      : hud_(fonts_, width, height), paragraph_(curvetext::TextBlock::from_paragraph(cache_, hud_.paragraph())) {}
   const example::Hud& hud() const { return hud_; }
 
   void set(const example::HudText& text) {
@@ -156,7 +157,9 @@ class TextLayer {
   void draw_score() { score_->draw(renderer_); }
   void draw_rest() {
     fps_->draw(renderer_);
-    for (const example::TextBlock& block : paragraph_) block.draw(renderer_);
+    const curvetext::Vec2 origin = hud_.paragraph_origin();
+    paragraph_.draw(renderer_, origin.x, origin.y,
+                    curvetext::DrawOptions(curvetext::Color{}, curvetext::AntiAliasing::Full));
   }
 
  private:
@@ -164,8 +167,8 @@ class TextLayer {
   curvetext::GlyphCache cache_;
   curvetext::Renderer renderer_;
   example::Hud hud_;
-  std::vector<example::TextBlock> paragraph_;
-  std::optional<example::TextBlock> score_, fps_;
+  curvetext::TextBlock paragraph_;  // one call draws its runs in their colours
+  std::optional<example::ItemBatch> score_, fps_;
   std::string score_text_, fps_text_;
 };
 

@@ -19,6 +19,7 @@
 #include "curvetext/font_collection.hpp"
 #include "curvetext/glyph_cache.hpp"
 #include "curvetext/renderer.hpp"
+#include "curvetext/text_block.hpp"
 #include "common/app.hpp"
 #include "common/gl_program.hpp"
 #include "common/hud.hpp"
@@ -220,7 +221,7 @@ class TextLayer {
       : hud_(fonts_, width, height),
         label_(example::world_label(fonts_.resolve(example::kFontPath))),
         label_block_(cache_, label_.text),
-        paragraph_(example::upload(cache_, hud_.paragraph_items())) {}
+        paragraph_(curvetext::TextBlock::from_paragraph(cache_, hud_.paragraph())) {}
 
   const example::Hud& hud() const { return hud_; }
   const example::WorldLabel& label() const { return label_; }
@@ -233,12 +234,14 @@ class TextLayer {
     update(fps_, fps_text_, text.fps, [&] { return hud_.fps_item(text.fps); });
     score_->draw(renderer_);
     fps_->draw(renderer_);
-    for (const example::TextBlock& block : paragraph_) block.draw(renderer_);
+    const curvetext::Vec2 origin = hud_.paragraph_origin();
+    paragraph_.draw(renderer_, origin.x, origin.y,
+                    curvetext::DrawOptions(curvetext::Color{}, curvetext::AntiAliasing::Full));
   }
 
  private:
   template <class MakeItem>
-  void update(std::optional<example::TextBlock>& block, std::string& shown, const std::string& text, MakeItem make) {
+  void update(std::optional<example::ItemBatch>& block, std::string& shown, const std::string& text, MakeItem make) {
     if (block && shown == text) return;
     block.emplace(cache_, make());
     shown = text;
@@ -249,9 +252,9 @@ class TextLayer {
   curvetext::Renderer renderer_;
   example::Hud hud_;
   example::WorldLabel label_;
-  example::TextBlock label_block_;
-  std::vector<example::TextBlock> paragraph_;
-  std::optional<example::TextBlock> score_, fps_;
+  example::ItemBatch label_block_;
+  curvetext::TextBlock paragraph_;  // one call draws its runs in their colours
+  std::optional<example::ItemBatch> score_, fps_;
   std::string score_text_, fps_text_;
 };
 
