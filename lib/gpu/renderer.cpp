@@ -210,7 +210,9 @@ struct Renderer::Impl {
     GLint texture = -1, texture_size = -1, rect_origin = -1, rows = -1, r = -1, ring = -1, color = -1,
           coverage_exponent = -1;
   };
-  QuadProgram resolve, composite[2];  // composite[1]: with gamma, made when first needed
+  // composite[box][gamma]: one fetch per pixel, or vbaa's box filter
+  // (CURVETEXT_BOX); with gamma or not. Each made when first needed.
+  QuadProgram resolve, composite[2][2];
   GLuint quad_vbo = 0;
   int max_samples = 0;    // 0: no multisampled renderbuffers
   int max_offscreen = 0;  // largest offscreen side
@@ -326,7 +328,7 @@ struct Renderer::Impl {
   // Each program compiled and linked on first use (Error(Gl) if it fails).
   void make_curve_program();
   void make_area_programs(bool gamma);  // area_program[gamma]
-  const QuadProgram& composite_program(bool gamma);
+  const QuadProgram& composite_program(bool box, bool gamma);
   const QuadProgram& resolve_program();
 
   // The passes of Renderer::draw (below).
@@ -343,7 +345,7 @@ struct Renderer::Impl {
   ~Impl() {
     release_target();
     for (GLuint p : {program, area_program[0][0], area_program[0][1], area_program[1][0], area_program[1][1],
-                     resolve.id, composite[0].id, composite[1].id})
+                     resolve.id, composite[0][0].id, composite[0][1].id, composite[1][0].id, composite[1][1].id})
       if (p != 0) glDeleteProgram(p);
     if (quad_vbo != 0) glDeleteBuffers(1, &quad_vbo);
     if (vao != 0) glDeleteVertexArrays(1, &vao);
@@ -421,12 +423,13 @@ void Renderer::Impl::make_area_programs(bool gamma) {
   }
 }
 
-const Renderer::Impl::QuadProgram& Renderer::Impl::composite_program(bool gamma) {
-  QuadProgram& q = composite[gamma ? 1 : 0];
-  if (q.id == 0)
-    q = quad_program(shader_source::composite_frag_glsl, gles,
-                     gamma ? "#define CURVETEXT_GAMMA 1\n" : "#define CURVETEXT_GAMMA 0\n",
-                     "coverage composite program");
+const Renderer::Impl::QuadProgram& Renderer::Impl::composite_program(bool box, bool gamma) {
+  QuadProgram& q = composite[box ? 1 : 0][gamma ? 1 : 0];
+  if (q.id == 0) {
+    const std::string defines = std::string("#define CURVETEXT_BOX ") + (box ? "1" : "0") +
+                                "\n#define CURVETEXT_GAMMA " + (gamma ? "1" : "0") + "\n";
+    q = quad_program(shader_source::composite_frag_glsl, gles, defines.c_str(), "coverage composite program");
+  }
   return q;
 }
 
@@ -730,9 +733,13 @@ namespace {
 // texels of each pixel and their ring.
 void composite_tile(RendererImpl& r, const RendererImpl::Slot& slot, int tx, int ty, int w, int h, float vw, float vh,
                     const DrawOptions& options, bool filter) {
-  const RendererImpl::QuadProgram& q =
-      filter ? r.resolve_program() : r.composite_program(coverage_exponent(options.gamma) != 1.0f);
   const int factor = slot.key.factor;
+  const float ring = std::clamp(options.vbaa_ring, 0.0f, 1.0f);
+  // vbaa's box filter without the ring's loop (composite.frag.glsl with
+  // CURVETEXT_BOX); with a ring, resolve.frag.glsl.
+  const bool box = filter && ring == 0.0f;
+  const bool gamma = coverage_exponent(options.gamma) != 1.0f;
+  const RendererImpl::QuadProgram& q = filter && !box ? r.resolve_program() : r.composite_program(box, gamma);
   glUseProgram(q.id);
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, slot.texture);
@@ -742,7 +749,7 @@ void composite_tile(RendererImpl& r, const RendererImpl::Slot& slot, int tx, int
   glUniform1f(q.rows, static_cast<float>(slot.key.h));
   if (filter) {
     glUniform1f(q.r, static_cast<float>(factor));
-    glUniform1f(q.ring, std::clamp(options.vbaa_ring, 0.0f, 1.0f));
+    glUniform1f(q.ring, ring);
   }
   const std::array<float, 4> color = premultiplied(options.color, r.target_blending);
   glUniform4f(q.color, color[0], color[1], color[2], color[3]);
