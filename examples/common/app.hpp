@@ -2,9 +2,12 @@
 // frame timing and the screenshot of the window's default framebuffer.
 #pragma once
 
+#include <cstdio>
+#include <exception>
 #include <string>
 #include <vector>
 
+#include "curvetext/error.hpp"
 #include "curvetext/image.hpp"
 
 namespace example {
@@ -37,6 +40,33 @@ class FrameTimes {
 // One line per measurement, then the text's share:
 //   frame time with text: median 4.21 ms, min 3.90 ms (120 frames)
 void print_report(const char* app, const FrameTimes& with_text, const FrameTimes& without_text);
+
+// The examples' main: the options, then an `App` made for the window size
+// (its window, context and scene) runs its frames: with and without text for
+// --report, else once as asked. Errors go to stderr with exit status 1.
+// App: App(int width, int height) and
+// FrameTimes run(int frames, bool with_text, const std::string& screenshot).
+template <class App>
+int run_app(int argc, char** argv, const char* name, const char* usage) {
+  const AppOptions options = parse_options(argc, argv, usage);
+  try {
+    App app(options.width, options.height);
+    if (options.report) {
+      const FrameTimes with_text = app.run(options.frames, true, "");
+      const FrameTimes without_text = app.run(options.frames, false, "");
+      print_report(name, with_text, without_text);
+    } else {
+      app.run(options.frames, options.text, options.screenshot);
+    }
+  } catch (const curvetext::Error& e) {
+    std::fprintf(stderr, "%s: curvetext: %s\n", name, e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: %s\n", name, e.what());
+    return 1;
+  }
+  return 0;
+}
 
 // The back buffer of the default framebuffer (call before swapping) as an
 // opaque image, row 0 at the top: what the window shows.

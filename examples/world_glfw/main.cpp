@@ -5,6 +5,7 @@
 #include <GLES3/gl3.h>  // through libglvnd these reach the current desktop context too
 #include <GLFW/glfw3.h>
 
+#include <array>
 #include <cstddef>
 #include <cstdio>
 #include <exception>
@@ -329,28 +330,22 @@ example::FrameTimes run(Window& window, Scene& scene, int frames, bool with_text
   return times;
 }
 
+// The window, its size in pixels and the scene, for example::run_app.
+struct App {
+  Window window;
+  std::array<int, 2> size;  // the drawable's pixels, which may differ from the window's
+  Scene scene;
+  App(int w, int h) : window(w, h), size(drawable_size(window)), scene(size[0], size[1]) {}
+  static std::array<int, 2> drawable_size(Window& window) {
+    std::array<int, 2> s{0, 0};
+    glfwGetFramebufferSize(window.handle, &s[0], &s[1]);
+    return s;
+  }
+  example::FrameTimes run(int frames, bool with_text, const std::string& screenshot) {
+    return ::run(window, scene, frames, with_text, screenshot, size[0], size[1]);
+  }
+};
+
 }  // namespace
 
-int main(int argc, char** argv) {
-  const example::AppOptions options = example::parse_options(argc, argv, kUsage);
-  try {
-    Window window(options.width, options.height);
-    int width = 0, height = 0;
-    glfwGetFramebufferSize(window.handle, &width, &height);
-    Scene scene(width, height);
-    if (options.report) {
-      const example::FrameTimes with_text = run(window, scene, options.frames, true, "", width, height);
-      const example::FrameTimes without_text = run(window, scene, options.frames, false, "", width, height);
-      example::print_report("world_glfw", with_text, without_text);
-    } else {
-      run(window, scene, options.frames, options.text, options.screenshot, width, height);
-    }
-  } catch (const curvetext::Error& e) {
-    std::fprintf(stderr, "world_glfw: curvetext: %s\n", e.what());
-    return 1;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "world_glfw: %s\n", e.what());
-    return 1;
-  }
-  return 0;
-}
+int main(int argc, char** argv) { return example::run_app<App>(argc, argv, "world_glfw", kUsage); }
