@@ -674,6 +674,7 @@ struct Bench {
   std::vector<PlacedGlyph> block;  // the scene, laid out
   GlyphCache cache;                // warm for everything but the cold frames
   std::map<std::string, std::unique_ptr<Renderer>> renderers;
+  curvetext::ImageTarget target;  // the framebuffer every frame is drawn into
   std::unique_ptr<QuadProgram> bitmap_program, sdf_program;
   bool sdf_derivatives = false;
 
@@ -716,8 +717,8 @@ struct Bench {
   }
 };
 
-// One implementation in a measurement: the Renderer whose framebuffer it
-// draws into, and its frame's work (after the clear, before glFinish).
+// One implementation in a measurement: its Renderer (whose offscreen passes
+// are counted), and its frame's work (after the clear, before glFinish).
 struct Contender {
   std::string name;
   Renderer* target = nullptr;
@@ -730,8 +731,8 @@ struct Contender {
       : name(std::move(name_)), target(target_), draw(std::move(draw_)), curvetext(curvetext_) {}
 };
 
-double timed_frame(Contender& c, int frame) {
-  c.target->begin(kWidth, kHeight, kWhite);
+double timed_frame(curvetext::ImageTarget& image, Contender& c, int frame) {
+  image.begin(kWidth, kHeight, kWhite);
   glFinish();
   const std::size_t passes = c.target->offscreen_passes();
   const auto t0 = Clock::now();
@@ -745,14 +746,14 @@ double timed_frame(Contender& c, int frame) {
 
 // Rounds of one frame per contender, the order reversed every other round;
 // `warmup` rounds first, not counted.
-void run_interleaved(std::vector<Contender>& cs, int frames, int warmup = 1) {
+void run_interleaved(curvetext::ImageTarget& image, std::vector<Contender>& cs, int frames, int warmup = 1) {
   for (int round = 0; round < warmup + frames; ++round) {
     const bool counted = round >= warmup;
     if (counted && round == warmup)
       for (auto& c : cs) c.offscreen_passes = 0;
     for (std::size_t k = 0; k < cs.size(); ++k) {
       Contender& c = cs[round % 2 ? cs.size() - 1 - k : k];
-      const double ms = timed_frame(c, round);
+      const double ms = timed_frame(image, c, round);
       if (counted) c.ms.push_back(ms);
     }
   }
@@ -767,8 +768,8 @@ std::string passes_text(const Contender& c, int frames) {
 // ---------------------------------------------------------------------------
 // Sanity: the implementations must draw comparable ink.
 
-double ink(Renderer& r) {
-  const curvetext::Image img = r.read_pixels();
+double ink(const curvetext::ImageTarget& target) {
+  const curvetext::Image img = target.read_pixels();
   double sum = 0.0;
   for (std::size_t i = 0; i < img.rgba.size(); i += 4) sum += 255.0 - img.rgba[i];
   return sum / 255.0;
@@ -784,10 +785,10 @@ void check_ink(Bench& b) {
   for (AntiAliasing aa :
        {AntiAliasing::Full, AntiAliasing::None, AntiAliasing::Curves, AntiAliasing::Vbaa, AntiAliasing::Msaa}) {
     Renderer& r = b.renderer("ink");
-    r.begin(kWidth, kHeight, kWhite);
+    b.target.begin(kWidth, kHeight, kWhite);
     r.draw(batch, Placement(b.scale(px), o.x, o.y), DrawOptions(kBlack, aa));
     check_gl("drawing the ink check");
-    const double v = ink(r);
+    const double v = ink(b.target);
     if (aa == AntiAliasing::Full) full_ink = v;
     inks.emplace_back(std::string("curvetext ") + mode_name(aa), v);
   }
@@ -799,11 +800,10 @@ void check_ink(Bench& b) {
     build_quads(atlas, b.upem, b.block, q);
     QuadBuffer buf;
     buf.upload(q, GL_STATIC_DRAW);
-    Renderer& r = b.renderer("ink");
-    r.begin(kWidth, kHeight, kWhite);
+    b.target.begin(kWidth, kHeight, kWhite);
     draw_quads(b.program(atlas), atlas, buf, Bench::quad_scale(atlas, px), Bench::atlas_origin(atlas, o));
     check_gl("drawing the ink check");
-    const double v = ink(r);
+    const double v = ink(b.target);
     if (kind == GlyphAtlas::Kind::Bitmap) bitmap_ink = v;
     inks.emplace_back(kind == GlyphAtlas::Kind::Bitmap ? "bitmap atlas" : "SDF atlas", v);
   }
@@ -880,7 +880,7 @@ void steady(Bench& b) {
                       }});
       }
     }
-    run_interleaved(cs, b.opt.frames);
+    run_interleaved(b.target, cs, b.opt.frames);
     const Summary atlas = summarize(cs[0].ms);
     for (const auto& c : cs) {
       const Summary s = summarize(c.ms);
@@ -941,7 +941,7 @@ void cold(Bench& b) {
     }
     // Warm-up: shaders, offscreen targets and FreeType's own state exist in a
     // running app before its first text frame.
-    run_interleaved(cs, rounds, b.opt.warmup);
+    run_interleaved(b.target, cs, rounds, b.opt.warmup);
     const Summary atlas = summarize(cs[0].ms);
     for (const auto& c : cs) {
       const Summary s = summarize(c.ms);
@@ -1014,12 +1014,12 @@ void zoom(Bench& b) {
   // warm-up round draws one step below 12 px, so that frame 0 is a new size
   // for everyone.
   if (b.opt.warmup > 0)
-    for (auto& c : cs) timed_frame(c, -1);
+    for (auto& c : cs) timed_frame(b.target, c, -1);
   for (int f = 0; f < n; ++f)
     for (std::size_t k = 0; k < cs.size(); ++k) {
       Contender& c = cs[f % 2 ? cs.size() - 1 - k : k];
       if (f == 0) c.offscreen_passes = 0;
-      c.ms.push_back(timed_frame(c, f));
+      c.ms.push_back(timed_frame(b.target, c, f));
     }
   const Summary atlas = summarize(cs[0].ms);
   for (const auto& c : cs) {
@@ -1090,7 +1090,7 @@ void label(Bench& b) {
                       glFinish();  // inside the span anyway; before the label batch is deleted
                     }});
     }
-    run_interleaved(cs, b.opt.frames, b.opt.warmup);
+    run_interleaved(b.target, cs, b.opt.frames, b.opt.warmup);
     const Summary atlas = summarize(cs[0].ms);
     for (const auto& c : cs) {
       const Summary s = summarize(c.ms);
@@ -1148,7 +1148,7 @@ void churn(Bench& b) {
                     glFinish();  // inside the span anyway; before the batch is deleted
                   }});
   }
-  run_interleaved(cs, b.opt.frames, b.opt.warmup);
+  run_interleaved(b.target, cs, b.opt.frames, b.opt.warmup);
   const Summary atlas = summarize(cs[0].ms);
   for (const auto& c : cs) {
     const Summary s = summarize(c.ms);

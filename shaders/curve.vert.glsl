@@ -11,6 +11,7 @@ attribute vec2 a_offset;  // the glyph's placement in the block (outline units; 
 uniform mat3 u_transform;     // outline units -> framebuffer pixels, y down (projective)
 uniform vec2 u_viewport;      // framebuffer size in pixels
 uniform float u_fringe_px;    // the most growth in pixels (0: the triangles as they are)
+uniform vec3 u_depth;         // normalized device z = dot(u_depth, (x_px, y_px, 1)) (Placement::depth)
 
 varying vec4 v_coef;  // (tau1, tau2, s, 0): barycentrics; s +1 convex curve, -1 concave, 0 interior
 varying vec4 v_info;  // (kind, w, 0, 0): kind 0 interior, 2 curved; w the conic weight
@@ -98,5 +99,6 @@ void main() {
   vec3 q = u_transform * vec3(p, 1.0);
   // Homogeneous clip coordinates: the GPU divides by q.z after clipping and
   // interpolates the varyings perspective-correctly (affine in outline units).
-  gl_Position = vec4(2.0 * q.x / u_viewport.x - q.z, q.z - 2.0 * q.y / u_viewport.y, 0.0, q.z);
+  // z times w is dot(u_depth, q): the depth plane is affine in the pixel position.
+  gl_Position = vec4(2.0 * q.x / u_viewport.x - q.z, q.z - 2.0 * q.y / u_viewport.y, dot(u_depth, q), q.z);
 }

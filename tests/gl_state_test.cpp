@@ -66,6 +66,10 @@ struct State {
     i("blend equation alpha", GL_BLEND_EQUATION_ALPHA);
     on("blend", GL_BLEND);
     on("depth test", GL_DEPTH_TEST);
+    GLboolean depth_mask = GL_TRUE;
+    glGetBooleanv(GL_DEPTH_WRITEMASK, &depth_mask);
+    s.add("depth writemask", depth_mask);
+    i("depth func", GL_DEPTH_FUNC);
     on("stencil test", GL_STENCIL_TEST);
     on("cull face", GL_CULL_FACE);
     on("scissor test", GL_SCISSOR_TEST);
@@ -197,6 +201,8 @@ struct AppState {
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_DST_COLOR, GL_ONE, GL_ZERO);
     glBlendEquationSeparate(GL_FUNC_SUBTRACT, GL_FUNC_ADD);
     glEnable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    glDepthFunc(GL_GEQUAL);
     glEnable(GL_STENCIL_TEST);
     glEnable(GL_CULL_FACE);
     glEnable(GL_SCISSOR_TEST);

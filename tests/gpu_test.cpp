@@ -46,11 +46,12 @@ using Coverage = std::vector<double>;  // kW * kH, row 0 at the top
 Coverage render(const Mesh& mesh, AntiAliasing aa, CurveMode mode = CurveMode::Exact) {
   context();
   Renderer renderer;
-  renderer.begin(kW, kH, Color{1, 1, 1, 1});
+  ImageTarget target;
+  target.begin(kW, kH, Color{1, 1, 1, 1});
   DrawBatch batch = DrawBatch::from_mesh(mesh);
   // Outline units are pixels with y up: y_px = kH - y.
   renderer.draw(batch, Placement{1.0, 0.0, kH}, DrawOptions{Color{0, 0, 0, 1}, aa, mode});
-  Image img = renderer.read_pixels();
+  Image img = target.read_pixels();
   Coverage cov(static_cast<std::size_t>(kW) * kH);
   for (int y = 0; y < kH; ++y)
     for (int x = 0; x < kW; ++x) cov[static_cast<std::size_t>(y) * kW + x] = 1.0 - img.pixel(x, y)[0] / 255.0;
@@ -362,11 +363,12 @@ TEST(Coverage, FanIsWatertightUnderTranslucentColor) {
   }
   context();
   Renderer renderer;
-  renderer.begin(kW, kH, Color{1, 1, 1, 1});
+  ImageTarget target;
+  target.begin(kW, kH, Color{1, 1, 1, 1});
   DrawBatch batch = DrawBatch::from_mesh(m);
   renderer.draw(batch, Placement{1.0, 0.0, kH},
                 DrawOptions{Color{0, 0, 0, 0.5f}, AntiAliasing::Full, CurveMode::Exact});
-  const Image img = renderer.read_pixels();
+  const Image img = target.read_pixels();
   int checked = 0, bad = 0;
   for (int y = 0; y < kH; ++y)
     for (int x = 0; x < kW; ++x) {
@@ -392,6 +394,7 @@ TEST(Text, GlyphBatchMatchesFreeTypeReference) {
 
   GlyphCache cache;
   Renderer renderer;
+  ImageTarget target;
   DrawBatch batch = DrawBatch::from_text(cache, font, line, ppem);
   EXPECT_GT(batch.vertex_count(), 0u);
   if (batch.instanced()) {
@@ -399,9 +402,9 @@ TEST(Text, GlyphBatchMatchesFreeTypeReference) {
   } else {
     EXPECT_GT(batch.gpu_bytes(), batch.vertex_count() * sizeof(gpu::Vertex));  // and the indices
   }
-  renderer.begin(width, height, Color{1, 1, 1, 1});
+  target.begin(width, height, Color{1, 1, 1, 1});
   renderer.draw(batch, placement, DrawOptions{});
-  const test::Coverage got = test::coverage_from_black_on_white(renderer.read_pixels());
+  const test::Coverage got = test::coverage_from_black_on_white(target.read_pixels());
 
   const test::Coverage want = test::freetype_reference(test::line_outline(font, line), placement, width, height, 8);
   const test::CoverageStats s = test::compare(got, want);
@@ -506,21 +509,22 @@ TEST(Text, CacheEvictsWithinBudget) {
 TEST(Renderer, SizeAboveGlMaximumIsInvalidArgument) {
   context();
   Renderer renderer;
+  ImageTarget target;
   try {
-    renderer.begin(1 << 20, 4, Color{1, 1, 1, 1});
+    target.begin(1 << 20, 4, Color{1, 1, 1, 1});
     FAIL() << "expected InvalidArgument";
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ErrorCode::InvalidArgument) << e.what();
   }
   try {
-    renderer.begin(0, 4, Color{1, 1, 1, 1});
+    target.begin(0, 4, Color{1, 1, 1, 1});
     FAIL() << "expected InvalidArgument";
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ErrorCode::InvalidArgument) << e.what();
   }
   // Still usable afterwards.
-  renderer.begin(8, 8, Color{1, 0, 0, 0.5f});
-  Image img = renderer.read_pixels();
+  target.begin(8, 8, Color{1, 0, 0, 0.5f});
+  Image img = target.read_pixels();
   EXPECT_EQ(img.pixel(3, 3)[0], 255);
   EXPECT_NEAR(img.pixel(3, 3)[3], 128, 1);
 }
@@ -642,6 +646,7 @@ TEST(DrawBatchUpload, SixteenBitThirtyTwoBitAndArraysDrawTheSame) {
   const double scale = 30.0 / font.metrics().units_per_em;
   const Placement placement{scale, 3.25, 30.5};
   Renderer renderer;
+  ImageTarget target;
   std::vector<Image> images;
   for (gpu::IndexUpload how : {gpu::IndexUpload::Bits16, gpu::IndexUpload::Bits32, gpu::IndexUpload::Arrays}) {
     DrawBatch batch = DrawBatchAccess::make(gpu::upload(packed, how));
@@ -651,9 +656,9 @@ TEST(DrawBatchUpload, SixteenBitThirtyTwoBitAndArraysDrawTheSame) {
                                           : packed.indices.size() * 32;
     EXPECT_EQ(batch.gpu_bytes(), expected);
     for (AntiAliasing aa : {AntiAliasing::Full, AntiAliasing::Curves}) {
-      renderer.begin(160, 44, Color{1, 1, 1, 1});
+      target.begin(160, 44, Color{1, 1, 1, 1});
       renderer.draw(batch, placement, DrawOptions(Color{0, 0, 0, 1}, aa));
-      images.push_back(renderer.read_pixels());
+      images.push_back(target.read_pixels());
     }
   }
   for (std::size_t i = 2; i < images.size(); ++i) {

@@ -342,12 +342,12 @@ TEST(TextBlockDraw, ParagraphInTheAppsViewportMatchesTheImagePath) {
     const Image image = render_paragraph_image(gpu().renderer, gpu().cache, p, options);
     const int dx = 37, dy = 21;  // the viewport's offset (GL: from the bottom left)
     const int W = image.width + dx + 13, H = image.height + dy + 9;
-    gpu().renderer.begin(W, H, Color{1, 1, 1, 1});
+    gpu().target.begin(W, H, Color{1, 1, 1, 1});
     glViewport(dx, dy, image.width, image.height);
     DrawOptions draw;
     draw.antialiasing = aa;
     block.draw(gpu().renderer, options.margin_px, options.margin_px, draw);
-    const Image app = gpu().renderer.read_pixels();
+    const Image app = gpu().target.read_pixels();
     // Rows from the top: the viewport's top row is H - (dy + height).
     const int top = H - (dy + image.height);
     int differ = 0, outside_ink = 0, largest = 0;

@@ -200,9 +200,9 @@ TEST(DrawBatchTransform, MovingAndScalingChangeOnlyUniforms) {
   ASSERT_GT(vertices, 0u);
   const double scale = 24.0 / font.metrics().units_per_em;
   auto draw = [&](Placement p, int w, int h) {
-    gpu().renderer.begin(w, h, Color{1, 1, 1, 1});
+    gpu().target.begin(w, h, Color{1, 1, 1, 1});
     gpu().renderer.draw(batch, p, DrawOptions{});
-    return test::coverage_from_black_on_white(gpu().renderer.read_pixels());
+    return test::coverage_from_black_on_white(gpu().target.read_pixels());
   };
   const test::Coverage a = draw({scale, 10.25, 40.5}, 220, 80);
   const test::Coverage b = draw({scale, 13.25, 45.5}, 220, 80);
@@ -237,9 +237,9 @@ TEST(DrawBatchTransform, FractionalOffsetMatchesExactCoverageShifted) {
   for (AntiAliasing aa : {AntiAliasing::Full, AntiAliasing::Vbaa}) {
     for (const Vec2 offset : {Vec2{0.0, 0.0}, Vec2{0.37, 0.0}, Vec2{0.5, 0.61}, Vec2{0.83, 0.29}}) {
       const Placement placement{scale, 4.0 + offset.x, 20.0 + offset.y};
-      gpu().renderer.begin(w, h, Color{1, 1, 1, 1});
+      gpu().target.begin(w, h, Color{1, 1, 1, 1});
       gpu().renderer.draw(batch, placement, DrawOptions(Color{0, 0, 0, 1}, aa));
-      const test::Coverage got = test::coverage_from_black_on_white(gpu().renderer.read_pixels());
+      const test::Coverage got = test::coverage_from_black_on_white(gpu().target.read_pixels());
       const test::Coverage want = test::union_coverage(test::place_outline(outline, placement), w, h);
       const Placement away{scale, placement.origin_x + 1.0 / 3.0, placement.origin_y};
       const test::Coverage control = test::union_coverage(test::place_outline(outline, away), w, h);
@@ -296,10 +296,10 @@ TEST(OffscreenTiles, WideBlocksAreDrawnTileByTileWithoutSeams) {
     DrawOptions options(Color{0, 0, 0, 1}, m.aa);
     options.vbaa_factor = 8;
     const std::size_t passes = gpu().renderer.offscreen_passes();
-    gpu().renderer.begin(w, h, Color{1, 1, 1, 1});
+    gpu().target.begin(w, h, Color{1, 1, 1, 1});
     gpu().renderer.draw(batch, placement, options);
     const std::size_t tiles = gpu().renderer.offscreen_passes() - passes;
-    const test::Coverage got = test::coverage_from_black_on_white(gpu().renderer.read_pixels());
+    const test::Coverage got = test::coverage_from_black_on_white(gpu().target.read_pixels());
     const test::CoverageStats s = test::compare(got, want);
     std::printf("%s over %d px in %zu tiles: edge %.4f, max %.3f, ink %.4f\n",
                 m.aa == AntiAliasing::Vbaa ? "vbaa r=8" : "msaa", w, tiles, s.edge_mean_abs, s.max_abs, s.ink_ratio);
@@ -347,12 +347,12 @@ TEST(Viewport, SplitScreenDrawsEachTextInItsOwnViewport) {
   };
   for (const Mode& m : {Mode{AntiAliasing::Full, 0.005}, Mode{AntiAliasing::Vbaa, 0.005},
                         Mode{AntiAliasing::Msaa, 0.06}, Mode{AntiAliasing::Curves, 0.12}}) {
-    g.renderer.begin(W, H, Color{1, 1, 1, 1});
+    g.target.begin(W, H, Color{1, 1, 1, 1});
     for (const View& v : views) {
       glViewport(v.x, v.y, v.w, v.h);
       g.renderer.draw(*v.batch, in_view, DrawOptions(Color{0, 0, 0, 1}, m.aa));
     }
-    const test::Coverage got = test::coverage_from_black_on_white(g.renderer.read_pixels());
+    const test::Coverage got = test::coverage_from_black_on_white(g.target.read_pixels());
     const test::CoverageStats st = test::compare(got, want);
     std::printf("split screen, mode %d: edge %.4f, max %.3f, ink %.4f\n", static_cast<int>(m.aa), st.edge_mean_abs,
                 st.max_abs, st.ink_ratio);
@@ -385,9 +385,9 @@ TEST(ZoomAccuracy, CubicGlyphWindowsStayWithinASixteenthPixel) {
           if (seg.kind == Segment::Kind::Cubic && centre == Vec2{}) centre = evaluate(seg, 0.5);
       const int size = 200;
       const Placement p{scale, size / 2.0 - scale * centre.x - 0.37, size / 2.0 + scale * centre.y + 0.21};
-      gpu().renderer.begin(size, size, Color{1, 1, 1, 1});
+      gpu().target.begin(size, size, Color{1, 1, 1, 1});
       gpu().renderer.draw(batch, p, DrawOptions{});
-      const test::Coverage got = test::coverage_from_black_on_white(gpu().renderer.read_pixels());
+      const test::Coverage got = test::coverage_from_black_on_white(gpu().target.read_pixels());
       const test::Coverage ref = test::freetype_reference(outline, p, size, size, 16);
       const test::CoverageStats s = test::compare(got, ref);
       std::printf("zoom %s at %.0f px/em: edge %.4f max %.4f (%zu edge pixels)\n", text, ppem, s.edge_mean_abs,
@@ -456,11 +456,11 @@ test::Coverage draw_circle(double radius, CurveMode mode, double cx, double cy, 
   Gpu& g = gpu();  // the GL context must exist before the batch uploads
   const Mesh mesh = build_mesh(circle(radius));
   DrawBatch batch = DrawBatch::from_mesh(mesh);
-  g.renderer.begin(size, size, Color{1, 1, 1, 1});
+  g.target.begin(size, size, Color{1, 1, 1, 1});
   DrawOptions options;
   options.curve_mode = mode;
   g.renderer.draw(batch, Placement{1.0, cx, cy}, options);
-  return test::coverage_from_black_on_white(g.renderer.read_pixels());
+  return test::coverage_from_black_on_white(g.target.read_pixels());
 }
 
 // Full antialiasing grows every triangle by a pixel's reach (miters, and
@@ -498,9 +498,9 @@ TEST(FullAntialiasingGrowth, EdgesGrowByThePixelBoxReach) {
   for (int step = 0; step < 64; ++step) {
     const double f = step / 64.0;
     const Placement placement{1.0, 1.0 + f, 19.0 + f * 0.75};
-    g.renderer.begin(50, 22, Color{1, 1, 1, 1});
+    g.target.begin(50, 22, Color{1, 1, 1, 1});
     g.renderer.draw(batch, placement, DrawOptions(Color{0, 0, 0, 1}, AntiAliasing::Full));
-    const test::Coverage got = test::coverage_from_black_on_white(g.renderer.read_pixels());
+    const test::Coverage got = test::coverage_from_black_on_white(g.target.read_pixels());
     const test::Coverage want = test::union_coverage(test::place_outline(shapes, placement), 50, 22);
     const test::CoverageStats s = test::compare(got, want);
     worst = std::max(worst, s.max_abs);
@@ -531,9 +531,9 @@ TEST(FullAntialiasingGrowth, SharpTrianglesGetEveryPixelTheyTouch) {
     DrawBatch batch = DrawBatch::from_mesh(mesh);
     const int width = static_cast<int>(std::ceil(84 * scale)) + 4, height = static_cast<int>(std::ceil(42 * scale)) + 4;
     const Placement placement{scale, 1.3, height - 1.7};
-    g.renderer.begin(width, height, Color{1, 1, 1, 1});
+    g.target.begin(width, height, Color{1, 1, 1, 1});
     g.renderer.draw(batch, placement, DrawOptions(Color{0, 0, 0, 1}, AntiAliasing::Full));
-    const test::Coverage got = test::coverage_from_black_on_white(g.renderer.read_pixels());
+    const test::Coverage got = test::coverage_from_black_on_white(g.target.read_pixels());
     const test::Coverage want = test::union_coverage(test::place_outline(shapes, placement), width, height);
     const test::CoverageStats s = test::compare(got, want);
     std::printf("sharp triangles at scale %.2f: max %.4f, edge %.4f, ink %.4f\n", scale, s.max_abs, s.edge_mean_abs,
@@ -562,9 +562,9 @@ double worst_sliver_error(const Mesh& mesh, const Outline& regions, std::initial
     for (int i = 0; i < 8; ++i)
       for (int j = 0; j < 8; ++j) {
         const Placement placement{scale, 8.0 + i / 8.0 - anchor.x * scale, 8.0 + j / 8.0 + anchor.y * scale};
-        g.renderer.begin(width, height, Color{1, 1, 1, 1});
+        g.target.begin(width, height, Color{1, 1, 1, 1});
         g.renderer.draw(batch, placement, DrawOptions(Color{0, 0, 0, 1}, AntiAliasing::Full));
-        const test::Coverage got = test::coverage_from_black_on_white(g.renderer.read_pixels());
+        const test::Coverage got = test::coverage_from_black_on_white(g.target.read_pixels());
         const test::Coverage want = test::union_coverage(test::place_outline(regions, placement), width, height);
         const double e = test::compare(got, want).max_abs;
         if (e > 3.0 / 255.0 && e > worst) test::write_comparison(name, got, want);

@@ -28,6 +28,7 @@ std::vector<Image> draw_alone(const std::string& text, int rounds) {
   const Font font = Font::open(test::kDejaVuSans);
   GlyphCache cache;
   Renderer renderer;
+  ImageTarget target;
   const ShapedLine line = shape_line(font, text);
   const double ppem = 20.0, scale = ppem / font.metrics().units_per_em;
   std::vector<Image> images;
@@ -35,9 +36,9 @@ std::vector<Image> draw_alone(const std::string& text, int rounds) {
     Image last;
     for (int i = 0; i < rounds; ++i) {
       const DrawBatch batch = DrawBatch::from_text(cache, font, line, ppem);
-      renderer.begin(260, 32, Color{1, 1, 1, 1});
+      target.begin(260, 32, Color{1, 1, 1, 1});
       renderer.draw(batch, Placement(scale, 4.25, 24.5), DrawOptions(Color{0, 0, 0, 1}, aa));
-      last = renderer.read_pixels();
+      last = target.read_pixels();
     }
     images.push_back(std::move(last));
   }

@@ -109,7 +109,7 @@ TEST(Plane, OnPlaneFollowsTheModelViewProjection) {
   const std::array<float, 16> mvp = camera_mvp(static_cast<double>(w) / h);
   const double units = 0.002;  // plane units per outline unit
   const Placement placement = Placement::on_plane(mvp.data(), w, h, units, 0.25, 0.4);
-  double worst = 0.0;
+  double worst = 0.0, worst_z = 0.0;
   for (const Vec2 o : {Vec2{0, 0}, Vec2{500, 0}, Vec2{0, 700}, Vec2{1200, -300}}) {
     const double X = 0.25 + units * o.x, Y = 0.4 + units * o.y;  // on the plane, y up
     double clip[4];
@@ -120,8 +120,12 @@ TEST(Plane, OnPlaneFollowsTheModelViewProjection) {
     const Vec2 pre{placement.scale * o.x + placement.origin_x, placement.origin_y - placement.scale * o.y};
     const Vec2 got = placement.transform.apply(pre);
     worst = std::max({worst, std::abs(got.x - want.x), std::abs(got.y - want.y)});
+    // Its depth: the pipeline's normalized device z at that pixel.
+    const auto& d = placement.depth;
+    worst_z = std::max(worst_z, std::abs(d[0] * want.x + d[1] * want.y + d[2] - clip[2] / clip[3]));
   }
   EXPECT_LT(worst, 1e-3) << "pixels from the pipeline's projection";
+  EXPECT_LT(worst_z, 1e-6) << "device z from the pipeline's projection";
   const float bad[16] = {std::nanf(""), 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
   EXPECT_THROW(Transform::plane_to_viewport(bad, w, h), Error);
   EXPECT_THROW(Transform::plane_to_viewport(mvp.data(), 0, h), Error);
@@ -130,9 +134,9 @@ TEST(Plane, OnPlaneFollowsTheModelViewProjection) {
   const Font font = Font::open(test::kDejaVuSans);
   const ShapedLine line = shape_line(font, "Plane");
   DrawBatch batch = DrawBatch::from_text(gpu().cache, font, line, 48.0);
-  gpu().renderer.begin(w, h, Color{1, 1, 1, 1});
+  gpu().target.begin(w, h, Color{1, 1, 1, 1});
   gpu().renderer.draw(batch, placement, DrawOptions(Color{0, 0, 0, 1}, AntiAliasing::Full));
-  const test::Coverage got = test::coverage_from_black_on_white(gpu().renderer.read_pixels());
+  const test::Coverage got = test::coverage_from_black_on_white(gpu().target.read_pixels());
   Placement untransformed = placement;
   untransformed.transform = Transform{};
   const test::Coverage want = test::union_coverage(
@@ -206,14 +210,14 @@ TEST(Vbaa, OffscreenPassIsReusedWhileNothingChanges) {
   const double s = 20.0 / font.metrics().units_per_em;
   DrawOptions options;
   options.antialiasing = AntiAliasing::Vbaa;
-  g.renderer.begin(100, 40, Color{1, 1, 1, 1});
+  g.target.begin(100, 40, Color{1, 1, 1, 1});
   const std::size_t before = g.renderer.offscreen_passes();
   g.renderer.draw(batch, Placement{s, 5.0, 30.0}, options);
-  const Image first = g.renderer.read_pixels();
-  g.renderer.begin(100, 40, Color{1, 1, 1, 1});
+  const Image first = g.target.read_pixels();
+  g.target.begin(100, 40, Color{1, 1, 1, 1});
   g.renderer.draw(batch, Placement{s, 5.0, 30.0}, options);
   EXPECT_EQ(g.renderer.offscreen_passes(), before + 1);
-  EXPECT_EQ(g.renderer.read_pixels().rgba, first.rgba);
+  EXPECT_EQ(g.target.read_pixels().rgba, first.rgba);
   g.renderer.draw(batch, Placement{s, 6.0, 30.0}, options);  // moved: a new pass
   EXPECT_EQ(g.renderer.offscreen_passes(), before + 2);
 }

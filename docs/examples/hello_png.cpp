@@ -10,6 +10,7 @@
 #include "curvetext/font.hpp"
 #include "curvetext/headless.hpp"
 #include "curvetext/image.hpp"
+#include "curvetext/image_target.hpp"
 #include "curvetext/renderer.hpp"
 #include "curvetext/shaping.hpp"
 
@@ -44,11 +45,12 @@ int main(int argc, char** argv) {
 
     // No window here: an EGL context of our own (Mesa's llvmpipe without a GPU).
     HeadlessContext context = HeadlessContext::create();
-    Renderer renderer;  // of the current context; compiles each mode's shaders on first use
-    GlyphCache cache;   // glyph meshes, built once per glyph and reused
-    renderer.begin(width, height, Color{1, 1, 1, 1});  // an offscreen framebuffer, cleared
+    Renderer renderer;   // of the current context; compiles each mode's shaders on first use
+    ImageTarget target;  // an offscreen image to draw into
+    GlyphCache cache;    // glyph meshes, built once per glyph and reused
+    target.begin(width, height, Color{1, 1, 1, 1});  // an offscreen framebuffer, cleared
     draw_line(renderer, cache, font, text, size_px, margin, margin + m.ascender * scale);
-    write_png(renderer.read_pixels(), out_path);
+    write_png(target.read_pixels(), out_path);
     std::printf("wrote %s (%dx%d)\n", out_path.c_str(), width, height);
   } catch (const Error& e) {
     std::fprintf(stderr, "hello_png: %s\n", e.what());

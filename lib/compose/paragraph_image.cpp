@@ -39,9 +39,10 @@ Image render_paragraph_image(Renderer& renderer, GlyphCache& cache, const Paragr
   DrawOptions draw = draw_options(options, Color{0, 0, 0, 1}, 1.0);
   draw.antialiasing = options.antialiasing;
   const TextBlock block = TextBlock::from_paragraph(cache, paragraph, frame.largest_stretch);
-  renderer.begin(frame.width, frame.height, options.background, options.blending);
+  ImageTarget target;
+  target.begin(frame.width, frame.height, options.background, options.blending);
   block.draw(renderer, options.margin_px, options.margin_px, draw, frame.transform);
-  return renderer.read_pixels();
+  return target.read_pixels();
 }
 
 }  // namespace curvetext

@@ -121,14 +121,15 @@ Image render_shape_image(Renderer& renderer, const ShapeDocument& doc, const Sha
     meshes.push_back(build_mesh(fill_outline(shape, tolerance), mo));
   }
   check_coverage_gamma(options.gamma);
-  renderer.begin(layout.width, layout.height, options.background, options.blending);
+  ImageTarget target;
+  target.begin(layout.width, layout.height, options.background, options.blending);
   for (std::size_t i = 0; i < meshes.size(); ++i) {
     if (meshes[i].empty()) continue;
     DrawBatch batch = DrawBatch::from_mesh(meshes[i]);
     const DrawOptions draw = draw_options(options, doc.shapes[i].color, on_screen_size(doc.shapes[i], layout));
     renderer.draw(batch, layout.placement, draw);
   }
-  return renderer.read_pixels();
+  return target.read_pixels();
 }
 
 }  // namespace curvetext

@@ -56,9 +56,10 @@ Image render_text_image(Renderer& renderer, GlyphCache& cache, const Font& font,
   DrawBatch batch = DrawBatch::from_text(cache, font, layout.line, options.size_px * layout.largest_stretch);
   // auto: per pixels per em on screen, as for paragraphs (image_style.hpp).
   const DrawOptions draw = draw_options(options, options.foreground, options.size_px * layout.largest_stretch);
-  renderer.begin(layout.width, layout.height, options.background, options.blending);
+  ImageTarget target;
+  target.begin(layout.width, layout.height, options.background, options.blending);
   renderer.draw(batch, layout.placement, draw);
-  return renderer.read_pixels();
+  return target.read_pixels();
 }
 
 }  // namespace curvetext

@@ -57,6 +57,32 @@ Transform Transform::plane_to_viewport(const float mvp[16], double width, double
   return t;
 }
 
+std::array<double, 3> Transform::plane_depth(const float mvp[16], double width, double height) {
+  plane_to_viewport(mvp, width, height);  // the same checks
+  // The plane's points are clip = x col0 + y col1 + col3; L with L . clip = 0
+  // for all of them is the generalized cross product of those three columns.
+  // Dividing by w: L0 x_ndc + L1 y_ndc + L2 z_ndc + L3 = 0.
+  double c[3][4];
+  const int columns[3] = {0, 1, 3};
+  for (int k = 0; k < 3; ++k)
+    for (int row = 0; row < 4; ++row) c[k][row] = static_cast<double>(mvp[4 * columns[k] + row]);
+  auto minor = [&](int skip) {
+    int col[3], n = 0;
+    for (int i = 0; i < 4; ++i)
+      if (i != skip) col[n++] = i;
+    return c[0][col[0]] * (c[1][col[1]] * c[2][col[2]] - c[1][col[2]] * c[2][col[1]]) -
+           c[0][col[1]] * (c[1][col[0]] * c[2][col[2]] - c[1][col[2]] * c[2][col[0]]) +
+           c[0][col[2]] * (c[1][col[0]] * c[2][col[1]] - c[1][col[1]] * c[2][col[0]]);
+  };
+  const double l[4] = {minor(0), -minor(1), minor(2), -minor(3)};
+  const double scale = std::max({std::abs(l[0]), std::abs(l[1]), std::abs(l[3])});
+  if (!(std::abs(l[2]) > 1e-12 * scale)) return {0.0, 0.0, 0.0};  // edge-on
+  // z_ndc = -(L0 x_ndc + L1 y_ndc + L3) / L2 with x_ndc = X / hw - 1, y_ndc = 1 - Y / hh.
+  const double hw = width / 2.0, hh = height / 2.0;
+  const double a = -l[0] / l[2], b = -l[1] / l[2], g = -l[3] / l[2];
+  return {a / hw, -b / hh, g - a + b};
+}
+
 Transform Transform::about(Vec2 c) const { return translation(c.x, c.y) * *this * translation(-c.x, -c.y); }
 
 bool Transform::is_identity() const { return m == Transform{}.m; }

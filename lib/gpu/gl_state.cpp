@@ -68,6 +68,7 @@ GlStateBackup::GlStateBackup(const ContextInfo& info) : info_(info) {
   glGetIntegerv(GL_BLEND_EQUATION_ALPHA, &blend_equation_alpha_);
   blend_ = glIsEnabled(GL_BLEND);
   depth_test_ = glIsEnabled(GL_DEPTH_TEST);
+  glGetBooleanv(GL_DEPTH_WRITEMASK, &depth_mask_);
   stencil_test_ = glIsEnabled(GL_STENCIL_TEST);
   cull_face_ = glIsEnabled(GL_CULL_FACE);
   scissor_test_ = glIsEnabled(GL_SCISSOR_TEST);
@@ -95,6 +96,8 @@ void GlStateBackup::apply_target() const {
   glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
   glScissor(scissor_box_[0], scissor_box_[1], scissor_box_[2], scissor_box_[3]);
   set_enabled(GL_SCISSOR_TEST, scissor_test_);
+  set_enabled(GL_DEPTH_TEST, depth_test_);
+  glDepthMask(depth_mask_);
   glColorMask(color_mask_[0], color_mask_[1], color_mask_[2], color_mask_[3]);
 }
 
@@ -130,7 +133,6 @@ GlStateBackup::~GlStateBackup() {
                       static_cast<GLenum>(blend_src_alpha_), static_cast<GLenum>(blend_dst_alpha_));
   glBlendEquationSeparate(static_cast<GLenum>(blend_equation_rgb_), static_cast<GLenum>(blend_equation_alpha_));
   set_enabled(GL_BLEND, blend_);
-  set_enabled(GL_DEPTH_TEST, depth_test_);
   set_enabled(GL_STENCIL_TEST, stencil_test_);
   set_enabled(GL_CULL_FACE, cull_face_);
   glClearColor(clear_color_[0], clear_color_[1], clear_color_[2], clear_color_[3]);

@@ -28,9 +28,9 @@ class GlStateBackup {
   GlStateBackup(const GlStateBackup&) = delete;
   GlStateBackup& operator=(const GlStateBackup&) = delete;
 
-  // The application's target as it was: framebuffer, viewport, scissor and
-  // colour mask (the composite pass draws there after an offscreen pass
-  // changed them).
+  // The application's target as it was: framebuffer, viewport, scissor,
+  // depth test and depth writes, and colour mask (the composite pass draws
+  // there after an offscreen pass changed them).
   void apply_target() const;
   GLuint draw_framebuffer() const { return static_cast<GLuint>(draw_fbo_); }
   const GLint* viewport() const { return viewport_; }
@@ -48,7 +48,7 @@ class GlStateBackup {
   GLint viewport_[4] = {0, 0, 0, 0}, scissor_box_[4] = {0, 0, 0, 0};
   GLint blend_src_rgb_ = 0, blend_dst_rgb_ = 0, blend_src_alpha_ = 0, blend_dst_alpha_ = 0;
   GLint blend_equation_rgb_ = 0, blend_equation_alpha_ = 0;
-  GLboolean blend_ = 0, depth_test_ = 0, stencil_test_ = 0, cull_face_ = 0, scissor_test_ = 0;
+  GLboolean blend_ = 0, depth_test_ = 0, depth_mask_ = 1, stencil_test_ = 0, cull_face_ = 0, scissor_test_ = 0;
   GLboolean primitive_restart_ = 0, rasterizer_discard_ = 0;
   GLboolean color_mask_[4] = {1, 1, 1, 1};
   GLfloat clear_color_[4] = {0, 0, 0, 0};

@@ -1,4 +1,4 @@
-// The curve shader program, an offscreen RGBA framebuffer, and drawing of
+// The curve shader programs, offscreen coverage passes, and drawing of
 // batches with premultiplied source-over blending.
 #include <GLES3/gl3.h>
 
@@ -19,33 +19,16 @@
 #include "curvetext/tolerances.hpp"
 #include "gpu/batch_impl.hpp"
 #include "gpu/gl_state.hpp"
+#include "gpu/gl_util.hpp"
 #include "gpu/shader_sources.hpp"
 
 namespace curvetext {
 
+using gpu::hex;
+using gpu::new_texture;
+using gpu::premultiplied;
+
 namespace {
-
-std::string hex(GLenum e) {
-  char buf[16];
-  std::snprintf(buf, sizeof buf, "0x%04x", static_cast<unsigned>(e));
-  return buf;
-}
-
-// A new texture of w x h texels, no data, sampled nearest and clamped: the
-// renderer's framebuffers and coverage textures. Leaves no texture bound (the
-// caller restores the application's binding).
-GLuint new_texture(GLint internal_format, GLenum format, int w, int h) {
-  GLuint texture = 0;
-  glGenTextures(1, &texture);
-  glBindTexture(GL_TEXTURE_2D, texture);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  glTexImage2D(GL_TEXTURE_2D, 0, internal_format, w, h, 0, format, GL_UNSIGNED_BYTE, nullptr);
-  glBindTexture(GL_TEXTURE_2D, 0);
-  return texture;
-}
 
 // Owns one GL shader object.
 struct Shader {
@@ -142,30 +125,16 @@ GLuint link_program(const Shader& vs, const Shader& fs, std::initializer_list<co
   return program;
 }
 
-// sRGB transfer functions (IEC 61966-2-1), on values in [0, 1].
-float srgb_to_linear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
-float linear_to_srgb(float c) { return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f; }
-
-// `c` premultiplied, in the space the framebuffer blends in.
-std::array<float, 4> premultiplied(const Color& c, Blending blending) {
-  const float a = std::clamp(c.a, 0.0f, 1.0f);
-  std::array<float, 4> out{std::clamp(c.r, 0.0f, 1.0f), std::clamp(c.g, 0.0f, 1.0f), std::clamp(c.b, 0.0f, 1.0f), a};
-  for (int i = 0; i < 3; ++i) {
-    if (blending == Blending::Linear) out[i] = srgb_to_linear(out[i]);
-    out[i] *= a;
-  }
-  return out;
-}
-
 }  // namespace
 
 namespace {
 // The uniforms both curve programs (curve.vert.glsl with curve.frag.glsl or
 // area.frag.glsl) have.
 struct ProgramUniforms {
-  GLint transform = -1, viewport = -1, fringe_px = -1, color = -1, coverage_exponent = -1, curve_mode = -1;
+  GLint transform = -1, viewport = -1, depth = -1, fringe_px = -1, color = -1, coverage_exponent = -1, curve_mode = -1;
   static ProgramUniforms of(GLuint program) {
     ProgramUniforms u;
+    u.depth = glGetUniformLocation(program, "u_depth");
     u.transform = glGetUniformLocation(program, "u_transform");
     u.viewport = glGetUniformLocation(program, "u_viewport");
     u.fringe_px = glGetUniformLocation(program, "u_fringe_px");
@@ -188,7 +157,9 @@ struct Renderer::Impl {
   // gamma would cost every fragment even where gamma is 1.
   GLuint area_program[2][2] = {{0, 0}, {0, 0}};
   ProgramUniforms area_u[2][2];
-  Blending blending = Blending::Srgb;         // of the target begin() made
+  // The depth plane of the pass being drawn (set_view): the placement's for
+  // the pass into the application's framebuffer, 0 offscreen.
+  std::array<float, 3> pass_depth{0.0f, 0.0f, 0.0f};
   Blending target_blending = Blending::Srgb;  // of the framebuffer the current draw targets
   bool gles = true;
   gpu::ContextInfo info;  // of the context current at construction
@@ -198,9 +169,6 @@ struct Renderer::Impl {
   // of the bytes the passes write and the composite reads.
   bool single_channel = false;
   std::size_t texel_bytes() const { return single_channel ? 1u : 4u; }
-  GLuint framebuffer = 0;
-  GLuint texture = 0;
-  int width = 0, height = 0;
 
   // The second pass of full / vbaa / msaa: a quad over the block's box that
   // reads its coverage texture, one fetch per pixel (composite.frag.glsl) or
@@ -208,7 +176,7 @@ struct Renderer::Impl {
   struct QuadProgram {
     GLuint id = 0;
     GLint texture = -1, texture_size = -1, rect_origin = -1, rows = -1, r = -1, ring = -1, color = -1,
-          coverage_exponent = -1;
+          coverage_exponent = -1, depth = -1;
   };
   // composite[box][gamma]: one fetch per pixel, or vbaa's box filter
   // (CURVETEXT_BOX); with gamma or not. Each made when first needed.
@@ -320,9 +288,10 @@ struct Renderer::Impl {
       if (info.gles) glDisable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
     }
     glBlendEquation(GL_FUNC_ADD);
-    glDisable(GL_DEPTH_TEST);
     glDisable(GL_STENCIL_TEST);
-    glDisable(GL_CULL_FACE);
+    glDisable(GL_CULL_FACE);  // triangles come in either orientation
+    // The depth test stays the application's for the pass into its
+    // framebuffer; the offscreen passes turn it off.
   }
 
   // Each program compiled and linked on first use (Error(Gl) if it fails).
@@ -343,7 +312,6 @@ struct Renderer::Impl {
   Impl(const Impl&) = delete;
   Impl& operator=(const Impl&) = delete;
   ~Impl() {
-    release_target();
     for (GLuint p : {program, area_program[0][0], area_program[0][1], area_program[1][0], area_program[1][1],
                      resolve.id, composite[0][0].id, composite[0][1].id, composite[1][0].id, composite[1][1].id})
       if (p != 0) glDeleteProgram(p);
@@ -355,13 +323,6 @@ struct Renderer::Impl {
     }
     if (ms_fbo != 0) glDeleteFramebuffers(1, &ms_fbo);
     if (ms_rb != 0) glDeleteRenderbuffers(1, &ms_rb);
-  }
-  void release_target() {
-    if (framebuffer != 0) glDeleteFramebuffers(1, &framebuffer);
-    if (texture != 0) glDeleteTextures(1, &texture);
-    framebuffer = 0;
-    texture = 0;
-    width = height = 0;
   }
 };
 
@@ -383,6 +344,7 @@ RendererImpl::QuadProgram quad_program(const char* fragment_source, bool gles, c
   q.texture = glGetUniformLocation(q.id, "u_texture");
   q.texture_size = glGetUniformLocation(q.id, "u_texture_size");
   q.rect_origin = glGetUniformLocation(q.id, "u_rect_origin");
+  q.depth = glGetUniformLocation(q.id, "u_depth");
   q.rows = glGetUniformLocation(q.id, "u_rows");
   q.r = glGetUniformLocation(q.id, "u_r");
   q.ring = glGetUniformLocation(q.id, "u_ring");
@@ -466,75 +428,6 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
 
 Renderer::~Renderer() = default;
 
-void Renderer::begin(int width, int height, Color background, Blending blending) {
-  Impl& r = *impl_;
-  if (width <= 0 || height <= 0) {
-    throw Error(ErrorCode::InvalidArgument,
-                "image size " + std::to_string(width) + "x" + std::to_string(height) + " must be positive");
-  }
-  GLint max_texture = 0, max_renderbuffer = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
-  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_renderbuffer);
-  GLint max_viewport[2] = {0, 0};
-  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, max_viewport);
-  int limit = std::min({max_texture, max_renderbuffer, max_viewport[0], max_viewport[1]});
-  limit = std::min(limit, static_cast<int>(tolerance::kMaxImageSidePx));
-  if (width > limit || height > limit) {
-    throw Error(ErrorCode::InvalidArgument, "image size " + std::to_string(width) + "x" + std::to_string(height) +
-                                                " exceeds the GL maximum of " + std::to_string(limit) +
-                                                " pixels per side");
-  }
-  gpu::check_no_pending_error("Renderer::begin");
-  // The framebuffer bound may be the renderer's own from an earlier begin(),
-  // which is about to be replaced: not one to bind again afterwards.
-  GLint bound = 0;
-  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &bound);
-  if (r.framebuffer != 0 && static_cast<GLuint>(bound) == r.framebuffer) glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  {
-    // Everything but the framebuffer binding and viewport this sets up comes
-    // back as the application had it.
-    const gpu::GlStateBackup state(r.info);
-    if (r.framebuffer == 0 || r.width != width || r.height != height || r.blending != blending) {
-      r.release_target();
-      // RGBA/UNSIGNED_BYTE is colour-renderable in every GLES2 implementation.
-      // Linear blending: an sRGB texture, which GL decodes before blending and
-      // encodes after (always on in GLES 3; desktop GL needs GL_FRAMEBUFFER_SRGB).
-      r.texture = new_texture(blending == Blending::Linear ? GL_SRGB8_ALPHA8 : GL_RGBA, GL_RGBA, width, height);
-      if (GLenum err = glGetError(); err != GL_NO_ERROR) {
-        r.release_target();
-        throw Error(ErrorCode::Gl, "cannot allocate a " + std::to_string(width) + "x" + std::to_string(height) +
-                                       " framebuffer texture (GL error " + hex(err) + ")");
-      }
-      glGenFramebuffers(1, &r.framebuffer);
-      glBindFramebuffer(GL_FRAMEBUFFER, r.framebuffer);
-      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, r.texture, 0);
-      const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-      if (status != GL_FRAMEBUFFER_COMPLETE) {
-        r.release_target();
-        throw Error(ErrorCode::Gl, "offscreen framebuffer incomplete (status " + hex(status) + ")");
-      }
-      r.width = width;
-      r.height = height;
-      r.blending = blending;
-    }
-    if (!r.gles) {
-      constexpr GLenum kFramebufferSrgb = 0x8DB9;  // GL_FRAMEBUFFER_SRGB (desktop GL only)
-      if (blending == Blending::Linear)
-        glEnable(kFramebufferSrgb);
-      else
-        glDisable(kFramebufferSrgb);
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, r.framebuffer);
-    glDisable(GL_SCISSOR_TEST);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    const std::array<float, 4> bg = premultiplied(background, blending);
-    glClearColor(bg[0], bg[1], bg[2], bg[3]);
-    glClear(GL_COLOR_BUFFER_BIT);
-  }
-  glBindFramebuffer(GL_FRAMEBUFFER, r.framebuffer);
-  glViewport(0, 0, width, height);
-}
-
 void Renderer::draw(const DrawBatch& batch, const Placement& placement, const DrawOptions& options) {
   Impl& r = *impl_;
   if (!std::isfinite(placement.scale) || placement.scale == 0.0 || !std::isfinite(placement.origin_x) ||
@@ -549,11 +442,12 @@ void Renderer::draw(const DrawBatch& batch, const Placement& placement, const Dr
   // The application's state comes back as it was when this returns or throws.
   const gpu::GlStateBackup state(r.info);
   r.bind_own_state();
-  // Into the framebuffer and viewport bound now (the renderer's own after
-  // begin(), else the application's); pixel (0, 0) is the viewport's top left.
+  // Into the framebuffer and viewport bound now; pixel (0, 0) is the
+  // viewport's top left.
   const float vw = static_cast<float>(state.viewport()[2]), vh = static_cast<float>(state.viewport()[3]);
-  r.target_blending = r.framebuffer != 0 && state.draw_framebuffer() == r.framebuffer ? r.blending : Blending::Srgb;
+  r.target_blending = gpu::bound_framebuffer_blending(r.info.gles, r.info.gl3(), state.draw_framebuffer());
 
+  for (int i = 0; i < 3; ++i) r.pass_depth[i] = static_cast<float>(placement.depth[i]);
   const double s = placement.scale;
   // Outline units -> pixels (x_px = s x + ox, y_px = oy - s y), then the
   // projective transform.
@@ -576,19 +470,24 @@ void Renderer::draw(const DrawBatch& batch, const Placement& placement, const Dr
   // perspective that puts part of it behind the eye): the triangles' areas
   // blend straight into the target. Where two triangles split a pixel,
   // source-over blending then loses up to a quarter of it (a + b - ab).
+  // The grown triangles overlap: depth writes would hide a triangle's
+  // fringe behind its neighbour's (restored with the state).
+  glDepthMask(GL_FALSE);
   r.draw_area(b, full, vw, vh, premultiplied(options.color, r.target_blending), options.gamma, options.curve_mode,
               false);
 }
 
 namespace {
 
-// The transform (outline units -> pixels) as a column-major mat3 uniform, and the viewport.
-void set_view(GLint u_transform, GLint u_viewport, const Transform& full, float vw, float vh) {
+// The transform (outline units -> pixels) as a column-major mat3 uniform,
+// the viewport, and the depth plane (Placement::depth; 0 offscreen).
+void set_view(const ProgramUniforms& u, const Transform& full, float vw, float vh, const std::array<float, 3>& depth) {
   GLfloat m[9];
   for (int row = 0; row < 3; ++row)
     for (int col = 0; col < 3; ++col) m[col * 3 + row] = static_cast<GLfloat>(full.m[row * 3 + col]);
-  glUniformMatrix3fv(u_transform, 1, GL_FALSE, m);
-  glUniform2f(u_viewport, vw, vh);
+  glUniformMatrix3fv(u.transform, 1, GL_FALSE, m);
+  glUniform2f(u.viewport, vw, vh);
+  glUniform3f(u.depth, depth[0], depth[1], depth[2]);
 }
 
 GLfloat coverage_exponent(float gamma) {
@@ -654,9 +553,6 @@ void draw_instanced(const gpu::BatchImpl& b, Part part) {
 // Draws the batch's triangles (those `part` takes) with the current program
 // and blending.
 void draw_triangles(const gpu::BatchImpl& b, Part part = Part::All) {
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_STENCIL_TEST);
-  glDisable(GL_CULL_FACE);  // triangles come in either orientation
   if (b.instanced()) {
     draw_instanced(b, part);
   } else {
@@ -696,7 +592,7 @@ void Renderer::Impl::draw_area(const gpu::BatchImpl& b, const Transform& full, f
   for (int curved = 0; curved < 2; ++curved) {
     const ProgramUniforms& u = r.area_u[with_gamma][curved];
     glUseProgram(r.area_program[with_gamma][curved]);
-    set_view(u.transform, u.viewport, full, vw, vh);
+    set_view(u, full, vw, vh, r.pass_depth);
     glUniform1f(u.fringe_px, tolerance::kFringeWidthPx);
     glUniform4f(u.color, color[0], color[1], color[2], color[3]);
     glUniform1f(u.coverage_exponent, coverage_exponent(gamma));
@@ -711,7 +607,7 @@ void Renderer::Impl::draw_curves(const gpu::BatchImpl& b, const Transform& full,
   Impl& r = *this;
   r.make_curve_program();
   glUseProgram(r.program);
-  set_view(r.curve_u.transform, r.curve_u.viewport, full, vw, vh);
+  set_view(r.curve_u, full, vw, vh, r.pass_depth);
   glUniform1f(r.curve_u.fringe_px, 0.0f);  // triangles as they are
   const std::array<float, 4> color = premultiplied(options.color, r.target_blending);
   glUniform4f(r.curve_u.color, color[0], color[1], color[2], color[3]);
@@ -754,6 +650,7 @@ void composite_tile(RendererImpl& r, const RendererImpl::Slot& slot, int tx, int
   const std::array<float, 4> color = premultiplied(options.color, r.target_blending);
   glUniform4f(q.color, color[0], color[1], color[2], color[3]);
   glUniform1f(q.coverage_exponent, coverage_exponent(options.gamma));
+  glUniform3f(q.depth, r.pass_depth[0], r.pass_depth[1], r.pass_depth[2]);
   const float x0 = static_cast<float>(tx), x1 = static_cast<float>(tx + w);
   const float y0 = static_cast<float>(ty), y1 = static_cast<float>(ty + h);
   const float cx0 = 2.0f * x0 / vw - 1.0f, cx1 = 2.0f * x1 / vw - 1.0f;
@@ -839,8 +736,11 @@ bool Renderer::Impl::draw_offscreen(const gpu::BatchImpl& b, const Transform& fu
         if (msaa) r.ensure_multisample(key.w, key.h);
         glBindFramebuffer(GL_FRAMEBUFFER, msaa ? r.ms_fbo : slot.fbo);
         glViewport(0, 0, key.w, key.h);
-        glDisable(GL_SCISSOR_TEST);  // the application's scissor is for its target
+        glDisable(GL_SCISSOR_TEST);  // the application's scissor and depth test are for its target
+        glDisable(GL_DEPTH_TEST);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        const std::array<float, 3> target_depth = r.pass_depth;
+        r.pass_depth = {0.0f, 0.0f, 0.0f};
         // A slot grown for a larger tile is cleared within this one only. (A
         // scissored clear is a drawn quad on some drivers: Mesa compiles a
         // shader for its first one, so a slot made for this tile is cleared whole.)
@@ -867,6 +767,7 @@ bool Renderer::Impl::draw_offscreen(const gpu::BatchImpl& b, const Transform& fu
         } else {
           draw_area(b, to_texture, kw, kh, {1.0f, 1.0f, 1.0f, 1.0f}, 1.0f, options.curve_mode, true);
         }
+        r.pass_depth = target_depth;
         slot.key = key;
         slot.valid = true;
         ++r.offscreen_passes;
@@ -891,7 +792,7 @@ void Renderer::Impl::draw_debug_edges(const gpu::BatchImpl& b, const Transform& 
   Impl& r = *this;
   r.make_curve_program();
   glUseProgram(r.program);
-  set_view(r.curve_u.transform, r.curve_u.viewport, full, vw, vh);
+  set_view(r.curve_u, full, vw, vh, r.pass_depth);
   glUniform1f(r.curve_u.fringe_px, 0.0f);  // the triangles themselves, not grown
   glUniform1i(r.u_debug, 2);
   glEnable(GL_BLEND);
@@ -903,49 +804,5 @@ void Renderer::Impl::draw_debug_edges(const gpu::BatchImpl& b, const Transform& 
 }
 
 std::size_t Renderer::offscreen_passes() const { return impl_->offscreen_passes; }
-
-Image Renderer::read_pixels() {
-  Impl& r = *impl_;
-  if (r.framebuffer == 0) throw Error(ErrorCode::InvalidArgument, "read_pixels needs begin() first");
-  gpu::check_no_pending_error("Renderer::read_pixels");
-  const gpu::GlStateBackup state(r.info);
-  Image gl_rows(r.width, r.height);
-  gpu::read_rgba(r.info, r.framebuffer, r.width, r.height, gl_rows.rgba.data());
-  if (GLenum err = glGetError(); err != GL_NO_ERROR) {
-    throw Error(ErrorCode::Gl, "glReadPixels failed (GL error " + hex(err) + ")");
-  }
-  Image out(r.width, r.height);
-  const std::size_t row = static_cast<std::size_t>(r.width) * 4;
-  for (int y = 0; y < r.height; ++y) {
-    // GL's row 0 is the bottom; the shader put pixel row 0 at the top (clip y = +1).
-    const std::uint8_t* src = &gl_rows.rgba[static_cast<std::size_t>(r.height - 1 - y) * row];
-    std::uint8_t* dst = &out.rgba[static_cast<std::size_t>(y) * row];
-    for (std::size_t i = 0; i < row; i += 4) {
-      const unsigned a = src[i + 3];
-      if (r.blending == Blending::Linear && a > 0 && a < 255) {
-        // Stored: sRGB encoding of premultiplied linear colour. Straight
-        // alpha: decode, divide by alpha, encode.
-        for (std::size_t k = 0; k < 3; ++k) {
-          const float lin = srgb_to_linear(src[i + k] / 255.0f) * 255.0f / static_cast<float>(a);
-          dst[i + k] = static_cast<std::uint8_t>(
-              std::lround(std::clamp(linear_to_srgb(std::min(lin, 1.0f)), 0.0f, 1.0f) * 255.0f));
-        }
-        dst[i + 3] = static_cast<std::uint8_t>(a);
-        continue;
-      }
-      for (std::size_t k = 0; k < 3; ++k) {
-        unsigned v = src[i + k];
-        if (a == 0) {
-          v = 0;
-        } else if (a < 255) {
-          v = std::min(255u, (v * 255u + a / 2u) / a);
-        }
-        dst[i + k] = static_cast<std::uint8_t>(v);
-      }
-      dst[i + 3] = static_cast<std::uint8_t>(a);
-    }
-  }
-  return out;
-}
 
 }  // namespace curvetext

@@ -306,12 +306,12 @@ class Checker {
     try {
       const Mesh merged = merge_page(page, options_.drop_a_triangle);
       DrawBatch batch = DrawBatch::from_mesh(merged);
-      renderer_.begin(page.width, page.height, Color{1, 1, 1, 1});
+      target_.begin(page.width, page.height, Color{1, 1, 1, 1});
       DrawOptions draw;
       draw.antialiasing = AntiAliasing::Full;
       draw.curve_mode = CurveMode::Exact;
       renderer_.draw(batch, Placement{page.scale, 0.0, 0.0}, draw);
-      drawn = coverage_from_black_on_white(renderer_.read_pixels());
+      drawn = coverage_from_black_on_white(target_.read_pixels());
     } catch (const std::exception& e) {
       for (const Prepared& g : page.glyphs) fail(g.glyph, std::string("drawing the page threw: ") + e.what());
       return;
@@ -392,6 +392,7 @@ class Checker {
   }
 
   Renderer& renderer_;
+  ImageTarget target_;
   const Font* font_;
   const CorpusOptions& options_;
   CorpusResult& result_;

@@ -19,6 +19,7 @@ bool expects_gles2();
 struct Gpu {
   HeadlessContext context = HeadlessContext::create(test_context_kind());
   Renderer renderer;
+  ImageTarget target;  // the tests draw into offscreen images
   GlyphCache cache;
 };
 

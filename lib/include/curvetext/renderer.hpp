@@ -4,6 +4,7 @@
 // without one.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <memory>
 
@@ -11,7 +12,7 @@
 #include "curvetext/draw_batch.hpp"
 #include "curvetext/export.hpp"
 #include "curvetext/glyph_cache.hpp"
-#include "curvetext/image.hpp"
+#include "curvetext/image_target.hpp"
 #include "curvetext/transform.hpp"
 
 namespace curvetext {
@@ -33,13 +34,6 @@ enum class CurveMode {
   Paper,  // the paper's equation 2: exact only for weight 1
 };
 
-// How the framebuffer blends (Renderer::begin).
-enum class Blending {
-  Srgb,    // on the stored sRGB-encoded values, as most apps do (default)
-  Linear,  // in linear light: an sRGB framebuffer decodes, blends and encodes
-           // (GLES 3 / desktop GL 3); colours are sRGB and converted
-};
-
 // Maps outline units (y up) to framebuffer pixels (y down, pixel (i,j) covers
 // [i,i+1]x[j,j+1]):  x_px = scale * x + origin_x,  y_px = origin_y - scale * y.
 // Then `transform` (rotation, scale, skew, perspective; identity by
@@ -49,6 +43,14 @@ struct Placement {
   double origin_x = 0.0;
   double origin_y = 0.0;
   Transform transform;
+  // Depth for the application's depth test: the text's normalized device z
+  // at the viewport's pixel (X, Y) is depth[0] X + depth[1] Y + depth[2]
+  // ({0, 0, d}: a constant d in [-1, 1], the GL default depth range mapping
+  // it to a window depth of (d + 1) / 2). The pass that writes the
+  // application's framebuffer is depth-tested with its depth test, function
+  // and mask as they are; text outside [-1, 1] is clipped, as the app's own
+  // geometry would be.
+  std::array<double, 3> depth{0.0, 0.0, 0.0};
 
   Placement() = default;
   Placement(double scale_, double origin_x_, double origin_y_, const Transform& transform_ = {})
@@ -59,9 +61,13 @@ struct Placement {
   // width x height pixels: outline units (y up) at `units_per_outline_unit`
   // plane units each, the outline's origin at the plane's (x, y), upright
   // along the plane's +y. Throws as Transform::plane_to_viewport.
+  // Its depth is the plane's (Transform::plane_depth), so a 3D scene's own
+  // geometry in front of the text hides it.
   static Placement on_plane(const float mvp[16], double viewport_width, double viewport_height,
                             double units_per_outline_unit, double x, double y) {
-    return Placement(units_per_outline_unit, x, -y, Transform::plane_to_viewport(mvp, viewport_width, viewport_height));
+    Placement p(units_per_outline_unit, x, -y, Transform::plane_to_viewport(mvp, viewport_width, viewport_height));
+    p.depth = Transform::plane_depth(mvp, viewport_width, viewport_height);
+    return p;
   }
 };
 
@@ -89,29 +95,30 @@ struct DrawOptions {
       : color(color_), antialiasing(aa), curve_mode(mode) {}
 };
 
-// Compiled shaders, offscreen coverage textures for full / vbaa / msaa, and
-// optionally a framebuffer of its own (begin). Owns those GL objects: they
-// belong to the context current at construction, which must be current
-// whenever the renderer is used or destroyed. Not thread-safe: one thread
-// (and its context) at a time; distinct renderers may be used on distinct
-// threads with distinct contexts.
+// Compiled shaders and offscreen coverage textures for full / vbaa / msaa.
+// Owns those GL objects: they belong to the context current at
+// construction, which must be current whenever the renderer is used or
+// destroyed. Not thread-safe: one thread (and its context) at a time;
+// distinct renderers may be used on distinct threads with distinct contexts.
 //
 // A guest in the application's context (GLES 2, GLES 3, desktop GL 3.3+
-// core or compatibility): draw(), begin() and read_pixels() read the state
-// they change and put it back before returning, also when they throw: the
-// program, vertex array object (curvetext draws with its own where the
-// context has them; on GLES 2, vertex attributes 0 to 2: arrays, pointers,
-// buffers), array and element buffer bindings, attribute 2's current value,
-// the draw and read framebuffers, renderbuffer, active texture and texture
-// unit 0's 2D binding, viewport, scissor test and box, blend enable,
-// equations and functions, depth, stencil and cull-face tests, rasterizer
-// discard, primitive restart, colour mask, clear colour, and the pixel pack
-// state. Exceptions: begin() leaves the renderer's framebuffer bound and the
-// viewport on it (its purpose); on desktop GL with Blending::Linear it enables
-// GL_FRAMEBUFFER_SRGB. Buffers a DrawBatch uploads leave the bindings as
-// they were. A GL error the application left pending when a call begins is
-// not taken for curvetext's: the call throws Error(Gl) saying so, before
+// core or compatibility): draw() reads the state it changes and puts it back
+// before returning, also when it throws: the program, vertex array object
+// (curvetext draws with its own where the context has them; on GLES 2,
+// vertex attributes 0 to 2: arrays, pointers, buffers), array and element
+// buffer bindings, attribute 2's current value, the draw and read
+// framebuffers, renderbuffer, active texture and texture unit 0's 2D
+// binding, viewport, scissor test and box, blend enable, equations and
+// functions, depth test and depth writes, stencil and cull-face tests,
+// rasterizer discard, primitive restart, colour mask, clear colour, and the
+// pixel pack state. Buffers a DrawBatch uploads leave the bindings as they
+// were. A GL error the application left pending when a call begins is not
+// taken for curvetext's: the call throws Error(Gl) saying so, before
 // changing anything, and the error flag is then clear.
+//
+// Colours blend in the space of the framebuffer drawn into: linear light
+// where it is sRGB-encoded and the context converts (GLES 3; desktop GL with
+// GL_FRAMEBUFFER_SRGB enabled), else on the stored values.
 class CURVETEXT_API Renderer {
  public:
   // Needs a current GLES2 (or later, or desktop GL 3.3) context. Throws
@@ -123,15 +130,9 @@ class CURVETEXT_API Renderer {
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  // Binds the renderer's own RGBA8 framebuffer of width x height pixels
-  // (made again when the size or blending changes), sets the viewport to it
-  // and clears it to `background`. Throws Error(InvalidArgument) for a size
-  // that is not positive or above the GL maximum (or
-  // tolerance::kMaxImageSidePx), Error(Gl) when it cannot be allocated.
-  void begin(int width, int height, Color background, Blending blending = Blending::Srgb);
   // Draws `batch` with premultiplied source-over blending of `options.color`
-  // times coverage into the framebuffer bound now (begin()'s, or the
-  // application's), within its viewport, whose top-left pixel is (0, 0) of
+  // times coverage into the framebuffer bound now (the application's, or an
+  // ImageTarget's), within its viewport, whose top-left pixel is (0, 0) of
   // the placement, and its scissor box and colour mask. `batch` must have been built
   // with this context (or one sharing with it). Throws
   // Error(InvalidArgument) for a non-finite or zero scale, a non-finite
@@ -141,10 +142,6 @@ class CURVETEXT_API Renderer {
   // Samples per pixel msaa uses here: GL_MAX_SAMPLES capped at 16 (llvmpipe
   // offers 4); 0 where the context has no multisampled renderbuffers.
   int msaa_samples() const;
-  // begin()'s framebuffer as straight-alpha RGBA (sRGB encoded), row 0 at
-  // the top; a new image the caller owns. Throws Error(InvalidArgument)
-  // without begin(), Error(Gl) when reading fails.
-  Image read_pixels();
   // How many times full / vbaa / msaa drew their offscreen pass (a draw of
   // the same batch with the same transform into the same box reuses the
   // last one).

@@ -38,6 +38,11 @@ struct CURVETEXT_API Transform {
   // (Placement::on_plane does this). Throws Error(InvalidArgument) for a
   // non-finite entry or a viewport side that is not positive and finite.
   static Transform plane_to_viewport(const float mvp[16], double width, double height);
+  // The depth of that plane as the pipeline computes it: normalized device
+  // z = d[0] X + d[1] Y + d[2] at the viewport's pixel (X, Y) (y down from
+  // its top-left); for a plane, z is affine in the pixel position. A plane
+  // seen edge-on gives {0, 0, 0}. Throws as plane_to_viewport.
+  static std::array<double, 3> plane_depth(const float mvp[16], double width, double height);
 
   bool is_identity() const;
   bool is_affine() const;
