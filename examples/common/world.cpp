@@ -53,6 +53,10 @@ WorldLabel world_label(std::shared_ptr<const curvetext::Font> font) {
 curvetext::Placement label_placement(const WorldLabel& label, const glm::mat4& view_projection, int width, int height) {
   curvetext::Placement p = label.text.placement;
   p.transform = curvetext::Transform::plane_to_viewport(glm::value_ptr(view_projection), width, height);
+  // Depth-tested on the plane, pulled towards the viewer as a decal on the
+  // sign (which the board's own polygon offset pulls forward less).
+  p.depth = curvetext::Transform::plane_depth(glm::value_ptr(view_projection), width, height);
+  p.depth[2] -= 2e-4;
   return p;
 }
 
