@@ -163,11 +163,23 @@ void main() {
   vec2 p2 = p0 + e2;
   float w = v_info.y;
   // The arc's point nearest the pixel centre: Gauss-Newton on
-  // dot(B(t), B'(t)) = 0 from the centre's projection on the chord.
+  // dot(B(t), B'(t)) = 0, from the nearer of two starts: the centre's
+  // projection on the chord, and the arc's point on the ray from the control
+  // point through the centre (along the ray tau0 : tau2 stays as at the
+  // centre; on the arc it is (1 - t)^2 : t^2). A heavy arc (large w) crowds
+  // its parameter at the apex: from the chord alone the iteration stays far
+  // from a pixel on its flanks, from the ray alone from one at its apex.
   vec2 chord = p2 - p0;
-  float t = clamp(-dot(p0, chord) / max(dot(chord, chord), 1e-30), 0.0, 1.0);
+  float t_chord = clamp(-dot(p0, chord) / max(dot(chord, chord), 1e-30), 0.0, 1.0);
+  float r0 = sqrt(max(t0, 0.0));
+  float r2 = sqrt(max(t2, 0.0));
+  float t_ray = r0 + r2 > 0.0 ? r2 / (r0 + r2) : t_chord;
   vec2 b;
   vec2 db;
+  vec2 b_ray;
+  arc_at(p0, c, p2, w, t_chord, b, db);
+  arc_at(p0, c, p2, w, t_ray, b_ray, db);
+  float t = dot(b_ray, b_ray) < dot(b, b) ? t_ray : t_chord;
   for (int i = 0; i < 3; ++i) {
     arc_at(p0, c, p2, w, t, b, db);
     t = clamp(t - dot(b, db) / max(dot(db, db), 1e-30), 0.0, 1.0);

@@ -109,17 +109,52 @@ ShapeImageLayout layout_shape_image(const ShapeDocument& doc, const ShapeImageOp
   return layout;
 }
 
+namespace {
+
+// The document point drawn at the image's centre (before the transform).
+Vec2 view_centre(const ShapeImageLayout& layout) {
+  const Placement& p = layout.placement;
+  return {(0.5 * layout.width - p.origin_x) / p.scale, (p.origin_y - 0.5 * layout.height) / p.scale};
+}
+
+// `mesh` moved by -centre (in double, before the GPU's float32), or
+// Error(Geometry) where a vertex then lies beyond what float32 places within
+// 1/16 px (tolerance::kMaxGpuCoordinatePx at `scale` px per unit).
+Mesh relative_to(Mesh mesh, Vec2 centre, double scale) {
+  double reach = 0.0;
+  for (Vec2& p : mesh.points) {
+    p = p - centre;
+    reach = std::max({reach, std::abs(p.x), std::abs(p.y)});
+  }
+  if (reach * scale > tolerance::kMaxGpuCoordinatePx) {
+    throw Error(ErrorCode::Geometry, "a shape reaches " + detail::format_number(reach * scale) +
+                                         " px from the view's centre at this scale; the GPU's float32 places "
+                                         "geometry within 1/16 px only within " +
+                                         detail::format_number(tolerance::kMaxGpuCoordinatePx) +
+                                         " px (crop the shape to the view or draw it smaller)");
+  }
+  return mesh;
+}
+
+}  // namespace
+
 Image render_shape_image(Renderer& renderer, const ShapeDocument& doc, const ShapeImageLayout& layout,
                          const ShapeImageOptions& options) {
   // DESIGN.md section 3: 1/16 px at the scale drawn, in document units.
   const double tolerance = tolerance::kCubicApproximationPx / (layout.placement.scale * layout.largest_stretch);
   // Meshes first: geometry errors surface before anything is drawn.
+  // Each mesh relative to the view's centre, the placement moved to match.
+  const Vec2 centre = view_centre(layout);
   std::vector<Mesh> meshes;
   for (const Shape& shape : doc.shapes) {
     MeshOptions mo;
     mo.cubic_tolerance = tolerance;
-    meshes.push_back(build_mesh(fill_outline(shape, tolerance), mo));
+    meshes.push_back(relative_to(build_mesh(fill_outline(shape, tolerance), mo), centre,
+                                 layout.placement.scale * layout.largest_stretch));
   }
+  Placement placement = layout.placement;
+  placement.origin_x += placement.scale * centre.x;
+  placement.origin_y -= placement.scale * centre.y;
   check_coverage_gamma(options.gamma);
   ImageTarget target;
   target.begin(layout.width, layout.height, options.background, options.blending);
@@ -127,7 +162,7 @@ Image render_shape_image(Renderer& renderer, const ShapeDocument& doc, const Sha
     if (meshes[i].empty()) continue;
     DrawBatch batch = DrawBatch::from_mesh(meshes[i]);
     const DrawOptions draw = draw_options(options, doc.shapes[i].color, on_screen_size(doc.shapes[i], layout));
-    renderer.draw(batch, layout.placement, draw);
+    renderer.draw(batch, placement, draw);
   }
   return target.read_pixels();
 }

@@ -19,7 +19,7 @@ struct ImageStyle {
   CurveMode curve_mode = CurveMode::Exact;
   // vbaa's filter ring (DrawOptions::vbaa_ring): 0 a box filter (default).
   float vbaa_ring = 0.0f;
-  // Blending of the framebuffer (Renderer::begin), coverage gamma and the
+  // Blending of the framebuffer (ImageTarget::begin), coverage gamma and the
   // debug view (DrawOptions::gamma, DrawOptions::debug).
   Blending blending = Blending::Srgb;
   float gamma = 1.0f;

@@ -38,7 +38,7 @@ CURVETEXT_API ImageSize paragraph_image_size(const Paragraph& paragraph, const P
 // options.transform; same errors.
 CURVETEXT_API ImageFrame paragraph_image_frame(const Paragraph& paragraph, const ParagraphImageOptions& options);
 
-// Draws into `renderer`'s own framebuffer (Renderer::begin at the frame's
+// Draws into an offscreen ImageTarget (at the frame's
 // size) with glyph meshes from `cache`, and returns it read back. Needs the
 // renderer's GL context current on the calling thread, and `cache` used with
 // that context. Throws the errors of paragraph_image_frame, draw_options

@@ -38,12 +38,14 @@ struct ShapeImageLayout {
 // Thread-safe (a pure function).
 CURVETEXT_API ShapeImageLayout layout_shape_image(const ShapeDocument& doc, const ShapeImageOptions& options);
 
-// Draws every shape in order into `renderer`'s own framebuffer
-// (Renderer::begin at layout's size) and returns it read back. Cubics and
+// Draws every shape in order with `renderer` into an offscreen ImageTarget
+// (at layout's size) and returns it read back. Cubics and
 // higher degrees are approximated within tolerance::kCubicApproximationPx at
 // the drawn scale. Needs the renderer's GL context current on the calling
-// thread. Throws Error(Geometry) for a shape the tessellator refuses (before
-// anything is drawn), Error(InvalidArgument) for a gamma out of range or a
+// thread. Meshes are drawn relative to the view's centre (moved there in
+// double). Throws Error(Geometry) for a shape the tessellator refuses or one
+// reaching more than tolerance::kMaxGpuCoordinatePx from the view's centre
+// at the drawn scale (before anything is drawn), Error(InvalidArgument) for a gamma out of range or a
 // size above the GL maximum, Error(Gl) when drawing fails.
 CURVETEXT_API Image render_shape_image(Renderer& renderer, const ShapeDocument& doc, const ShapeImageLayout& layout,
                                        const ShapeImageOptions& options);

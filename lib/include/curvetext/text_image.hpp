@@ -49,8 +49,8 @@ struct TextImageLayout {
 CURVETEXT_API TextImageLayout layout_text_image(const Font& font, std::string_view text,
                                                 const TextImageOptions& options);
 
-// Draws the laid-out line into `renderer`'s own framebuffer
-// (Renderer::begin at the layout's size) with glyph meshes from `cache`, and
+// Draws the laid-out line with `renderer` into an offscreen ImageTarget
+// (at the layout's size) with glyph meshes from `cache`, and
 // returns it read back. Needs the renderer's GL context current on the
 // calling thread, and `cache` used with that context. Throws the errors of
 // draw_options, DrawBatch::from_text and the Renderer.

@@ -35,6 +35,11 @@ inline constexpr double kMergeDistanceFontUnits = 1e-9;
 inline constexpr double kConicFlatnessRelative = 1e-9;
 
 // --- Rendering ----------------------------------------------------------------
+// Farthest a vertex may lie from the origin of the coordinates it is drawn
+// in, in pixels at the drawn scale: float32 on the GPU (24-bit significand)
+// rounds positions below 2^20 px to within 1/16 px. Shape images draw their
+// meshes relative to the view's centre and refuse geometry reaching further.
+inline constexpr double kMaxGpuCoordinatePx = 1048576.0;
 // How far every triangle grows outward for `full` antialiasing (and vbaa's
 // offscreen pass), in pixels: a pixel's box reaches at most sqrt(2)/2 px
 // from its centre, so every pixel that overlaps a triangle gets a fragment of
