@@ -399,17 +399,18 @@ TEST(Layout, CaretsAtBidiBoundaries) {
   FontCollection fonts;
   const std::string text = "abc \u05D0\u05D1\u05D2 def";  // aleph bet gimel at bytes 4..10
   const Paragraph p = Paragraph::layout(fonts, text, {}, style_with({test::kDejaVuSans}, 20));
-  // At byte 4 (after "abc ", before the Hebrew): the weak caret is after the
-  // space, the strong one at the Hebrew word's leading (right) edge.
+  // At byte 4 (after "abc ", before the Hebrew), as Pango places them: the
+  // strong caret after the space (text of the paragraph's direction goes
+  // there), the weak one at the Hebrew word's leading (right) edge.
   const Caret c = p.caret(4);
-  EXPECT_FALSE(c.weak_rtl);
-  EXPECT_TRUE(c.strong_rtl);
-  EXPECT_GT(c.strong_x, c.weak_x + 5.0);
+  EXPECT_FALSE(c.strong_rtl);
+  EXPECT_TRUE(c.weak_rtl);
+  EXPECT_GT(c.weak_x, c.strong_x + 5.0);
   // Selecting the space and the first Hebrew letter gives two rectangles.
   EXPECT_EQ(p.selection_rects(3, 6).size(), 2u);
   // Hitting the right half of the first Hebrew letter gives its start.
   const Caret a = p.caret(4);
-  EXPECT_EQ(p.hit_test(a.strong_x - 0.5, 5).index, 4u);
+  EXPECT_EQ(p.hit_test(a.weak_x - 0.5, 5).index, 4u);
 }
 
 TEST(Layout, BadInput) {

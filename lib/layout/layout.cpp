@@ -664,6 +664,7 @@ struct ParagraphBuilder {
         b.left = span.first + w * static_cast<double>(slot);
         b.right = b.left + w;
         b.rtl = rtl;
+        b.level = p.level;
         boxes.push_back(b);
         g = next;
       }
@@ -1057,104 +1058,6 @@ std::size_t Paragraph::previous_boundary(std::size_t index) const {
 std::size_t Paragraph::next_boundary(std::size_t index) const {
   auto it = std::upper_bound(boundaries_.begin(), boundaries_.end(), index);
   return it == boundaries_.end() ? text_.size() : *it;
-}
-
-Caret Paragraph::caret(std::size_t index) const {
-  Caret c;
-  if (lines_.empty()) return c;
-  index = std::min(index, text_.size());
-  // Snap into a grapheme boundary.
-  if (!std::binary_search(boundaries_.begin(), boundaries_.end(), index)) index = previous_boundary(index);
-  std::size_t li = lines_.size() - 1;
-  for (std::size_t k = 0; k < lines_.size(); ++k)
-    if (index >= lines_[k].start && index < lines_[k].end) {
-      li = k;
-      break;
-    }
-  const LayoutLine& line = lines_[li];
-  c.line = li;
-  c.top = line.top;
-  c.bottom = line.top + line.height;
-  const bool rtl_para = line.paragraph_level % 2 == 1;
-  const ClusterBox* after = nullptr;
-  const ClusterBox* before = nullptr;
-  const ClusterBox* last_logical = nullptr;
-  for (const ClusterBox& b : boxes_[li]) {
-    if (b.start == index) after = &b;
-    if (b.end == index) before = &b;
-    if (!last_logical || b.start > last_logical->start) last_logical = &b;
-  }
-  if (!after && !before && last_logical && index >= last_logical->end) before = last_logical;
-  auto leading = [](const ClusterBox& b) { return b.rtl ? b.right : b.left; };
-  auto trailing = [](const ClusterBox& b) { return b.rtl ? b.left : b.right; };
-  if (after) {
-    c.strong_x = leading(*after);
-    c.strong_rtl = after->rtl;
-  } else if (before) {
-    c.strong_x = trailing(*before);
-    c.strong_rtl = before->rtl;
-  } else {
-    c.strong_x = rtl_para ? line.x + line.width : line.x;
-    c.strong_rtl = rtl_para;
-  }
-  if (before) {
-    c.weak_x = trailing(*before);
-    c.weak_rtl = before->rtl;
-  } else {
-    c.weak_x = c.strong_x;
-    c.weak_rtl = c.strong_rtl;
-  }
-  return c;
-}
-
-HitResult Paragraph::hit_test(double x, double y) const {
-  HitResult h;
-  if (lines_.empty()) return h;
-  std::size_t li = lines_.size() - 1;
-  for (std::size_t k = 0; k < lines_.size(); ++k)
-    if (y < lines_[k].top + lines_[k].height) {
-      li = k;
-      break;
-    }
-  h.line = li;
-  const LayoutLine& line = lines_[li];
-  const auto& boxes = boxes_[li];
-  if (boxes.empty()) {
-    h.index = line.start;
-    return h;
-  }
-  const ClusterBox* leftmost = &boxes.front();
-  const ClusterBox* rightmost = &boxes.front();
-  for (const ClusterBox& b : boxes) {
-    if (b.left < leftmost->left) leftmost = &b;
-    if (b.right > rightmost->right) rightmost = &b;
-  }
-  const bool in_y = y >= line.top && y < line.top + line.height;
-  if (x < leftmost->left) {
-    h.index = leftmost->rtl ? leftmost->end : leftmost->start;
-    return h;
-  }
-  if (x >= rightmost->right) {
-    h.index = rightmost->rtl ? rightmost->start : rightmost->end;
-    return h;
-  }
-  for (const ClusterBox& b : boxes) {
-    if (x < b.left || x >= b.right) continue;
-    const bool left_half = x < (b.left + b.right) / 2.0;
-    h.index = (left_half != b.rtl) ? b.start : b.end;
-    h.inside = in_y;
-    return h;
-  }
-  // In a gap between boxes (justified spaces are inside boxes; this is rare).
-  double best = std::numeric_limits<double>::infinity();
-  for (const ClusterBox& b : boxes) {
-    const double d = std::min(std::abs(x - b.left), std::abs(x - b.right));
-    if (d < best) {
-      best = d;
-      h.index = (std::abs(x - b.left) < std::abs(x - b.right)) != b.rtl ? b.start : b.end;
-    }
-  }
-  return h;
 }
 
 std::vector<Rect> Paragraph::selection_rects(std::size_t start, std::size_t end) const {

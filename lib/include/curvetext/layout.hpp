@@ -112,11 +112,27 @@ struct LayoutLine {
   std::vector<GlyphRun> runs;  // visual order
 };
 
+// Which line a caret position at a soft line break belongs to: the index
+// that ends one line also starts the next. Downstream (default): with the
+// character after it, at the start of the next line; Upstream: with the
+// character before it, at the end of the line it ends (a click past that
+// line's end).
+enum class CaretAffinity { Downstream, Upstream };
+
+struct CaretPosition {
+  std::size_t index = 0;  // UTF-8 offset, a grapheme boundary
+  CaretAffinity affinity = CaretAffinity::Downstream;
+};
+
 // A caret at a text position: where a character inserted there would go.
-// At a bidi boundary the two directions disagree: `strong` follows the
-// paragraph direction... precisely, the character after the position (its
-// leading edge), `weak` the character before it (its trailing edge); they
-// are equal elsewhere.
+// At a bidi boundary the two directions disagree, and there are two carets,
+// placed as Pango places them: `strong` where a character of the paragraph's
+// direction would go, `weak` where one of the other direction would. With c
+// the grapheme before the position and d the one after it: strong is at c's
+// trailing edge when c has the paragraph's direction and d has not or is
+// embedded deeper (bidi level), else at d's leading edge; weak at the other
+// (at a line's ends the line's edge stands in for the missing grapheme).
+// They are equal elsewhere.
 struct Caret {
   std::size_t line = 0;                 // index into Paragraph::lines()
   double strong_x = 0.0, weak_x = 0.0;  // px
@@ -128,6 +144,9 @@ struct HitResult {
   std::size_t index = 0;  // UTF-8 offset of the nearest caret position (a grapheme boundary)
   std::size_t line = 0;
   bool inside = false;  // the point is over a grapheme of the text
+  // Upstream for a point past the end of a line that wraps softly into the
+  // next, so that caret(index, affinity) stays on the line clicked.
+  CaretAffinity affinity = CaretAffinity::Downstream;
 };
 
 // A laid-out paragraph: an immutable value (copyable) that keeps its own copy
@@ -154,8 +173,9 @@ class CURVETEXT_API Paragraph {
   Rect ink_bounds() const;
 
   // The caret at UTF-8 offset `index`, clamped to the text and moved back to
-  // a grapheme boundary.
-  Caret caret(std::size_t index) const;
+  // a grapheme boundary; at a soft line break, on the line `affinity` says.
+  Caret caret(std::size_t index, CaretAffinity affinity = CaretAffinity::Downstream) const;
+  Caret caret(CaretPosition position) const { return caret(position.index, position.affinity); }
   // The caret position nearest the point (px, layout box coordinates); points
   // above or below the text go to the first or last line.
   HitResult hit_test(double x, double y) const;
@@ -166,6 +186,18 @@ class CURVETEXT_API Paragraph {
   // UTF-8 offsets within [0, text().size()].
   std::size_t previous_boundary(std::size_t index) const;
   std::size_t next_boundary(std::size_t index) const;
+  // Visual movement, as arrow keys move: the caret position whose strong
+  // caret is next on screen to the right (direction > 0) or left (< 0) of
+  // `from`'s, on its line; past the line's end in that direction, the next
+  // or previous line's first position that way (the following line when
+  // moving in the paragraph's direction). At the paragraph's ends `from`
+  // comes back. Walking a line from one end to the other visits every
+  // caret x once, monotonically.
+  CaretPosition move_visually(CaretPosition from, int direction) const;
+  // Word movement (ctrl + arrow): visual moves until the caret stands at a
+  // word boundary (UAX #29) after crossing something other than white
+  // space, or at a line's end; monotonic on screen as move_visually.
+  CaretPosition move_word_visually(CaretPosition from, int direction) const;
 
  private:
   friend struct ParagraphBuilder;  // lib/layout/layout.cpp
@@ -174,12 +206,16 @@ class CURVETEXT_API Paragraph {
     std::size_t start = 0, end = 0;  // UTF-8 range of the grapheme
     double left = 0.0, right = 0.0;
     bool rtl = false;
+    int level = 0;  // bidi embedding level
   };
   std::string text_;
   std::vector<TextStyle> styles_;
   std::vector<LayoutLine> lines_;
   std::vector<std::vector<ClusterBox>> boxes_;  // per line, visual order
   std::vector<std::size_t> boundaries_;         // grapheme starts (bytes), plus text size
+  std::size_t line_of(std::size_t index, CaretAffinity affinity) const;
+  // The carets of `positions` (grapheme boundaries on `line`), in one pass.
+  std::vector<Caret> carets_on(std::size_t line, const std::vector<std::size_t>& positions) const;
   double width_ = 0.0;
 };
 
