@@ -15,6 +15,7 @@
 #include "font/harfbuzz_font.hpp"
 #include "curvetext/layout.hpp"
 #include "curvetext/line_break.hpp"
+#include "curvetext/tolerances.hpp"
 #include "font/utf8.hpp"
 #include "support/fonts.hpp"
 #include "support/layout_support.hpp"
@@ -437,6 +438,86 @@ TEST(Layout, BadInput) {
   EXPECT_NO_THROW(Paragraph::layout(fonts, "flag \U0001F1E9\U0001F1EA ok", {}, s));
   // Empty text is one empty line.
   EXPECT_EQ(Paragraph::layout(fonts, "", {}, s).lines().size(), 1u);
+}
+
+// An 80,000-letter word at --width 0.001 took 13 s (each line measured the
+// rest of the word to find its end, then each break tried every cut from the
+// line start): now one pass, each line one cluster.
+TEST(Layout, LongWordBreaksInLinearTime) {
+  FontCollection fonts;
+  const std::string word(80000, 'x');
+  const Paragraph thin = Paragraph::layout(fonts, word, {}, style_with({test::kDejaVuSans}, 16, 0.001));
+  ASSERT_EQ(thin.lines().size(), word.size());
+  EXPECT_EQ(thin.lines()[1234].end - thin.lines()[1234].start, 1u);
+  const Paragraph narrow = Paragraph::layout(fonts, word, {}, style_with({test::kDejaVuSans}, 16, 100));
+  std::size_t end = 0;
+  for (const LayoutLine& line : narrow.lines()) {
+    EXPECT_LE(line.width, 100.0 + 1e-6);
+    EXPECT_EQ(line.start, end);
+    end = line.end;
+  }
+  EXPECT_EQ(end, word.size());
+  // As many letters on a line as fit: the next one would not.
+  const double advance = narrow.lines()[0].width / static_cast<double>(narrow.lines()[0].end);
+  EXPECT_GT(narrow.lines()[0].width + advance, 100.0);
+}
+
+// Ellipsizing the last line measured every cut from the line start (end and
+// start ellipses of a 200,000-letter word did not finish in 60 s).
+TEST(Layout, EllipsisOfALongParagraphIsLinear) {
+  FontCollection fonts;
+  std::string text(200000, 'x');
+  text[1000] = ' ';
+  for (Ellipsis e : {Ellipsis::End, Ellipsis::Start, Ellipsis::Middle}) {
+    ParagraphStyle s = style_with({test::kDejaVuSans}, 16, 300);
+    s.max_lines = 1;
+    s.ellipsis = e;
+    const Paragraph p = Paragraph::layout(fonts, text, {}, s);
+    ASSERT_EQ(p.lines().size(), 1u);
+    EXPECT_TRUE(p.lines()[0].ellipsized);
+    EXPECT_LE(p.lines()[0].width, 300.0 + 1e-6);
+    EXPECT_GT(p.lines()[0].width, 280.0);
+  }
+}
+
+// "a" and 20,000 combining marks took 9-14 s to shape (HarfBuzz attaches
+// each mark by looking back over the others): such clusters are refused.
+TEST(Layout, LongGraphemeClustersAreRefused) {
+  FontCollection fonts;
+  const ParagraphStyle s = style_with({test::kDejaVuSans}, 16);
+  std::string marks = "ok a";
+  for (int i = 0; i < 20000; ++i) marks += "\u0301";
+  try {
+    Paragraph::layout(fonts, marks, {}, s);
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::InvalidText);
+    EXPECT_NE(std::string(e.what()).find("grapheme cluster of 20001 code points"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("at byte 3"), std::string::npos) << e.what();
+  }
+  std::string stacked = "a";
+  for (std::size_t i = 1; i < tolerance::kMaxClusterCodePoints; ++i) stacked += "\u0301";
+  EXPECT_EQ(Paragraph::layout(fonts, stacked, {}, s).lines().size(), 1u);
+}
+
+TEST(Layout, TextSizeAndSpanCountAreLimited) {
+  FontCollection fonts;
+  const ParagraphStyle s = style_with({test::kDejaVuSans}, 16);
+  try {
+    Paragraph::layout(fonts, std::string(tolerance::kMaxTextBytes + 1, 'a'), {}, s);
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::InvalidText);
+    EXPECT_NE(std::string(e.what()).find("over the limit"), std::string::npos) << e.what();
+  }
+  const std::vector<TextSpan> spans(tolerance::kMaxSpans + 1, TextSpan{0, 1, s.default_style});
+  try {
+    Paragraph::layout(fonts, "x", spans, s);
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::InvalidArgument);
+    EXPECT_NE(std::string(e.what()).find("spans are over the limit"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <numbers>
 #include <string>
@@ -320,6 +321,108 @@ TEST(SvgPath, ArcsAreExactConics) {
   }
   std::printf("SVG arc -> conics: largest relative deviation from the ellipse %.2e\n", worst);
   EXPECT_LE(worst, kExactRelative);
+}
+
+// Radii far too small (1e-300) are scaled up to a half ellipse (SVG 1.1
+// F.6.6); squaring them gave NaN (undefined behaviour, then a blank image).
+TEST(SvgPath, TinyArcRadiiScaleUpToAHalfEllipse) {
+  for (const char* radii : {"1e-300 1e-300", "1e-160 1e-160", "1e-300 2e-300", "3e-320 3e-320"}) {
+    SCOPED_TRACE(radii);
+    const std::string d = std::string("M10 50 A") + radii + " 0 0 1 90 50 Z";
+    const auto contours = parse_svg_path(d);
+    ASSERT_EQ(contours.size(), 1u);
+    for (const RationalBezier& piece : contours[0].pieces)
+      for (Vec2 q : piece.points) ASSERT_TRUE(std::isfinite(q.x) && std::isfinite(q.y));
+    // Equal radii: a half circle of radius 40 about (50, 50); radii 1:2 keep
+    // their ratio, a half ellipse through both end points: rx = 40, ry = 80.
+    const bool circle = std::string(radii) != "1e-300 2e-300";
+    Shape shape;
+    shape.contours = contours;
+    const double area = std::abs(shape_outline(shape, 1e-3).signed_area());
+    const double want = std::numbers::pi * 40 * (circle ? 40 : 80) / 2;
+    EXPECT_NEAR(area, want, 1e-9 * want);
+  }
+}
+
+// Strokes are not drawn: refused by name, not dropped (a stroked drawing gave
+// a blank image); fill-opacity and a path's opacity fade its fill.
+TEST(SvgFile, StrokesAreRefusedAndOpacityFades) {
+  const std::pair<const char*, const char*> errors[] = {
+      {"<svg><path d='M0 0 L9 0 L9 9' fill='none' stroke='black' stroke-width='3'/></svg>", "stroke 'black'"},
+      {"<svg><g style='stroke:red'><path d='M0 0 L9 0 L9 9'/></g></svg>", "stroke 'red'"},
+      {"<svg><g opacity='0.5'><path d='M0 0 L9 0 L9 9'/></g></svg>", "<g> has opacity 0.5"},
+      {"<svg><path d='M0 0 L9 0 L9 9' fill-opacity='half'/></svg>", "fill-opacity 'half'"},
+  };
+  for (const auto& [text, error] : errors) {
+    SCOPED_TRACE(text);
+    try {
+      parse_svg(text);
+      ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ErrorCode::InvalidArgument);
+      EXPECT_NE(std::string(e.what()).find(error), std::string::npos) << e.what();
+    }
+  }
+  const ShapeDocument doc = parse_svg(
+      "<svg><g fill-opacity='0.5'><path d='M0 0 L9 0 L9 9'/>"
+      "<path d='M0 0 L9 0 L9 9' style='opacity: 50%' stroke='none' stroke-width='4'/></g>"
+      "<path d='M0 0 L9 0 L9 9' display='none'/><g style='display:none'><path d='M0 0 L9 0 L9 9'/></g></svg>");
+  ASSERT_EQ(doc.shapes.size(), 2u);
+  EXPECT_FLOAT_EQ(doc.shapes[0].color.a, 0.5f);
+  EXPECT_FLOAT_EQ(doc.shapes[1].color.a, 0.25f);
+}
+
+// An open two-point subpath is a line, drawn in SVG only by a stroke: filled
+// it drew nothing without a word.
+TEST(SvgFile, SubpathsWithoutAreaAreRefused) {
+  for (const char* d : {"M10 10 L90 90", "M0 0 L10 0 L5 0 Z", "M0 0 L9 0 L9 9 Z M3 3 L3 3"}) {
+    SCOPED_TRACE(d);
+    try {
+      parse_svg(std::string("<svg><path d='") + d + "'/></svg>");
+      ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("lie on one line"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(parse_svg("<svg><path d='M0 0 L9 0 L9 9'/></svg>").shapes.size(), 1u);  // open, with area
+}
+
+TEST(SvgFile, SegmentCountsAreLimited) {
+  std::string zigzag = "M0 0";
+  for (std::size_t i = 0; i <= tolerance::kMaxSegmentsPerPath / 2; ++i) zigzag += "l1 1l1 -1";
+  try {
+    parse_svg_path(zigzag);
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("segments in one path"), std::string::npos) << e.what();
+  }
+  std::string half = "M0 0";
+  for (std::size_t i = 0; i < tolerance::kMaxSegmentsPerPath / 4; ++i) half += "l1 1l1 -1";
+  std::string doc = "<svg>";
+  for (std::size_t k = 0; k <= tolerance::kMaxSegmentsPerDocument / (tolerance::kMaxSegmentsPerPath / 2); ++k)
+    doc += "<path d='" + half + "'/>";
+  doc += "</svg>";
+  try {
+    parse_svg(doc);
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("segments in the document"), std::string::npos) << e.what();
+  }
+}
+
+// A file without end (/dev/zero) stops at the size limit instead of reading forever.
+TEST(SvgFile, EndlessFileStopsAtTheLimit) {
+  const std::filesystem::path link = std::filesystem::temp_directory_path() / "curvetext-endless-shape.svg";
+  std::filesystem::remove(link);
+  std::filesystem::create_symlink("/dev/zero", link);
+  try {
+    read_shape_file(link.string());
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::Io);
+    EXPECT_NE(std::string(e.what()).find("larger than the limit"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(link);
 }
 
 // --- NURBS --------------------------------------------------------------------------

@@ -13,6 +13,29 @@
 
 namespace curvetext {
 
+namespace {
+
+// Refuses a transform that squashes the w x h image into a sliver: the
+// transformed corners' quadrilateral is thinner (area over longest side)
+// than tolerance::kMinTransformedImagePx, and less than half as thick as
+// the image was.
+void check_squash(const Transform& t, double w, double h) {
+  const Vec2 c[4] = {t.apply({0, 0}), t.apply({w, 0}), t.apply({w, h}), t.apply({0, h})};
+  double twice_area = 0.0, longest = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    twice_area += cross(c[i], c[(i + 1) % 4]);
+    longest = std::max(longest, distance(c[i], c[(i + 1) % 4]));
+  }
+  const double thickness = std::abs(twice_area) / 2.0 / longest;
+  if (thickness < tolerance::kMinTransformedImagePx && thickness < std::min(w, h) / 2.0)
+    throw Error(ErrorCode::InvalidArgument,
+                "the transform squashes the " + detail::format_number(w) + "x" + detail::format_number(h) +
+                    " px image into a sliver " + detail::format_number(thickness) + " px thick (at least " +
+                    detail::format_number(tolerance::kMinTransformedImagePx) + " px must remain): it would look empty");
+}
+
+}  // namespace
+
 void check_coverage_gamma(double gamma) {
   if (!std::isfinite(gamma) || gamma < tolerance::kMinCoverageGamma || gamma > tolerance::kMaxCoverageGamma) {
     char buf[160];
@@ -60,6 +83,7 @@ ImageFrame transform_frame(double w, double h, const Transform& transform) {
     box.add(t.apply(c));
     stretch = std::max(stretch, t.largest_stretch(c));
   }
+  check_squash(t, w, h);
   // Rounding of cos/sin (a rotation by 90 degrees) must not add a pixel.
   constexpr double kSlack = 1e-7;
   const double tw = std::ceil(box.max.x - box.min.x - kSlack), th = std::ceil(box.max.y - box.min.y - kSlack);

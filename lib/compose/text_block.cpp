@@ -61,6 +61,29 @@ void add_bar(Outline& bars, const LayoutLine& line, const GlyphRun& run, hb_ot_m
   bars.close();
 }
 
+// Backgrounds, one outline per colour: a style's runs side by side become one
+// region (the mesh is the union of its rectangles), so no seam shows between them.
+struct Backgrounds {
+  std::vector<std::pair<Color, Outline>> by_color;
+  double size_px = 0.0;  // the largest run's, for `auto` antialiasing
+
+  void add(const LayoutLine& line, const GlyphRun& run, const Color& c) {
+    auto it = std::find_if(by_color.begin(), by_color.end(), [&](const auto& entry) {
+      const Color& e = entry.first;
+      return e.r == c.r && e.g == c.g && e.b == c.b && e.a == c.a;
+    });
+    if (it == by_color.end()) it = by_color.insert(by_color.end(), {c, Outline{}});
+    const double x0 = run.x, x1 = run.x + run.width, top = line.top, bottom = line.top + line.height;
+    if (!(x1 > x0)) return;
+    it->second.move_to({x0, -top});
+    it->second.line_to({x0, -bottom});
+    it->second.line_to({x1, -bottom});
+    it->second.line_to({x1, -top});
+    it->second.close();
+    size_px = std::max(size_px, run.size_px);
+  }
+};
+
 }  // namespace
 
 TextBlock::TextBlock() = default;
@@ -74,6 +97,7 @@ TextBlock TextBlock::from_paragraph(GlyphCache& cache, const Paragraph& paragrap
   TextBlock block;
   block.on_screen_scale_ = on_screen_scale;
   GroupInProgress group;
+  Backgrounds backgrounds;
   auto finish = [&] {
     if (group.font == nullptr) return;
     Group g;
@@ -87,8 +111,9 @@ TextBlock TextBlock::from_paragraph(GlyphCache& cache, const Paragraph& paragrap
   };
   for (const LayoutLine& line : paragraph.lines()) {
     for (const GlyphRun& run : line.runs) {
-      if (run.glyphs.empty()) continue;
       const TextStyle& style = paragraph.styles()[run.style];
+      if (style.background.a > 0.0f) backgrounds.add(line, run, style.background);
+      if (run.glyphs.empty()) continue;
       if (!group.takes(run, style.color)) {
         finish();
         group = GroupInProgress{run.font.get(), run.size_px, style.color, {}, {}};
@@ -102,18 +127,30 @@ TextBlock TextBlock::from_paragraph(GlyphCache& cache, const Paragraph& paragrap
     }
   }
   finish();
+  for (auto& [color, outline] : backgrounds.by_color) {
+    if (outline.empty()) continue;
+    Group g;
+    g.color = color;
+    g.size_px = backgrounds.size_px;
+    g.bars.emplace(DrawBatch::from_mesh(build_mesh(outline)));
+    block.backgrounds_.push_back(std::move(g));
+  }
   return block;
 }
 
 void TextBlock::draw(Renderer& renderer, double x, double y, const DrawOptions& options,
                      const Transform& transform) const {
-  for (const Group& g : groups_) {
-    DrawOptions draw = options;
-    draw.color = g.color;
-    draw.antialiasing = resolve_antialiasing(options.antialiasing, g.size_px * on_screen_scale_);
-    if (g.glyphs) renderer.draw(*g.glyphs, Placement(g.scale, x, y, transform), draw);
-    if (g.bars) renderer.draw(*g.bars, Placement(1.0, x, y, transform), draw);
-  }
+  for (const std::vector<Group>* layer : {&backgrounds_, &groups_})
+    for (const Group& g : *layer) draw_group(renderer, g, x, y, options, transform);
+}
+
+void TextBlock::draw_group(Renderer& renderer, const Group& g, double x, double y, const DrawOptions& options,
+                           const Transform& transform) const {
+  DrawOptions draw = options;
+  draw.color = g.color;
+  draw.antialiasing = resolve_antialiasing(options.antialiasing, g.size_px * on_screen_scale_);
+  if (g.glyphs) renderer.draw(*g.glyphs, Placement(g.scale, x, y, transform), draw);
+  if (g.bars) renderer.draw(*g.bars, Placement(1.0, x, y, transform), draw);
 }
 
 std::size_t TextBlock::group_count() const { return groups_.size(); }

@@ -9,6 +9,7 @@
 #include "curvetext/tolerances.hpp"
 #include "compose/check_style.hpp"
 #include "core/format.hpp"
+#include "layout/cluster_limit.hpp"
 
 namespace curvetext {
 
@@ -24,7 +25,11 @@ TextImageLayout layout_text_image(const Font& font, std::string_view text, const
     throw Error(ErrorCode::InvalidArgument, "margin must be between 0 and the largest image side");
   check_coverage_gamma(options.gamma);
   if (text.empty()) throw Error(ErrorCode::InvalidText, "the text is empty");
+  if (text.size() > tolerance::kMaxTextBytes)
+    throw Error(ErrorCode::InvalidText, "text of " + std::to_string(text.size()) + " bytes is over the limit of " +
+                                            std::to_string(tolerance::kMaxTextBytes) + " bytes");
   validate_utf8(text);
+  detail::check_cluster_lengths(text);
 
   TextImageLayout layout;
   layout.line = shape_line(font, text, options.shaping);

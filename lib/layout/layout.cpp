@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <deque>
 #include <limits>
+#include <map>
 #include <new>
 #include <string>
 
@@ -16,6 +18,7 @@
 #include "curvetext/tolerances.hpp"
 #include "font/harfbuzz_font.hpp"
 #include "font/utf8.hpp"
+#include "layout/cluster_limit.hpp"
 #include "core/format.hpp"
 
 namespace curvetext {
@@ -128,7 +131,8 @@ struct ParagraphBuilder {
   std::u32string cps;              // whole text
   std::vector<std::size_t> bytes;  // byte offset of each code point, plus the end
   std::vector<std::size_t> style_of;
-  std::vector<ResolvedStyle> resolved;
+  std::deque<ResolvedStyle> resolved_storage;
+  std::vector<const ResolvedStyle*> resolved;  // per style
   std::size_t lines_left = std::numeric_limits<std::size_t>::max();
   bool stop = false;
 
@@ -148,46 +152,61 @@ struct ParagraphBuilder {
 
   const TextStyle& style(std::size_t i) const { return out.styles_[i]; }
 
+  // Styles that differ only in what font lookup and shaping features do not
+  // depend on (colour, size, decorations) share one resolution: many spans
+  // cost one lookup.
   void resolve_styles() {
+    std::map<std::string, const ResolvedStyle*> by_key;
     resolved.resize(out.styles_.size());
     for (std::size_t i = 0; i < out.styles_.size(); ++i) {
       const TextStyle& s = out.styles_[i];
-      ResolvedStyle& r = resolved[i];
-      if (s.fonts.empty()) {
-        auto f = fonts.default_font();
-        if (!s.variations.empty()) f = fonts.resolve(f->path(), s.variations);
-        r.chain.push_back(f);
-      }
-      for (std::size_t k = 0; k < s.fonts.size(); ++k) {
-        // The first font must take the variations; later ones may lack the axes.
-        if (k == 0) {
+      std::string key = s.language + "|" + (s.letter_spacing != 0.0 ? "spaced|" : "|");
+      for (const std::string& f : s.fonts) key += f + "\n";
+      for (const Variation& v : s.variations) key += v.tag + "=" + detail::format_number_exact(v.value) + ",";
+      key += "|";
+      for (const Feature& f : s.features) key += f.tag + "=" + std::to_string(f.value) + ",";
+      auto [it, added] = by_key.try_emplace(std::move(key), nullptr);
+      if (added) it->second = &resolved_storage.emplace_back(resolve_style(s));
+      resolved[i] = it->second;
+    }
+  }
+
+  ResolvedStyle resolve_style(const TextStyle& s) {
+    ResolvedStyle r;
+    if (s.fonts.empty()) {
+      auto f = fonts.default_font();
+      if (!s.variations.empty()) f = fonts.resolve(f->path(), s.variations);
+      r.chain.push_back(f);
+    }
+    for (std::size_t k = 0; k < s.fonts.size(); ++k) {
+      // The first font must take the variations; later ones may lack the axes.
+      if (k == 0) {
+        r.chain.push_back(fonts.resolve(s.fonts[k], s.variations));
+      } else {
+        try {
           r.chain.push_back(fonts.resolve(s.fonts[k], s.variations));
-        } else {
-          try {
-            r.chain.push_back(fonts.resolve(s.fonts[k], s.variations));
-          } catch (const Error& e) {
-            if (e.code() != ErrorCode::FontInvalid) throw;
-            r.chain.push_back(fonts.resolve(s.fonts[k]));
-          }
+        } catch (const Error& e) {
+          if (e.code() != ErrorCode::FontInvalid) throw;
+          r.chain.push_back(fonts.resolve(s.fonts[k]));
         }
       }
-      r.language_tag = s.language.empty() ? pstyle.language : s.language;
-      if (!r.language_tag.empty()) {
-        r.language = hb_language_from_string(r.language_tag.c_str(), -1);
-        if (r.language == HB_LANGUAGE_INVALID)
-          throw Error(ErrorCode::InvalidArgument, "bad BCP 47 language tag '" + r.language_tag + "'");
-      }
-      for (const Feature& f : s.features) {
-        if (f.tag.empty() || f.tag.size() > 4)
-          throw Error(ErrorCode::InvalidArgument, "bad feature tag '" + f.tag + "'");
-        r.features.push_back({hb_tag_from_string(f.tag.c_str(), static_cast<int>(f.tag.size())), f.value,
-                              HB_FEATURE_GLOBAL_START, HB_FEATURE_GLOBAL_END});
-      }
-      // Letter spacing would pull ligatures apart: turn them off (as Pango does).
-      if (s.letter_spacing != 0.0)
-        for (const char* tag : {"liga", "clig", "dlig", "hlig"})
-          r.features.push_back({hb_tag_from_string(tag, 4), 0, HB_FEATURE_GLOBAL_START, HB_FEATURE_GLOBAL_END});
     }
+    r.language_tag = s.language.empty() ? pstyle.language : s.language;
+    if (!r.language_tag.empty()) {
+      r.language = hb_language_from_string(r.language_tag.c_str(), -1);
+      if (r.language == HB_LANGUAGE_INVALID)
+        throw Error(ErrorCode::InvalidArgument, "bad BCP 47 language tag '" + r.language_tag + "'");
+    }
+    for (const Feature& f : s.features) {
+      if (f.tag.empty() || f.tag.size() > 4) throw Error(ErrorCode::InvalidArgument, "bad feature tag '" + f.tag + "'");
+      r.features.push_back({hb_tag_from_string(f.tag.c_str(), static_cast<int>(f.tag.size())), f.value,
+                            HB_FEATURE_GLOBAL_START, HB_FEATURE_GLOBAL_END});
+    }
+    // Letter spacing would pull ligatures apart: turn them off (as Pango does).
+    if (s.letter_spacing != 0.0)
+      for (const char* tag : {"liga", "clig", "dlig", "hlig"})
+        r.features.push_back({hb_tag_from_string(tag, 4), 0, HB_FEATURE_GLOBAL_START, HB_FEATURE_GLOBAL_END});
+    return r;
   }
 
   // Shapes paragraph code points [a, b) as one run.
@@ -202,7 +221,7 @@ struct ParagraphBuilder {
 
   std::vector<Glyph> shape(std::size_t a, std::size_t b, std::uint8_t level, hb_script_t script, const Font& font,
                            std::size_t style_index) const {
-    const ResolvedStyle& r = resolved[style_index];
+    const ResolvedStyle& r = *resolved[style_index];
     hb_buffer_t* buf = scratch_buffer();
     hb_buffer_set_direction(buf, level % 2 ? HB_DIRECTION_RTL : HB_DIRECTION_LTR);
     hb_buffer_set_script(buf, script);
@@ -295,7 +314,7 @@ struct ParagraphBuilder {
       std::size_t b = a + 1;
       while (b < n && !grapheme[b]) ++b;
       const std::size_t si = style_of[p0 + a];
-      const ResolvedStyle& r = resolved[si];
+      const ResolvedStyle& r = *resolved[si];
       std::size_t chosen = static_cast<std::size_t>(-1);
       const bool neutral = neutral_script[a] || ignorable_for_coverage(para[a]);
       // Spaces, digits and punctuation stay with the font before them when it
@@ -346,7 +365,7 @@ struct ParagraphBuilder {
   }
 
   double space_width(std::size_t style_index) const {
-    const Font& f = *resolved[style_index].chain.front();
+    const Font& f = *resolved[style_index]->chain.front();
     const std::uint32_t g = f.glyph_for_codepoint(U' ');
     const double s = style(style_index).size_px / f.metrics().units_per_em;
     return g ? hb_font_get_glyph_h_advance(harfbuzz_font(f), g) * s : style(style_index).size_px / 3.0;
@@ -578,7 +597,7 @@ struct ParagraphBuilder {
     }
     if (!any) {
       const std::size_t si = a < para.size() ? style_of[p0 + a] : 0;
-      m = font_metrics(*resolved[si].chain.front(), style(si).size_px);
+      m = font_metrics(*resolved[si]->chain.front(), style(si).size_px);
     }
     const double natural = m.ascent + m.descent + m.gap;
     line.ascent = m.ascent;
@@ -644,7 +663,6 @@ struct ParagraphBuilder {
     // Logical extent of each cluster: up to the next cluster start in logical
     // order, which is the next entry (LTR) or the previous one (RTL) because
     // HarfBuzz keeps clusters monotonic in the run's direction.
-    boxes.reserve(boxes.size() + clusters.size());
     for (std::size_t k = 0; k < clusters.size(); ++k) {
       const auto& [cluster, span] = clusters[k];
       const std::size_t end =
@@ -692,7 +710,9 @@ struct ParagraphBuilder {
     }
     bidi = resolve_bidi(para, pstyle.direction);
     grapheme = grapheme_starts(para);
-    const std::string& lang = resolved[n ? style_of[p0] : 0].language_tag;
+    if (const detail::LongCluster c = detail::find_long_cluster(grapheme); c.length > 0)
+      detail::throw_long_cluster(c.length, out_bytes(c.start));
+    const std::string& lang = resolved[n ? style_of[p0] : 0]->language_tag;
     breaks = line_breaks(para, lang);
     // Thai word breaks are added lazily, where a line must end (see below).
     dictionary_done.assign(n, false);
@@ -728,6 +748,12 @@ struct ParagraphBuilder {
           if (!is_whitespace(para[i])) visible = x;
           const bool at_end = i + 1 == content_end;
           const BreakAction action = at_end ? BreakAction::Mandatory : breaks[i];
+          // Nothing fits and the word already overflows: it is broken below,
+          // its end is not needed (a long word costs one pass, not one per line).
+          if (best == 0 && visible - indent > avail + kEpsilon) {
+            overflow = i;
+            break;
+          }
           if (action == BreakAction::None) continue;
           double w = visible - indent;
           if (para[i] == 0xAD && !at_end) w += hyphen_width(i);
@@ -747,19 +773,7 @@ struct ParagraphBuilder {
                   add_dictionary_breaks(para, breaks, best > a ? best : a, overflow + 1, dictionary_done);
       }
       if (best == 0) {
-        // Nothing fits: break the first word between grapheme clusters
-        // (overflow-wrap: break-word), at least one cluster per line.
-        std::size_t e = a + 1;
-        while (e < content_end && !grapheme[e]) ++e;
-        best = e;
-        for (std::size_t k = e; k < content_end; ++k) {
-          if (!grapheme[k] && k + 1 < content_end) continue;
-          const std::size_t cand = k + 1 < content_end && grapheme[k] ? k : k + 1;
-          if (cand <= best) continue;
-          if (range_width(a, cand, indent) > avail + kEpsilon) break;
-          best = cand;
-          if (breaks[cand - 1] != BreakAction::None) break;
-        }
+        best = break_word(a, content_end, indent, avail);
         best_mandatory = breaks[best - 1] == BreakAction::Mandatory;
       }
       // Lines left: the last one allowed takes the rest of the paragraph (and
@@ -782,6 +796,26 @@ struct ParagraphBuilder {
       a = best;
       // Spaces after a mandatory break belong to the next line.
     }
+  }
+
+  // Nothing fits on the line from `a`: the end of the first word broken
+  // between grapheme clusters (overflow-wrap: break-word), at least one
+  // cluster; in one pass, the width growing cluster by cluster.
+  std::size_t break_word(std::size_t a, std::size_t content_end, double indent, double avail) const {
+    std::size_t best = a + 1;
+    while (best < content_end && !grapheme[best]) ++best;
+    double x = indent, visible = indent;
+    for (std::size_t i = a; i < content_end; ++i) {
+      x += para[i] == U'\t' ? tab_advance(x, style_of[p0 + i]) : advance[i];
+      if (!is_whitespace(para[i])) visible = x;
+      const std::size_t cut = i + 1;
+      if (cut < content_end && !grapheme[cut]) continue;
+      if (cut <= best) continue;
+      if (visible - indent > avail + kEpsilon) break;
+      best = cut;
+      if (breaks[i] != BreakAction::None) break;
+    }
+    return best;
   }
 
   bool last_paragraph_ = false;
@@ -807,6 +841,33 @@ struct ParagraphBuilder {
     emit_line(std::move(pieces), a, text_end, first, last, mandatory || last, false, hyphen);
   }
 
+  // Widths of pieces of [a, e) in O(1) each: pen positions from `a` (a tab
+  // measured from `a`, where every piece of an ellipsized line is measured
+  // from), and per end the last visible code point before it.
+  struct PenWidths {
+    std::size_t a = 0;
+    std::vector<double> pen;               // before code point a + k
+    std::vector<std::size_t> visible_end;  // per end a + k: one past the last non-whitespace before it, or a
+    // Width of [s, t), trailing whitespace excluded.
+    double of(std::size_t s, std::size_t t) const {
+      const std::size_t v = s < t ? visible_end[t - a] : a;
+      return v > s ? pen[v - a] - pen[s - a] : 0.0;
+    }
+  };
+
+  PenWidths pen_widths(std::size_t a, std::size_t e) const {
+    PenWidths w;
+    w.a = a;
+    w.pen.assign(e - a + 1, 0.0);
+    w.visible_end.assign(e - a + 1, a);
+    for (std::size_t i = a; i < e; ++i) {
+      const double x = w.pen[i - a];
+      w.pen[i - a + 1] = x + (para[i] == U'\t' ? tab_advance(x, style_of[p0 + i]) : advance[i]);
+      w.visible_end[i - a + 1] = is_whitespace(para[i]) ? w.visible_end[i - a] : i + 1;
+    }
+    return w;
+  }
+
   // The last line: the rest of the paragraph [a, e) cut to fit `avail` with
   // an ellipsis at the start, middle or end. `force` adds an ellipsis even
   // when the text fits (text after it was dropped).
@@ -823,7 +884,8 @@ struct ParagraphBuilder {
     for (std::size_t i = a; i < e; ++i)
       if (grapheme[i] || i == a) bounds.push_back(i);
     bounds.push_back(e);
-    auto width_of = [&](std::size_t s, std::size_t t) { return s >= t ? 0.0 : range_width(s, t); };
+    const PenWidths widths = pen_widths(a, e);
+    auto width_of = [&](std::size_t s, std::size_t t) { return widths.of(s, t); };
     const Item& near_start = items[item_of[a]];
     const Item& near_end = items[item_of[e - 1]];
     const std::uint8_t para_level = static_cast<std::uint8_t>(bidi.paragraph_level);
@@ -1000,7 +1062,12 @@ Paragraph Paragraph::layout(FontCollection& fonts, std::string_view text, const 
     if (i > 0 && style.tab_stops[i] <= style.tab_stops[i - 1])
       throw Error(ErrorCode::InvalidArgument, "tab stops must increase");
   }
-  if (text.size() > (1u << 28)) throw Error(ErrorCode::InvalidText, "text too long to lay out");
+  if (text.size() > tolerance::kMaxTextBytes)
+    throw Error(ErrorCode::InvalidText, "text of " + std::to_string(text.size()) + " bytes is over the limit of " +
+                                            std::to_string(tolerance::kMaxTextBytes) + " bytes");
+  if (spans.size() > tolerance::kMaxSpans)
+    throw Error(ErrorCode::InvalidArgument,
+                std::to_string(spans.size()) + " spans are over the limit of " + std::to_string(tolerance::kMaxSpans));
   Paragraph p;
   p.text_ = std::string(text);
   p.styles_.push_back(style.default_style);

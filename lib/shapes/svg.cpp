@@ -4,16 +4,17 @@
 // drawing and is not understood (transform, <rect>, <use>, ...) is an error,
 // not silently dropped. SVG's y axis points down; the document is mirrored to
 // y-up (Outline's frame), which leaves both fill rules unchanged.
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include "check.hpp"
 #include "curvetext/error.hpp"
 #include "curvetext/shapes.hpp"
+#include "curvetext/tolerances.hpp"
 
 namespace curvetext {
 
@@ -160,15 +161,50 @@ std::string trim(std::string_view s) {
   return std::string(s);
 }
 
-// Paint properties that <g> passes down to <path>.
+// Paint properties that <g> passes down to <path>, and the element's own
+// opacity (not inherited: it fades the element as one layer).
 struct Paint {
   std::string fill = "black";
   std::string fill_rule = "nonzero";
+  std::string fill_opacity = "1";
+  std::string stroke = "none";
+  std::string display = "inline";
+  std::string opacity;  // empty: 1
 };
 
+void set_property(Paint& paint, const std::string& key, const std::string& value) {
+  if (key == "fill")
+    paint.fill = value;
+  else if (key == "fill-rule")
+    paint.fill_rule = value;
+  else if (key == "fill-opacity")
+    paint.fill_opacity = value;
+  else if (key == "stroke")
+    paint.stroke = value;
+  else if (key == "display")
+    paint.display = value;
+  else if (key == "opacity")
+    paint.opacity = value;
+}
+
+// An opacity value: a number in [0, 1] or a percentage.
+double opacity_value(const std::string& key, const std::string& text) {
+  if (text.empty()) return 1.0;
+  std::string s = text;
+  const bool percent = s.ends_with("%");
+  if (percent) s.pop_back();
+  double v = 0.0;
+  const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (s.empty() || ec != std::errc() || p != s.data() + s.size() || !std::isfinite(v))
+    fail(key + " '" + text + "' is not a number");
+  return std::clamp(percent ? v / 100.0 : v, 0.0, 1.0);
+}
+
+// The element's properties over those it inherits; opacity starts at 1.
 void apply_paint(const Tag& tag, Paint& paint) {
-  if (const std::string* f = tag.find("fill")) paint.fill = trim(*f);
-  if (const std::string* r = tag.find("fill-rule")) paint.fill_rule = trim(*r);
+  paint.opacity.clear();
+  for (const char* key : {"fill", "fill-rule", "fill-opacity", "stroke", "display", "opacity"})
+    if (const std::string* v = tag.find(key)) set_property(paint, key, trim(*v));
   if (const std::string* style = tag.find("style")) {
     std::string_view rest = *style;
     while (!rest.empty()) {
@@ -177,14 +213,17 @@ void apply_paint(const Tag& tag, Paint& paint) {
       rest = semi == std::string_view::npos ? std::string_view{} : rest.substr(semi + 1);
       const std::size_t colon = decl.find(':');
       if (colon == std::string_view::npos) continue;
-      const std::string key = trim(decl.substr(0, colon)), value = trim(decl.substr(colon + 1));
-      if (key == "fill")
-        paint.fill = value;
-      else if (key == "fill-rule")
-        paint.fill_rule = value;
+      set_property(paint, trim(decl.substr(0, colon)), trim(decl.substr(colon + 1)));
     }
   }
   if (tag.find("transform")) fail("<" + tag.name + "> has a transform attribute, which is not supported");
+}
+
+// A group's opacity fades its children as one layer, which is not drawn so.
+void refuse_group_opacity(const Tag& tag, const Paint& paint) {
+  if (opacity_value("opacity", paint.opacity) != 1.0)
+    fail("<" + tag.name + "> has opacity " + paint.opacity +
+         ", which is not supported on groups; set fill-opacity or opacity on each path");
 }
 
 // "#rgb", "#rrggbb", names parse_color knows, and rgb(r, g, b) with 0..255.
@@ -213,6 +252,18 @@ Color svg_color(const std::string& text) {
   }
 }
 
+// The path's fill colour with fill-opacity and opacity (one path fades
+// alone as one layer would); refuses a stroke rather than drop it.
+Color path_color(const Paint& paint) {
+  if (paint.stroke != "none")
+    fail("<path> has stroke '" + paint.stroke +
+         "': strokes are not drawn (only fills are); convert the stroke to a filled path or set stroke=\"none\"");
+  Color c = svg_color(paint.fill);
+  c.a *=
+      static_cast<float>(opacity_value("fill-opacity", paint.fill_opacity) * opacity_value("opacity", paint.opacity));
+  return c;
+}
+
 // A length in user units: a plain number or "...px"; other units and
 // percentages give 0 (the viewBox decides then).
 double length_attribute(const std::string* value) {
@@ -227,6 +278,53 @@ double length_attribute(const std::string* value) {
   return v;
 }
 
+// True when every point of the contour lies on the line through its first
+// point and the point farthest from it (within tolerance::kConicFlatnessRelative
+// of that distance): it encloses no area.
+bool on_one_line(const ShapeContour& c) {
+  const Vec2 origin = c.pieces.front().points.front();
+  Vec2 far = origin;
+  double far_length = 0.0;
+  for (const RationalBezier& piece : c.pieces)
+    for (Vec2 q : piece.points)
+      if (const double l = length(q - origin); l > far_length) {
+        far = q;
+        far_length = l;
+      }
+  if (far_length == 0.0) return true;
+  const Vec2 axis = (far - origin) / far_length;
+  for (const RationalBezier& piece : c.pieces)
+    for (Vec2 q : piece.points)
+      if (std::abs(cross(axis, q - origin)) > tolerance::kConicFlatnessRelative * far_length) return false;
+  return true;
+}
+
+void add_path(ShapeDocument& doc, const std::string& d, const Paint& paint, std::size_t& segments) {
+  Shape shape;
+  shape.color = path_color(paint);
+  try {
+    shape.fill_rule = parse_fill_rule(paint.fill_rule);
+  } catch (const Error& e) {
+    fail(e.what());
+  }
+  for (ShapeContour& c : parse_svg_path(d)) {
+    // A line (an open two-point subpath) is drawn by a stroke in SVG; filled,
+    // it would draw nothing without a word.
+    if (on_one_line(c))
+      fail("<path> " + std::to_string(doc.shapes.size() + 1) + ", subpath " +
+           std::to_string(shape.contours.size() + 1) +
+           ": its points lie on one line, so it encloses no area and would draw nothing (only fills are drawn, not "
+           "strokes)");
+    segments += c.pieces.size();
+    if (segments > tolerance::kMaxSegmentsPerDocument)
+      fail("more than " + std::to_string(tolerance::kMaxSegmentsPerDocument) + " path segments in the document");
+    for (RationalBezier& piece : c.pieces)
+      for (Vec2& q : piece.points) q.y = -q.y;
+    shape.contours.push_back(std::move(c));
+  }
+  doc.shapes.push_back(std::move(shape));
+}
+
 }  // namespace
 
 ShapeDocument parse_svg(std::string_view text) {
@@ -238,6 +336,7 @@ ShapeDocument parse_svg(std::string_view text) {
   // Inside <defs>, <clipPath>, <mask>, ... paths are not drawn directly.
   std::string skipping;
   int skip_depth = 0;
+  std::size_t segments = 0;  // in the document so far
   while (scanner.next(tag)) {
     if (skip_depth > 0) {
       if (tag.name == skipping && !tag.self_closing) skip_depth += tag.closing ? -1 : 1;
@@ -274,6 +373,8 @@ ShapeDocument parse_svg(std::string_view text) {
       }
       Paint root;
       apply_paint(tag, root);
+      refuse_group_opacity(tag, root);
+      if (root.display == "none") break;
       stack.push_back(root);
       if (tag.self_closing) break;
       continue;
@@ -298,28 +399,22 @@ ShapeDocument parse_svg(std::string_view text) {
       if (tag.name == "svg") fail("nested <svg> elements are not supported");
       Paint p = stack.back();
       apply_paint(tag, p);
-      if (!tag.self_closing) stack.push_back(p);
+      refuse_group_opacity(tag, p);
+      if (p.display == "none" && !tag.self_closing) {  // not drawn, nor anything inside
+        skipping = tag.name;
+        skip_depth = 1;
+      } else if (!tag.self_closing) {
+        stack.push_back(p);
+      }
       continue;
     }
     if (tag.name == "path") {
       Paint p = stack.back();
       apply_paint(tag, p);
       const std::string* d = tag.find("d");
-      if (!d) continue;  // a path without data draws nothing
-      if (p.fill == "none") continue;
-      Shape shape;
-      shape.color = svg_color(p.fill);
-      try {
-        shape.fill_rule = parse_fill_rule(p.fill_rule);
-      } catch (const Error& e) {
-        fail(e.what());
-      }
-      for (ShapeContour& c : parse_svg_path(*d)) {
-        for (RationalBezier& piece : c.pieces)
-          for (Vec2& q : piece.points) q.y = -q.y;
-        shape.contours.push_back(std::move(c));
-      }
-      doc.shapes.push_back(std::move(shape));
+      if (!d || p.display == "none") continue;  // draws nothing
+      if (p.fill == "none" && p.stroke == "none") continue;
+      add_path(doc, *d, p, segments);
       continue;
     }
     static const char* const kRefused[] = {"rect", "circle", "ellipse", "line",   "polyline", "polygon",
@@ -337,9 +432,16 @@ ShapeDocument parse_svg(std::string_view text) {
 ShapeDocument read_shape_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(ErrorCode::Io, "cannot read shape file " + path);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
+  // Chunk by chunk up to the limit: an endless file (/dev/zero) stops there.
+  std::string text;
+  char chunk[1 << 16];
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
+    text.append(chunk, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > tolerance::kMaxShapeFileBytes)
+      throw Error(ErrorCode::Io, "shape file " + path + " is larger than the limit of " +
+                                     std::to_string(tolerance::kMaxShapeFileBytes) + " bytes");
+  }
+  if (in.bad()) throw Error(ErrorCode::Io, "cannot read shape file " + path);
   auto ends_with = [&](std::string_view ext) {
     if (path.size() < ext.size()) return false;
     for (std::size_t i = 0; i < ext.size(); ++i)

@@ -14,6 +14,7 @@
 #include "check.hpp"
 #include "curvetext/error.hpp"
 #include "curvetext/shapes.hpp"
+#include "curvetext/tolerances.hpp"
 
 namespace curvetext {
 
@@ -61,6 +62,7 @@ class PathParser {
   ShapeContour current_;
   Vec2 pen_{}, start_{};
   bool have_start_ = false;
+  std::size_t segments_ = 0;
   // Reflection sources for S/s and T/t.
   Vec2 last_cubic_control_{}, last_quad_control_{};
   char last_ = 0;
@@ -183,7 +185,11 @@ class PathParser {
     last_ = 'Z';
   }
 
-  void add(RationalBezier piece) { current_.pieces.push_back(std::move(piece)); }
+  void add(RationalBezier piece) {
+    if (++segments_ > tolerance::kMaxSegmentsPerPath)
+      fail("more than " + std::to_string(tolerance::kMaxSegmentsPerPath) + " segments in one path");
+    current_.pieces.push_back(std::move(piece));
+  }
 
   void segment(char command) {
     const bool rel = command >= 'a' && command <= 'z';
@@ -269,7 +275,9 @@ class PathParser {
   }
 
   // SVG implementation notes F.6.5 (endpoint to centre parametrisation) and
-  // F.6.6 (out-of-range radii are scaled up until the arc exists).
+  // F.6.6 (out-of-range radii are scaled up until the arc exists). Worked in
+  // units of the larger radius, so radii from 1e-300 to 1e9 neither
+  // overflow nor vanish when squared.
   void arc(double rx, double ry, double phi_degrees, bool large, bool sweep, Vec2 p) {
     const Vec2 p0 = pen_;
     if (p0 == p) return;  // the spec: omit the arc
@@ -283,25 +291,39 @@ class PathParser {
     const double cp = std::cos(phi), sp = std::sin(phi);
     const Vec2 h = (p0 - p) * 0.5;
     const Vec2 q{cp * h.x + sp * h.y, -sp * h.x + cp * h.y};  // (x1', y1')
-    const double lambda = (q.x * q.x) / (rx * rx) + (q.y * q.y) / (ry * ry);
-    if (lambda > 1.0) {
-      const double s = std::sqrt(lambda);
-      rx *= s;
-      ry *= s;
+    // sqrt(lambda) of F.6.6; infinite for radii far too small, which is > 1 too.
+    const bool scale_up = std::hypot(q.x / rx, q.y / ry) > 1.0;
+    if (scale_up) {
+      // rx * sqrt(lambda) and ry * sqrt(lambda) without forming lambda.
+      const double aspect = ry / rx;
+      rx = std::hypot(q.x, q.y / aspect);
+      ry = std::hypot(q.x * aspect, q.y);
     }
-    const double num = rx * rx * ry * ry - rx * rx * q.y * q.y - ry * ry * q.x * q.x;
-    const double den = rx * rx * q.y * q.y + ry * ry * q.x * q.x;
-    double coef = den > 0.0 ? std::sqrt(std::max(0.0, num / den)) : 0.0;
-    if (large == sweep) coef = -coef;
-    const Vec2 cq{coef * rx * q.y / ry, -coef * ry * q.x / rx};
+    const double r = std::max(rx, ry);
+    const double ra = rx / r, rb = ry / r;
+    const Vec2 qn = q / r;
+    if (!(std::isfinite(r) && ra > 0.0 && rb > 0.0))
+      fail("arc radii " + shapes_detail::number_text(rx) + " and " + shapes_detail::number_text(ry) +
+           " are too far apart to draw");
+    // The centre: the midpoint when the radii were scaled up (lambda = 1).
+    double coef = 0.0;
+    if (!scale_up) {
+      const double num = ra * ra * rb * rb - ra * ra * qn.y * qn.y - rb * rb * qn.x * qn.x;
+      const double den = ra * ra * qn.y * qn.y + rb * rb * qn.x * qn.x;
+      coef = den > 0.0 ? std::sqrt(std::max(0.0, num / den)) : 0.0;
+      if (large == sweep) coef = -coef;
+    }
+    const Vec2 cq{coef * ra * qn.y / rb, -coef * rb * qn.x / ra};  // in units of r
     const Vec2 mid = (p0 + p) * 0.5;
-    const Vec2 centre{cp * cq.x - sp * cq.y + mid.x, sp * cq.x + cp * cq.y + mid.y};
-    const Vec2 u{(q.x - cq.x) / rx, (q.y - cq.y) / ry};
-    const Vec2 v{(-q.x - cq.x) / rx, (-q.y - cq.y) / ry};
+    const Vec2 centre{(cp * cq.x - sp * cq.y) * r + mid.x, (sp * cq.x + cp * cq.y) * r + mid.y};
+    const Vec2 u{(qn.x - cq.x) / ra, (qn.y - cq.y) / rb};
+    const Vec2 v{(-qn.x - cq.x) / ra, (-qn.y - cq.y) / rb};
     const double theta1 = std::atan2(u.y, u.x);
     double delta = std::atan2(cross(u, v), dot(u, v));
     if (!sweep && delta > 0) delta -= 2 * std::numbers::pi;
     if (sweep && delta < 0) delta += 2 * std::numbers::pi;
+    if (!std::isfinite(theta1) || !std::isfinite(delta) || !std::isfinite(centre.x) || !std::isfinite(centre.y))
+      fail("the arc's centre cannot be computed from its radii and end points");
     // At most 90 degrees per conic: w = cos(d/2) >= cos(45 deg), far from 0.
     const int n = std::max(1, static_cast<int>(std::ceil(std::abs(delta) / (std::numbers::pi / 2) - 1e-9)));
     const double d = delta / n;

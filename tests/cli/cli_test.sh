@@ -277,5 +277,23 @@ expect_error "shape: skew 90" 1 "skew" -- shape --input "$shape_json" --skew 90 
 expect_error "shape: NaN gamma" 1 "--gamma must be" -- shape --input "$shape_json" --gamma nan -o "$tmp/out.png"
 expect_error "shape: unknown blending" 1 "unknown blending" -- shape --input "$shape_json" --blend lin -o "$tmp/out.png"
 
+# --- input limits: a clear error in bounded time, no image ----------------------
+expect_error "render: endless --text-file stops at the limit" 1 "larger than the limit" -- render --size 16 --text-file /dev/zero -o "$tmp/out.png"
+expect_error "render: --perspective 89.99 leaves a sliver" 1 "sliver" -- render --size 32 --text Hello --perspective 89.99 -o "$tmp/out.png"
+deep=$(printf '<b>%.0s' $(seq 1000))x$(printf '</b>%.0s' $(seq 1000))
+expect_error "render: markup nested 1000 deep" 1 "nested deeper than 64" -- render --size 16 --width 200 --markup --text "$deep" -o "$tmp/out.png"
+python3 -c "import sys; sys.stdout.write('a' + '\u0301' * 20000)" >"$tmp/marks.txt"
+expect_error "render: a + 20000 combining marks" 1 "grapheme cluster of 20001" -- render --size 16 --text-file "$tmp/marks.txt" -o "$tmp/out.png"
+printf '<svg width="100" height="100"><path d="M10 10 L90 90 L10 90 Z" fill="none" stroke="black"/></svg>' >"$tmp/stroke.svg"
+expect_error "shape: SVG stroke refused by name" 1 "stroke 'black'" -- shape --input "$tmp/stroke.svg" -o "$tmp/out.png"
+expect_error "layout: markup error names its byte" 1 "markup, byte 7: </b> does not close <i>" -- layout --size 16 --markup --text "<b><i>x</b></i>" --json
+# Markup nests: the bold word inside a coloured span is still bold.
+if timeout 60 "$CURVETEXT" layout --size 16 --markup --text "<color=red>red <b>bold</b></color>" --json >"$tmp/tree.json" 2>"$tmp/stderr" &&
+   grep -q 'DejaVuSans-Bold' "$tmp/tree.json"; then
+  ok "layout: <b> inside <color> keeps the bold face"
+else
+  bad "layout: <b> inside <color> lost the bold face: $(head -c 300 "$tmp/tree.json") $(cat "$tmp/stderr")"
+fi
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

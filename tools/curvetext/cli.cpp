@@ -2,10 +2,10 @@
 
 #include <charconv>
 #include <fstream>
-#include <sstream>
 
 #include "curvetext/default_font.hpp"
 #include "curvetext/error.hpp"
+#include "curvetext/tolerances.hpp"
 
 #ifndef CURVETEXT_BUILD_FONT_DIR
 #define CURVETEXT_BUILD_FONT_DIR ""
@@ -32,9 +32,17 @@ int parse_int(std::string_view option, std::string_view text) {
 std::string read_text_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(ErrorCode::Io, "cannot read text file " + path);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  std::string text = ss.str();
+  // Chunk by chunk up to the limit and a line break (which is dropped): an
+  // endless file (/dev/zero, a pipe) stops there.
+  std::string text;
+  char chunk[1 << 16];
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
+    text.append(chunk, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > tolerance::kMaxTextBytes + 2)
+      throw Error(ErrorCode::InvalidText, "text file " + path + " is larger than the limit of " +
+                                              std::to_string(tolerance::kMaxTextBytes) + " bytes");
+  }
+  if (in.bad()) throw Error(ErrorCode::Io, "cannot read text file " + path);
   if (!text.empty() && text.back() == '\n') text.pop_back();
   if (!text.empty() && text.back() == '\r') text.pop_back();
   return text;

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "curvetext/error.hpp"
+#include "curvetext/markup.hpp"
 #include "layout_options.hpp"
 
 namespace curvetext::cli {
@@ -112,90 +113,6 @@ bool LayoutCli::parse(Args& args) {
   return true;
 }
 
-std::string parse_markup(const std::string& markup, const TextStyle& base, std::vector<TextSpan>& spans) {
-  std::string text;
-  struct Open {
-    std::string tag;
-    std::size_t start;
-    TextStyle style;
-  };
-  std::vector<Open> stack;
-  auto current = [&]() -> const TextStyle& { return stack.empty() ? base : stack.back().style; };
-  std::size_t i = 0;
-  while (i < markup.size()) {
-    const char c = markup[i];
-    if (c == '&') {
-      const std::size_t semi = markup.find(';', i);
-      const std::string entity = semi == std::string::npos ? "" : markup.substr(i, semi - i + 1);
-      if (entity == "&lt;")
-        text += '<';
-      else if (entity == "&gt;")
-        text += '>';
-      else if (entity == "&amp;")
-        text += '&';
-      else
-        throw Error(ErrorCode::InvalidArgument,
-                    "markup: unknown entity at byte " + std::to_string(i) + " (use &lt; &gt; &amp;)");
-      i = semi + 1;
-      continue;
-    }
-    if (c != '<') {
-      text += c;
-      ++i;
-      continue;
-    }
-    const std::size_t close = markup.find('>', i);
-    if (close == std::string::npos)
-      throw Error(ErrorCode::InvalidArgument, "markup: unclosed '<' at byte " + std::to_string(i));
-    const std::string tag = markup.substr(i + 1, close - i - 1);
-    i = close + 1;
-    if (!tag.empty() && tag[0] == '/') {
-      const std::string name = tag.substr(1);
-      if (stack.empty() || stack.back().tag != name)
-        throw Error(ErrorCode::InvalidArgument, "markup: </" + name + "> does not close the open tag");
-      spans.push_back({stack.back().start, text.size(), stack.back().style});
-      stack.pop_back();
-      continue;
-    }
-    const std::size_t eq = tag.find('=');
-    const std::string name = tag.substr(0, eq);
-    const std::string value = eq == std::string::npos ? "" : tag.substr(eq + 1);
-    TextStyle s = current();
-    // Bold and italic ask fontconfig for the same family with that style.
-    auto restyle = [&](const char* what) {
-      const std::string family = s.fonts.empty() ? "DejaVu Sans" : s.fonts.front();
-      std::string fam = family;
-      if (family.find('/') != std::string::npos) {
-        try {
-          fam = Font::open(family).family_name();
-        } catch (const Error&) {
-        }
-      }
-      s.fonts.insert(s.fonts.begin(), fam + ":" + what);
-    };
-    if (name == "b")
-      restyle("bold");
-    else if (name == "i")
-      restyle("italic");
-    else if (name == "u")
-      s.underline = true;
-    else if (name == "s")
-      s.strikethrough = true;
-    else if (name == "color")
-      s.color = parse_color(value);
-    else if (name == "size") {
-      s.size_px = parse_number("<size>", value);
-      if (!(s.size_px > 0)) throw Error(ErrorCode::InvalidArgument, "markup: <size=...> must be positive");
-    } else if (name == "font")
-      s.fonts.insert(s.fonts.begin(), value);
-    else
-      throw Error(ErrorCode::InvalidArgument, "markup: unknown tag <" + tag + "> (b, i, u, s, color=, size=, font=)");
-    stack.push_back({name, text.size(), s});
-  }
-  if (!stack.empty()) throw Error(ErrorCode::InvalidArgument, "markup: <" + stack.back().tag + "> is not closed");
-  return text;
-}
-
 Paragraph layout_from_cli(FontCollection& fonts, const LayoutCli& options, const FontChoice& font_choice,
                           double size_px, const std::vector<Feature>& features, const std::string& text) {
   ParagraphStyle style = options.style;
@@ -206,10 +123,9 @@ Paragraph layout_from_cli(FontCollection& fonts, const LayoutCli& options, const
         font_choice.face_index && &f == &options.fonts.front() ? f + "#" + std::to_string(font_choice.face_index) : f);
   if (style.default_style.fonts.empty()) style.default_style.fonts.push_back(default_font());
   if (font_choice.variations) style.default_style.variations = parse_variations(*font_choice.variations);
-  std::vector<TextSpan> spans;
-  std::string plain = text;
-  if (options.markup) plain = parse_markup(text, style.default_style, spans);
-  return Paragraph::layout(fonts, plain, spans, style);
+  if (!options.markup) return Paragraph::layout(fonts, text, {}, style);
+  const MarkupText marked = parse_markup(text, style.default_style);
+  return Paragraph::layout(fonts, marked.text, marked.spans, style);
 }
 
 int run_layout(const std::vector<std::string>& arguments) {

@@ -27,7 +27,7 @@ constexpr const char* kUsage =
     "                        --line-height X|Npx --max-lines N --ellipsis none|start|middle|end\n"
     "                        --direction auto|ltr|rtl --language BCP47 --indent PX --tab-stops PX,...\n"
     "                        --font repeated (fallback order) --markup (<b> <i> <u> <s> <color=C>\n"
-    "                        <size=PX> <font=NAME>, &lt; &gt; &amp;)\n"
+    "                        <size=PX> <font=NAME> <span ...>, entities; docs/markup.md)\n"
     "       curvetext layout [--font FILE]... --size PX [--width PX] (--text UTF8 | --text-file FILE)\n"
     "                        [paragraph options] --json\n"
     "       curvetext check  [--font FILE] [--face-index N] [--variations ...] [--size PX]\n"

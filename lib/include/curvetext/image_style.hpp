@@ -53,7 +53,9 @@ struct ImageFrame {
 // Identity: the same size (ceil) and transform. Otherwise the transformed
 // image's bounding box, moved to the origin. Throws Error(InvalidArgument) for
 // an invalid transform (Transform::validate), one that puts a corner behind
-// the viewer, or a side above tolerance::kMaxImageSidePx.
+// the viewer, one that squashes the image into a sliver thinner than
+// tolerance::kMinTransformedImagePx, or a side above
+// tolerance::kMaxImageSidePx.
 CURVETEXT_API ImageFrame transform_frame(double width, double height, const Transform& transform);
 
 }  // namespace curvetext

@@ -48,6 +48,7 @@ struct TextStyle {
   double word_spacing = 0.0;    // px added to every space
   bool underline = false;
   bool strikethrough = false;
+  Color background{0, 0, 0, 0};  // drawn behind the style's runs, line high; transparent: none
 };
 
 // A style for the UTF-8 byte range [start, end). Later spans win where spans
@@ -156,10 +157,12 @@ struct HitResult {
 class CURVETEXT_API Paragraph {
  public:
   // Uses `fonts` during the call only (not thread-safe: see
-  // font_collection.hpp). Throws Error(InvalidText) for invalid UTF-8 or a
-  // text over 256 MiB (an empty text lays out as one empty line),
-  // Error(InvalidArgument) for bad sizes, widths, spans or styles, and the
-  // font errors of FontCollection.
+  // font_collection.hpp). Throws Error(InvalidText) for invalid UTF-8, a
+  // text over tolerance::kMaxTextBytes or a grapheme cluster over
+  // tolerance::kMaxClusterCodePoints (an empty text lays out as one empty
+  // line), Error(InvalidArgument) for bad sizes, widths, spans or styles or
+  // more than tolerance::kMaxSpans spans, and the font errors of
+  // FontCollection. Time and memory are linear in the text (docs/limits.md).
   static Paragraph layout(FontCollection& fonts, std::string_view text, const std::vector<TextSpan>& spans,
                           const ParagraphStyle& style);
 

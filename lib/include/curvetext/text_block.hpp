@@ -1,7 +1,8 @@
 // A laid-out paragraph (layout.hpp) ready to draw into the application's own
 // framebuffer, frame after frame: its glyph runs grouped by face, size and
 // colour (consecutive runs), each group one DrawBatch over the glyph meshes of
-// a GlyphCache, with the group's underlines and strikethroughs as one mesh.
+// a GlyphCache, with the group's underlines and strikethroughs as one mesh;
+// run backgrounds (TextStyle::background) one mesh per colour, drawn first.
 // Built once; drawn again, moved or transformed, it changes only uniforms.
 #pragma once
 
@@ -46,6 +47,9 @@ class CURVETEXT_API TextBlock {
  private:
   struct Group;
   TextBlock();
+  void draw_group(Renderer& renderer, const Group& g, double x, double y, const DrawOptions& options,
+                  const Transform& transform) const;
+  std::vector<Group> backgrounds_;  // drawn first, under every group
   std::vector<Group> groups_;
   double on_screen_scale_ = 1.0;
 };

@@ -41,7 +41,9 @@ struct TextImageLayout {
 };
 
 // Shapes the text and sizes the image; no GL, thread-safe (font.hpp). Throws
-// Error(InvalidText) for an empty text or invalid UTF-8,
+// Error(InvalidText) for an empty text, invalid UTF-8, a text over
+// tolerance::kMaxTextBytes or a grapheme cluster over
+// tolerance::kMaxClusterCodePoints,
 // Error(InvalidArgument) for a size <= 0, NaN or above
 // tolerance::kMaxPixelsPerEm, a bad margin, an image side above
 // tolerance::kMaxImageSidePx, a transform that transform_frame refuses, or

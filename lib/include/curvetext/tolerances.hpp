@@ -117,5 +117,36 @@ inline constexpr double kMinTransformDeterminant = 1e-9;
 // (dimensionless, w = 1 without perspective): w <= 0 is behind the viewer,
 // and near 0 the projection explodes.
 inline constexpr double kMinPerspectiveW = 1e-3;
+// A transformed image must stay at least this thick, in pixels (its area
+// over its longest side), unless it was no thicker than twice this before: a
+// plane seen almost edge-on (--perspective 89.99) or a tiny scale squashes
+// the content into a sliver of pixels, an image that looks empty.
+// Error(InvalidArgument).
+inline constexpr double kMinTransformedImagePx = 4.0;
+
+// --- Input sizes (docs/limits.md lists these with the error each raises) -----
+// Text of one Paragraph::layout call, one markup document and one
+// --text-file, in UTF-8 bytes. Layout holds about 75 bytes per byte of text
+// (code points, offsets, styles, glyphs), so 4 MiB (a long novel) costs
+// about 300 MB. Error(InvalidText).
+inline constexpr std::size_t kMaxTextBytes = std::size_t{4} << 20;
+// Code points in one grapheme cluster (a letter and its combining marks).
+// HarfBuzz attaches each mark by looking back over the marks before it, so a
+// cluster costs the square of its length; Unicode's stream-safe format
+// (UAX #15) allows 30 marks in a row, and stacked-mark text stays far below
+// this. Error(InvalidText).
+inline constexpr std::size_t kMaxClusterCodePoints = 256;
+// Styled spans of one paragraph (TextSpan) and markup spans. Error(InvalidArgument)
+// from Paragraph::layout, Error(InvalidText) from parse_markup.
+inline constexpr std::size_t kMaxSpans = std::size_t{1} << 18;
+// Elements open at once in markup (<b><i>...). Error(InvalidText).
+inline constexpr std::size_t kMaxMarkupDepth = 64;
+// Shape documents (SVG, JSON): bytes of one file, segments (line, curve or
+// arc piece) of one path or shape, and of the whole document. Meshing time
+// and memory grow with the segment count. Error(InvalidArgument), Error(Io)
+// for a file over the size.
+inline constexpr std::size_t kMaxShapeFileBytes = std::size_t{64} << 20;
+inline constexpr std::size_t kMaxSegmentsPerPath = std::size_t{1} << 16;
+inline constexpr std::size_t kMaxSegmentsPerDocument = std::size_t{1} << 18;
 
 }  // namespace curvetext::tolerance
