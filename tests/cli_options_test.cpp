@@ -1,15 +1,26 @@
-// The CLI's option values (tools/curvetext/option_values.hpp): what each
-// option accepts and the errors it gives. The CLI's own behaviour is
-// tests/cli/cli_test.sh.
+// The CLI's option values (tools/curvetext/option_values.hpp), its argument
+// walker and output formats (cli.hpp), the paragraph options
+// (layout_options.hpp) and SVG output (svg_output.hpp): what each accepts and
+// the errors it gives. The CLI's own behaviour is tests/cli/cli_test.sh.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "curvetext/error.hpp"
 #include "curvetext/renderer.hpp"
 #include "curvetext/tolerances.hpp"
+#include "cli.hpp"
+#include "curvetext/layout.hpp"
+#include "curvetext/paragraph_image.hpp"
+#include "curvetext/shapes.hpp"
+#include "layout_options.hpp"
 #include "option_values.hpp"
+#include "svg_output.hpp"
 
 namespace curvetext::cli {
 namespace {
@@ -58,6 +69,115 @@ TEST(CliOptions, BlendingFilterAndGamma) {
     EXPECT_EQ(e.code(), ErrorCode::InvalidArgument);
     EXPECT_EQ(std::string(e.what()).rfind("--gamma must be a number from 0.25 to 4", 0), 0u) << e.what();
   }
+}
+
+// Each option of `args` with the value it takes (empty for a flag: those
+// named in `flags`).
+std::vector<std::pair<std::string, std::string>> walk(std::vector<std::string> args,
+                                                      const std::vector<std::string>& flags = {}) {
+  Args walker(std::move(args));
+  std::vector<std::pair<std::string, std::string>> out;
+  while (walker.next()) {
+    const std::string name = walker.option();
+    const bool flag = std::find(flags.begin(), flags.end(), name) != flags.end();
+    out.emplace_back(name, flag ? std::string() : walker.value());
+  }
+  return out;
+}
+
+TEST(CliArgs, EqualsFormTakesTheValue) {
+  using V = std::vector<std::pair<std::string, std::string>>;
+  EXPECT_EQ(walk({"--size=20", "--text", "hi"}), (V{{"--size", "20"}, {"--text", "hi"}}));
+  EXPECT_EQ(walk({"--text=a=b", "-o", "-"}), (V{{"--text", "a=b"}, {"-o", "-"}}));
+  EXPECT_EQ(walk({"--text=", "--debug"}, {"--debug"}), (V{{"--text", ""}, {"--debug", ""}}));
+  // A value that looks like "--x=y" after a separate option name stays a value.
+  EXPECT_EQ(walk({"--text", "--a=b"}), (V{{"--text", "--a=b"}}));
+}
+
+TEST(CliArgs, FlagGivenAValueAndMissingValueAreUsageErrors) {
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"--debug=1"}, std::vector<std::string>{"--debug=yes", "--size", "3"}}) {
+    try {
+      walk(args, {"--debug"});
+      FAIL() << args[0];
+    } catch (const UsageError& e) {
+      EXPECT_EQ(e.message, "--debug takes no value, got '" + args[0].substr(8) + "'");
+    }
+  }
+  try {
+    walk({"--size"});
+    FAIL();
+  } catch (const UsageError& e) {
+    EXPECT_EQ(e.message, "--size needs a value");
+  }
+}
+
+TEST(CliOutput, FormatFromTheExtension) {
+  EXPECT_EQ(output_format("a.png", std::nullopt), OutputFormat::Png);
+  EXPECT_EQ(output_format("dir.d/A.PNG", std::nullopt), OutputFormat::Png);
+  EXPECT_EQ(output_format("a.svg", std::nullopt), OutputFormat::Svg);
+  EXPECT_EQ(output_format("-", std::nullopt), OutputFormat::Png);
+  EXPECT_EQ(output_format("-", std::string("svg")), OutputFormat::Svg);
+  EXPECT_EQ(output_format("a.out", std::string("png")), OutputFormat::Png);
+  for (const char* bad : {"a.jpg", "a", "dir.png/a", "a.png.txt", "a."}) {
+    try {
+      output_format(bad, std::nullopt);
+      FAIL() << bad;
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ErrorCode::InvalidArgument);
+      EXPECT_NE(std::string(e.what()).find(bad), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_THROW(output_format("a.png", std::string("gif")), UsageError);
+}
+
+TEST(CliOptions, TextDefaultsAndSpacing) {
+  TextCli input;
+  LayoutCli layout;
+  Args args({"--letter-spacing=2.5", "--word-spacing", "-1", "--text", "hi"});
+  while (args.next()) ASSERT_TRUE(layout.parse(args) || input.parse(args)) << args.option();
+  EXPECT_EQ(input.size_px, kDefaultSizePx);
+  EXPECT_EQ(input.read(), "hi");
+  EXPECT_EQ(layout.style.default_style.letter_spacing, 2.5);
+  EXPECT_EQ(layout.style.default_style.word_spacing, -1.0);
+  Args nan_spacing({"--letter-spacing", "nan"});
+  nan_spacing.next();
+  EXPECT_THROW(layout.parse(nan_spacing), UsageError);
+  EXPECT_THROW(TextCli{}.read(), UsageError);  // neither --text nor --text-file
+}
+
+// The SVG's path data read back with parse_svg_path covers the glyphs' own
+// area, placed where the layout put them.
+TEST(CliSvg, PathsHaveTheGlyphAreaAtTheLayoutPositions) {
+  FontCollection fonts;
+  ParagraphStyle style;
+  style.default_style.size_px = 40.0;
+  const Paragraph p = Paragraph::layout(fonts, "Bag o", {}, style);
+  const std::string svg = paragraph_svg(p, 10.0, Color{0, 0, 0, 0});
+  double want = 0.0;
+  for (const GlyphRun& run : p.lines()[0].runs) {
+    const double scale = run.size_px / run.font->metrics().units_per_em;
+    for (const PositionedGlyph& g : run.glyphs) want += run.font->glyph_outline(g.id).signed_area() * scale * scale;
+  }
+  double got = 0.0, min_x = 1e9, max_x = -1e9;
+  for (std::size_t at = svg.find(" d=\""); at != std::string::npos; at = svg.find(" d=\"", at + 1)) {
+    const std::size_t end = svg.find('"', at + 4);
+    Shape shape;
+    shape.contours = parse_svg_path(svg.substr(at + 4, end - at - 4));
+    const Outline outline = shape_outline(shape, 1e-3);
+    got += outline.signed_area();
+    min_x = std::min(min_x, outline.control_box().min.x);
+    max_x = std::max(max_x, outline.control_box().max.x);
+  }
+  ASSERT_GT(std::abs(want), 100.0);
+  // y is flipped (the SVG is y down), so the signed areas have opposite signs;
+  // coordinates are rounded to 1/1000 px.
+  EXPECT_NEAR(-got, want, 1e-4 * std::abs(want));
+  const Rect ink = p.ink_bounds();
+  EXPECT_NEAR(min_x, 10.0 + ink.x, 0.01);
+  EXPECT_NEAR(max_x, 10.0 + ink.x + ink.width, 0.01);
+  EXPECT_NE(svg.find("width=\"" + std::to_string(paragraph_image_size(p, {}).width - 12) + "\""), std::string::npos)
+      << svg.substr(0, 200);
 }
 
 }  // namespace

@@ -81,8 +81,9 @@ if timeout 60 "$CURVETEXT" mesh --char g -o "$tmp/g.svg" 2>"$tmp/stderr" && grep
 else
   bad "mesh --char g: $(cat "$tmp/stderr")"
 fi
-expect_error "mesh: glyph out of range" 1 "glyph" -- mesh --glyph 999999 -o "$tmp/out.png"
-expect_error "mesh: no glyph for char" 1 "no glyph" -- mesh --char "$(printf '\xE4\xB8\xAD')" -o "$tmp/out.png"
+expect_error "mesh: glyph out of range" 1 "glyph" -- mesh --glyph 999999 -o "$tmp/out.svg"
+expect_error "mesh: no glyph for char" 1 "no glyph" -- mesh --char "$(printf '\xE4\xB8\xAD')" -o "$tmp/out.svg"
+expect_error "mesh: PNG output refused" 1 "SVG only" -- mesh --char g -o "$tmp/out.png"
 
 # --- bad input ------------------------------------------------------------------
 head -c 4096 /dev/urandom >"$tmp/corrupt.ttf"
@@ -164,7 +165,6 @@ expect_error "layout: bad align" 2 "--align" -- layout --size 20 --align sideway
 expect_error "layout: bad ellipsis" 2 "--ellipsis" -- layout --size 20 --ellipsis both --text hi --json
 expect_error "layout: bad direction" 2 "--direction" -- layout --size 20 --direction up --text hi --json
 expect_error "layout: negative max lines" 2 "--max-lines" -- layout --size 20 --max-lines -1 --text hi --json
-expect_error "layout: no --json" 2 "json" -- layout --size 20 --text hi
 expect_error "layout: invalid UTF-8" 1 "UTF-8" -- layout --size 20 --text-file "$tmp/badutf8.txt" --json
 expect_error "layout: missing fallback font" 1 "nonexistent" -- layout --size 20 --font "$tmp/nonexistent.ttf" --text hi --json
 expect_error "render: bad markup" 1 "markup" -- render --size 20 --width 100 --markup --text "<b>open" -o "$tmp/out.png"
@@ -279,6 +279,7 @@ expect_error "shape: unknown blending" 1 "unknown blending" -- shape --input "$s
 
 # --- input limits: a clear error in bounded time, no image ----------------------
 expect_error "render: endless --text-file stops at the limit" 1 "larger than the limit" -- render --size 16 --text-file /dev/zero -o "$tmp/out.png"
+expect_error "render: endless standard input stops at the limit" 1 "standard input is larger than the limit" -- render --size 16 --text-file - -o "$tmp/out.png" </dev/zero
 expect_error "render: --perspective 89.99 leaves a sliver" 1 "sliver" -- render --size 32 --text Hello --perspective 89.99 -o "$tmp/out.png"
 deep=$(printf '<b>%.0s' $(seq 1000))x$(printf '</b>%.0s' $(seq 1000))
 expect_error "render: markup nested 1000 deep" 1 "nested deeper than 64" -- render --size 16 --width 200 --markup --text "$deep" -o "$tmp/out.png"
@@ -294,6 +295,115 @@ if timeout 60 "$CURVETEXT" layout --size 16 --markup --text "<color=red>red <b>b
 else
   bad "layout: <b> inside <color> lost the bold face: $(head -c 300 "$tmp/tree.json") $(cat "$tmp/stderr")"
 fi
+
+# --- one layout path: every render is a paragraph (bidi, fallback) ------------------
+here=$(dirname "$0")
+cli_abs=$(realpath "$CURVETEXT")
+# The default render of right-to-left, joined and fallback text equals the
+# paragraph path's image (--width 0) pixel for pixel, and the layout behind
+# it is right: Hebrew right to left, Arabic joined, CJK from a fallback face.
+for sample in "שלום עולם" "Arabic سلام عليكم text" "中文字体 and Latin"; do
+  if timeout 120 "$CURVETEXT" render --size 24 --text "$sample" -o "$tmp/default.png" 2>"$tmp/stderr" &&
+     timeout 120 "$CURVETEXT" render --size 24 --text "$sample" --width 0 -o "$tmp/para0.png" 2>>"$tmp/stderr" &&
+     cmp -s "$tmp/default.png" "$tmp/para0.png"; then
+    ok "render '$sample' equals the paragraph path's image"
+  else
+    bad "render '$sample' differs from --width 0: $(cat "$tmp/stderr")"
+  fi
+done
+timeout 60 "$CURVETEXT" layout --size 24 --text "שלום" >"$tmp/he.json" 2>"$tmp/stderr"
+timeout 60 "$CURVETEXT" layout --size 24 --text "سلام" >"$tmp/ar.json" 2>>"$tmp/stderr"
+timeout 60 "$CURVETEXT" layout --size 24 --text "س" >"$tmp/ar1.json" 2>>"$tmp/stderr"
+timeout 60 "$CURVETEXT" layout --size 24 --text "中文" >"$tmp/cjk.json" 2>>"$tmp/stderr"
+if python3 - "$tmp" <<'PY'
+import json, sys
+d = sys.argv[1]
+glyphs = lambda f: [g for r in json.load(open(d + f))["lines"][0]["runs"] for g in r["glyphs"]]
+runs = lambda f: json.load(open(d + f))["lines"][0]["runs"]
+he = glyphs("/he.json")
+# Visual order right to left: the first character (cluster 0) is drawn rightmost.
+assert runs("/he.json")[0]["direction"] == "rtl" and max(he, key=lambda g: g["x"])["cluster"] == 0, he
+ar, alone = glyphs("/ar.json"), glyphs("/ar1.json")
+first = [g for g in ar if g["cluster"] == 0][0]
+assert first["id"] != alone[0]["id"], "seen initial form is the isolated one: not joined"
+assert all(g["id"] != 0 for g in glyphs("/cjk.json")) and "DejaVu" not in runs("/cjk.json")[0]["font"]
+PY
+then ok "layout: Hebrew right to left, Arabic joined, CJK from a fallback font"; else bad "layout of Hebrew/Arabic/CJK: $(cat "$tmp/stderr")"; fi
+# --font takes a fontconfig family name as well as a file.
+serif=$(fc-match -f '%{file}' "DejaVu Serif")
+if timeout 120 "$CURVETEXT" render --size 20 --font "DejaVu Serif" --text Hamburg -o "$tmp/family.png" 2>"$tmp/stderr" &&
+   timeout 120 "$CURVETEXT" render --size 20 --font "$serif" --text Hamburg -o "$tmp/file.png" 2>>"$tmp/stderr" &&
+   timeout 120 "$CURVETEXT" render --size 20 --text Hamburg -o "$tmp/sans.png" 2>>"$tmp/stderr" &&
+   cmp -s "$tmp/family.png" "$tmp/file.png" && ! cmp -s "$tmp/family.png" "$tmp/sans.png"; then
+  ok "render --font 'DejaVu Serif' (family name) equals the file's image"
+else
+  bad "render --font family name: $(cat "$tmp/stderr")"
+fi
+# fontconfig answers any family with its best match: a family it lacks is refused, not replaced.
+expect_error "render: unknown family refused" 1 "no font family 'No Such Family'" -- render --size 20 --font "No Such Family" --text hi -o "$tmp/out.png"
+expect_error "render: face index of a family" 1 "face-index" -- render --size 20 --font "DejaVu Serif" --face-index 1 --text hi -o "$tmp/out.png"
+
+# --- output formats, standard streams, option forms -----------------------------
+expect_error "render: unknown output extension" 1 "out.jpg" -- render --size 20 --text hi -o "$tmp/out.jpg"
+[ -e "$tmp/out.jpg" ] && bad "render: wrote out.jpg despite the error"
+expect_error "shape: svg output refused" 1 "PNG only" -- shape --input "$shapes/ellipse-arc.svg" -o "$tmp/out.svg"
+expect_error "render: raster option with SVG" 1 "--aa applies to PNG" -- render --size 20 --text hi --aa none -o "$tmp/out.svg"
+expect_error "render: underline in SVG refused" 1 "underline" -- render --size 20 --markup --text "<u>hi</u>" -o "$tmp/out.svg"
+expect_error "render: bad --format" 2 "--format" -- render --text hi --format gif -o -
+if timeout 120 "$CURVETEXT" render --size 24 --text "Hamburg Qg" -o "$tmp/vec.svg" 2>"$tmp/stderr" &&
+   head -c 5 "$tmp/vec.svg" | grep -q "<svg" &&
+   timeout 120 "$CURVETEXT" render --size 24 --text "Hamburg Qg" -o "$tmp/vec.png" 2>>"$tmp/stderr" &&
+   timeout 120 "$CURVETEXT" shape --input "$tmp/vec.svg" -o "$tmp/vec-back.png" 2>>"$tmp/stderr" &&
+   read -r w h maxdiff ink_png ink_svg <<<"$(python3 "$here/png_diff.py" "$tmp/vec.png" "$tmp/vec-back.png")" &&
+   # The SVG's outlines (rounded to 1/1000 px) drawn as a shape: the same
+   # exact-area coverage as the text, so at most a level or two apart.
+   [ "$maxdiff" -le 2 ] && [ "$ink_png" -gt 10000 ] &&
+   python3 -c "import sys; a, b = int(sys.argv[1]), int(sys.argv[2]); sys.exit(abs(a - b) > 1e-3 * a)" "$ink_png" "$ink_svg"; then
+  ok "render -o x.svg: outlines drawn back equal the PNG (${w}x${h}, max diff $maxdiff, ink $ink_png vs $ink_svg)"
+else
+  bad "render -o x.svg: $(cat "$tmp/stderr") ${maxdiff:-} ${ink_png:-} ${ink_svg:-}"
+fi
+(cd "$tmp" && timeout 120 "$cli_abs" render --size 24 --text "Hamburg Qg" -o - >"$tmp/stdout.png" 2>"$tmp/stderr")
+if cmp -s "$tmp/stdout.png" "$tmp/vec.png" && [ ! -e "$tmp/-" ]; then ok "render -o - writes the PNG to standard output"
+else bad "render -o -: $(cat "$tmp/stderr"); file '-' exists: $([ -e "$tmp/-" ] && echo yes || echo no)"; fi
+if timeout 120 "$CURVETEXT" render --size 24 --text "Hamburg Qg" --format svg -o - >"$tmp/stdout.svg" 2>"$tmp/stderr" &&
+   cmp -s "$tmp/stdout.svg" "$tmp/vec.svg"; then ok "render --format svg -o - writes the SVG to standard output"
+else bad "render --format svg -o -: $(cat "$tmp/stderr")"; fi
+if printf 'Hamburg Qg\n' | timeout 120 "$CURVETEXT" render --size 24 --text - -o "$tmp/stdin1.png" 2>"$tmp/stderr" &&
+   printf 'Hamburg Qg' | timeout 120 "$CURVETEXT" render --size 24 --text-file - -o "$tmp/stdin2.png" 2>>"$tmp/stderr" &&
+   cmp -s "$tmp/stdin1.png" "$tmp/vec.png" && cmp -s "$tmp/stdin2.png" "$tmp/vec.png"; then
+  ok "render --text - and --text-file - read standard input"
+else
+  bad "render text from standard input: $(cat "$tmp/stderr")"
+fi
+if timeout 120 "$CURVETEXT" render --size=24 --text="Hamburg Qg" --output="$tmp/eq.png" 2>"$tmp/stderr" &&
+   cmp -s "$tmp/eq.png" "$tmp/vec.png"; then ok "render --opt=value"; else bad "render --opt=value: $(cat "$tmp/stderr")"; fi
+expect_error "render: a flag given a value" 2 "--debug takes no value" -- render --text hi --debug=1 -o "$tmp/out.png"
+# Default size 32 px: DejaVu Sans' line is ceil(2*16 + 32*1.164) = 70 px high.
+if timeout 120 "$CURVETEXT" render --text "Hamburg" -o "$tmp/nosize.png" 2>"$tmp/stderr" &&
+   [ "$(png_size "$tmp/nosize.png" | cut -d' ' -f2)" = "70" ]; then ok "render without --size (32 px)"
+else bad "render without --size: $(cat "$tmp/stderr") $(png_size "$tmp/nosize.png" 2>/dev/null)"; fi
+# layout prints JSON without --json; letter and word spacing widen the line.
+if timeout 60 "$CURVETEXT" layout --size 20 --text "ab cd" >"$tmp/plain.json" 2>"$tmp/stderr" &&
+   timeout 60 "$CURVETEXT" layout --size 20 --text "ab cd" --letter-spacing 3 >"$tmp/ls.json" 2>>"$tmp/stderr" &&
+   timeout 60 "$CURVETEXT" layout --size 20 --text "ab cd" --word-spacing=7 --json >"$tmp/ws.json" 2>>"$tmp/stderr" &&
+   python3 - "$tmp" <<'PY'
+import json, sys
+width = lambda f: json.load(open(sys.argv[1] + f))["logical"][2]
+base = width("/plain.json")
+# 5 clusters, 3 px after each (the last one's trailing spacing may be kept or not); one space, 7 px.
+assert width("/ls.json") - base in (12, 15), (base, width("/ls.json"))
+assert abs(width("/ws.json") - base - 7) < 1e-3, (base, width("/ws.json"))
+PY
+then ok "layout: JSON by default, --letter-spacing, --word-spacing"; else bad "layout JSON/spacing: $(cat "$tmp/stderr")"; fi
+# Every option a command parses is listed in --help and in docs/cli.md.
+"$CURVETEXT" --help >"$tmp/help.txt"
+missing=""
+for o in $(grep -ohE '(a|o) == "--[a-z-]+"' "$here/../../tools/curvetext/"*.cpp | grep -oE -- '--[a-z-]+' | sort -u); do
+  grep -q -- "$o" "$tmp/help.txt" || missing="$missing $o(help)"
+  grep -q -- "\`$o" "$here/../../docs/cli.md" || missing="$missing $o(docs)"
+done
+if [ -z "$missing" ]; then ok "every option is in --help and docs/cli.md"; else bad "options missing:$missing"; fi
 
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -44,6 +44,14 @@ double positive_or_zero(std::string_view option, std::string_view text) {
   return v;
 }
 
+// Spacing may be negative (tighter text); it must be a finite number.
+double finite_number(std::string_view option, std::string_view text) {
+  const double v = parse_number(option, text);
+  if (!std::isfinite(v))
+    throw UsageError{std::string(option) + " must be a finite number, got '" + std::string(text) + "'"};
+  return v;
+}
+
 void json_string(std::string& out, const std::string& s) {
   out += '"';
   for (unsigned char c : s) {
@@ -107,10 +115,34 @@ bool LayoutCli::parse(Args& args) {
     while (std::getline(ss, item, ',')) style.tab_stops.push_back(positive_or_zero(a, item));
   } else if (a == "--markup")
     markup = true;
+  else if (a == "--letter-spacing")
+    style.default_style.letter_spacing = finite_number(a, args.value());
+  else if (a == "--word-spacing")
+    style.default_style.word_spacing = finite_number(a, args.value());
   else
     return false;
-  if (a != "--font" || fonts.size() > 1) used = true;
   return true;
+}
+
+bool TextCli::parse(Args& args) {
+  const std::string& a = args.option();
+  if (a == "--size")
+    size_px = parse_number(a, args.value());
+  else if (a == "--text")
+    text = args.value();
+  else if (a == "--text-file")
+    text_file = args.value();
+  else if (a == "--features")
+    features = args.value();
+  else
+    return false;
+  return true;
+}
+
+std::string TextCli::read() const {
+  if (text.has_value() == text_file.has_value()) throw UsageError{"give exactly one of --text and --text-file"};
+  if (text_file) return read_text_file(*text_file);
+  return *text == "-" ? read_text_file("-") : *text;
 }
 
 Paragraph layout_from_cli(FontCollection& fonts, const LayoutCli& options, const FontChoice& font_choice,
@@ -119,9 +151,16 @@ Paragraph layout_from_cli(FontCollection& fonts, const LayoutCli& options, const
   style.default_style.size_px = size_px;
   style.default_style.features = features;
   for (const std::string& f : options.fonts)
+    if (!is_font_file(f)) check_font_family(f);
+  if (font_choice.face_index && !options.fonts.empty() && !is_font_file(options.fonts.front()))
+    throw Error(ErrorCode::InvalidArgument,
+                "--face-index picks a face of a font file, not of the family '" + options.fonts.front() + "'");
+  for (const std::string& f : options.fonts)
     style.default_style.fonts.push_back(
         font_choice.face_index && &f == &options.fonts.front() ? f + "#" + std::to_string(font_choice.face_index) : f);
-  if (style.default_style.fonts.empty()) style.default_style.fonts.push_back(default_font());
+  if (style.default_style.fonts.empty())
+    style.default_style.fonts.push_back(
+        font_choice.face_index ? default_font() + "#" + std::to_string(font_choice.face_index) : default_font());
   if (font_choice.variations) style.default_style.variations = parse_variations(*font_choice.variations);
   if (!options.markup) return Paragraph::layout(fonts, text, {}, style);
   const MarkupText marked = parse_markup(text, style.default_style);
@@ -131,34 +170,19 @@ Paragraph layout_from_cli(FontCollection& fonts, const LayoutCli& options, const
 int run_layout(const std::vector<std::string>& arguments) {
   FontChoice font_choice;
   LayoutCli options;
-  std::optional<std::string> text, text_file, features;
-  std::optional<double> size;
-  bool json = false;
+  TextCli input;
   Args args(arguments);
   while (args.next()) {
     const std::string& a = args.option();
     if (options.parse(args)) continue;
+    if (input.parse(args)) continue;
     if (font_choice.parse(args)) continue;
-    if (a == "--size")
-      size = parse_number(a, args.value());
-    else if (a == "--text")
-      text = args.value();
-    else if (a == "--text-file")
-      text_file = args.value();
-    else if (a == "--features")
-      features = args.value();
-    else if (a == "--json")
-      json = true;
-    else
-      throw UsageError{"unknown option " + a};
+    if (a != "--json") throw UsageError{"unknown option " + a};  // JSON is the only output; --json is accepted
   }
-  if (!size) throw UsageError{"--size is required"};
-  if (text.has_value() == text_file.has_value()) throw UsageError{"give exactly one of --text and --text-file"};
-  if (!json) throw UsageError{"layout prints JSON only: add --json"};
-  if (text_file) text = read_text_file(*text_file);
+  const std::string text = input.read();
   FontCollection fonts(default_font());
-  const Paragraph p = layout_from_cli(fonts, options, font_choice, *size,
-                                      features ? parse_features(*features) : std::vector<Feature>{}, *text);
+  const Paragraph p = layout_from_cli(fonts, options, font_choice, input.size_px,
+                                      input.features ? parse_features(*input.features) : std::vector<Feature>{}, text);
   std::string out = "{\"text_bytes\":" + std::to_string(p.text().size());
   const Rect logical = p.logical_bounds();
   const Rect ink = p.ink_bounds();

@@ -2,7 +2,6 @@
 // the tessellator did: interior triangles, convex and concave curved
 // triangles in their own colours, and the true outline on top.
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 #include <string>
 
@@ -87,6 +86,8 @@ int run_mesh(const std::vector<std::string>& arguments) {
   }
   if (glyph.has_value() == character.has_value()) throw UsageError{"give exactly one of --glyph and --char"};
   if (!output) throw UsageError{"-o MESH.svg is required"};
+  if (*output != "-" && output_format(*output, std::nullopt) != OutputFormat::Svg)
+    throw Error(ErrorCode::InvalidArgument, "cannot write '" + *output + "': mesh writes SVG only");
 
   const Font font = font_choice.open();
   std::uint32_t id = 0;
@@ -126,10 +127,7 @@ int run_mesh(const std::vector<std::string>& arguments) {
       << num(0.3 * pad) << "\" font-family=\"sans-serif\">interior (blue), convex curved (orange), concave curved "
       << "(green), outline (red)</text>\n</svg>\n";
 
-  std::ofstream out(*output);
-  if (!out) throw Error(ErrorCode::Io, "cannot write " + *output);
-  out << svg.str();
-  if (!out.flush()) throw Error(ErrorCode::Io, "cannot write " + *output);
+  write_output(svg.str(), *output);
   if (!check.ok()) {
     std::fprintf(stderr, "curvetext: warning: glyph %u violates mesh invariants: %s\n", id, check.problems[0].c_str());
   }

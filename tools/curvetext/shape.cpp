@@ -52,6 +52,8 @@ int run_shape(const std::vector<std::string>& arguments) {
   }
   if (!input) throw UsageError{"--input FILE is required"};
   if (!output) throw UsageError{"-o OUT.png is required"};
+  if (output_format(*output, std::nullopt) != OutputFormat::Png)
+    throw Error(ErrorCode::InvalidArgument, "cannot write '" + *output + "': shape writes PNG only");
 
   ShapeDocument doc = read_shape_file(*input);
   if (foreground)
@@ -64,7 +66,7 @@ int run_shape(const std::vector<std::string>& arguments) {
     options.transform = style.transform(0, 0);
   }
   const ShapeImageLayout layout = layout_shape_image(doc, options);
-  write_png(render_shape_image(gl_session().renderer, doc, layout, options), *output);
+  write_png_output(render_shape_image(gl_session().renderer, doc, layout, options), *output);
   return 0;
 }
 

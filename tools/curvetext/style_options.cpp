@@ -71,6 +71,13 @@ bool StyleCli::parse_transform(Args& args) {
 }
 
 bool StyleCli::parse(Args& args, ImageStyle& style) {
+  const std::string a = args.option();
+  if (!parse_drawing(args, style)) return false;
+  if (a != "--bg" && raster_option_.empty()) raster_option_ = a;
+  return true;
+}
+
+bool StyleCli::parse_drawing(Args& args, ImageStyle& style) {
   if (parse_transform(args)) return true;
   const std::string& a = args.option();
   if (a == "--aa")

@@ -23,13 +23,18 @@ struct StyleCli {
   // the larger side of the untransformed width x height image).
   Transform transform(double width, double height) const;
   bool perspective_pending() const { return perspective_pending_; }
+  // The first option given that only applies to drawing pixels (every one
+  // above but --bg); empty when none. Vector output refuses them by name.
+  const std::string& raster_option() const { return raster_option_; }
 
  private:
   bool parse_transform(Args& args);
+  bool parse_drawing(Args& args, ImageStyle& style);
   bool scale_is_transform_;
   Transform transform_;
   bool perspective_pending_ = false;
   double perspective_degrees_ = 0.0;
+  std::string raster_option_;
 };
 
 std::vector<double> parse_numbers(const std::string& option, const std::string& text, std::size_t lo, std::size_t hi);
