@@ -25,8 +25,10 @@ packages=(
   # fonts: the default font (DejaVu Sans) and the test corpus
   fonts-dejavu-core fonts-dejavu-extra fonts-noto-core fonts-noto-cjk fonts-urw-base35
   fonts-inter-variable
-  # a colour bitmap (CBDT) emoji face: layout must skip it in fallback
+  # a colour bitmap (CBDT) emoji face: drawn from its bitmaps, through fallback and by name
   fonts-noto-color-emoji
+  # fontTools, to regenerate the test fonts in fonts/test (tests/fixtures/make_*test_fonts.py)
+  python3-fonttools
   # the example apps (examples/): windows and GL contexts, the camera's maths, and the
   # virtual X server (with xauth for xvfb-run) that their tests run them in
   libglfw3-dev libsdl2-dev libglm-dev xvfb xauth

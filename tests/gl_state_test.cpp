@@ -20,6 +20,7 @@
 #include "curvetext/headless.hpp"
 #include "curvetext/renderer.hpp"
 #include "curvetext/shaping.hpp"
+#include "curvetext/draw_batch.hpp"
 #include "support/fonts.hpp"
 #include "support/gpu.hpp"
 
@@ -118,6 +119,11 @@ struct State {
       i("pixel pack buffer", GL_PIXEL_PACK_BUFFER_BINDING);
       i("pixel unpack buffer", GL_PIXEL_UNPACK_BUFFER_BINDING);
       i("pack row length", GL_PACK_ROW_LENGTH);
+      i("unpack row length", GL_UNPACK_ROW_LENGTH);
+      glGetIntegerv(GL_ACTIVE_TEXTURE, &unit);
+      glActiveTexture(GL_TEXTURE0);
+      i("sampler (unit 0)", GL_SAMPLER_BINDING);
+      glActiveTexture(static_cast<GLenum>(unit));
       on("rasterizer discard", GL_RASTERIZER_DISCARD);
       for (GLuint a = 0; a < 3; ++a) {
         GLint v = 0;
@@ -303,6 +309,65 @@ TEST_P(GlState, EveryModeLeavesTheApplicationsStateAndDrawsInItsViewport) {
     }
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
     expect_same(before, State::read(), "after the pending-error block");
+  }
+}
+
+// Colour bitmaps (emoji from Noto Color Emoji): uploading them into the
+// atlas while the application's unpack state (alignment 8, a bound unpack
+// buffer, a row length) and texture bindings are set, and drawing them with
+// a sampler object of the application's on unit 0, leave all of it as it was.
+TEST_P(GlState, ColourBitmapsLeaveTheApplicationsState) {
+  const char* kEmoji = "/usr/share/fonts/truetype/noto/NotoColorEmoji.ttf";
+  if (FILE* f = std::fopen(kEmoji, "rb")) {
+    std::fclose(f);
+  } else {
+    GTEST_SKIP() << "fonts-noto-color-emoji is not installed";
+  }
+  const bool gles2_run = test::expects_gles2();
+  if (gles2_run && GetParam() != ContextKind::Gles2) GTEST_SKIP() << "OpenGL ES 2.0 only in this run";
+  HeadlessContext context = HeadlessContext::create(GetParam());
+  {
+    const Font font = Font::open(kEmoji);
+    GlyphCache cache;
+    Renderer renderer;
+    AppState app;
+    GLuint sampler = 0;
+    if (gl3()) {
+      glPixelStorei(GL_UNPACK_ROW_LENGTH, 3);
+      glGenSamplers(1, &sampler);
+      glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glBindSampler(0, sampler);
+    }
+    const State before = State::read();
+    const ShapedLine line = shape_line(font, "\U0001F680\U0001F600");
+    std::vector<PlacedGlyph> placed;
+    double pen = 0.0;
+    for (const ShapedGlyph& g : line.glyphs) {
+      placed.push_back({g.glyph_id, pen, 0.0});
+      pen += g.x_advance;
+    }
+    const DrawBatch batch = DrawBatch::from_color_bitmaps(cache, font, placed, 40.0);
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    expect_same(before, State::read(), std::string(context_kind_name(GetParam())) + " after building bitmaps");
+    renderer.draw(batch, Placement(40.0 / font.metrics().units_per_em, 30.0, 100.0), DrawOptions{});
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    expect_same(before, State::read(), std::string(context_kind_name(GetParam())) + " after drawing bitmaps");
+    // Coloured ink, only inside the scissor box (x 20..200, GL rows 30..150).
+    const std::vector<std::uint8_t> px = app.pixels();
+    std::size_t inside = 0, outside = 0;
+    for (int y = 0; y < AppState::kSize; ++y)
+      for (int x = 0; x < AppState::kSize; ++x) {
+        const std::uint8_t* p = &px[(static_cast<std::size_t>(y) * AppState::kSize + x) * 4];
+        const bool ink = std::abs(p[0] - p[2]) > 40;  // white background: colour, not grey
+        const bool in = x >= 20 && x < 200 && y >= 30 && y < 150;
+        (in ? inside : outside) += ink ? 1 : 0;
+      }
+    EXPECT_GT(inside, 300u);
+    EXPECT_EQ(outside, 0u);
+    if (sampler != 0) {
+      glBindSampler(0, 0);
+      glDeleteSamplers(1, &sampler);
+    }
   }
 }
 

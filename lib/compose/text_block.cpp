@@ -11,6 +11,7 @@
 #include "curvetext/error.hpp"
 #include "curvetext/image_style.hpp"
 #include "curvetext/mesh.hpp"
+#include "compose/color_layers.hpp"
 #include "font/harfbuzz_font.hpp"
 
 namespace curvetext {
@@ -100,14 +101,28 @@ TextBlock TextBlock::from_paragraph(GlyphCache& cache, const Paragraph& paragrap
   Backgrounds backgrounds;
   auto finish = [&] {
     if (group.font == nullptr) return;
+    const double ppem = group.size_px * on_screen_scale;
+    const ColorFormat format = group.font->color_format();
+    // COLR glyphs: their layers as groups of their own, after this one.
+    std::vector<detail::LayerPass> layers;
+    if (format == ColorFormat::Layers) layers = detail::split_color_layers(*group.font, group.color, group.glyphs);
     Group g;
     g.color = group.color;
     g.size_px = group.size_px;
     g.scale = group.size_px / group.font->metrics().units_per_em;
     if (!group.glyphs.empty())
-      g.glyphs.emplace(DrawBatch::from_glyphs(cache, *group.font, group.glyphs, group.size_px * on_screen_scale));
+      g.glyphs.emplace(format == ColorFormat::Bitmap
+                           ? DrawBatch::from_color_bitmaps(cache, *group.font, group.glyphs, ppem)
+                           : DrawBatch::from_glyphs(cache, *group.font, group.glyphs, ppem));
     if (!group.bars.empty()) g.bars.emplace(DrawBatch::from_mesh(build_mesh(group.bars)));
     block.groups_.push_back(std::move(g));
+    for (const detail::LayerPass& pass : layers) {
+      Group& layer = block.groups_.emplace_back();
+      layer.color = pass.color;
+      layer.size_px = group.size_px;
+      layer.scale = group.size_px / group.font->metrics().units_per_em;
+      layer.glyphs.emplace(DrawBatch::from_glyphs(cache, *group.font, pass.glyphs, ppem));
+    }
   };
   for (const LayoutLine& line : paragraph.lines()) {
     for (const GlyphRun& run : line.runs) {

@@ -8,6 +8,7 @@
 #include "curvetext/error.hpp"
 #include "curvetext/tolerances.hpp"
 #include "compose/check_style.hpp"
+#include "compose/color_layers.hpp"
 #include "core/format.hpp"
 #include "layout/cluster_limit.hpp"
 
@@ -58,6 +59,14 @@ TextImageLayout layout_text_image(const Font& font, std::string_view text, const
 
 Image render_text_image(Renderer& renderer, GlyphCache& cache, const Font& font, const TextImageLayout& layout,
                         const TextImageOptions& options) {
+  if (font.color_format() != ColorFormat::None) {  // COLR layers or bitmap emoji
+    const double ppem = options.size_px * layout.largest_stretch;
+    ImageTarget target;
+    target.begin(layout.width, layout.height, options.background, options.blending);
+    detail::draw_color_line(renderer, cache, font, layout.line, ppem, layout.placement,
+                            draw_options(options, options.foreground, ppem));
+    return target.read_pixels();
+  }
   DrawBatch batch = DrawBatch::from_text(cache, font, layout.line, options.size_px * layout.largest_stretch);
   // auto: per pixels per em on screen, as for paragraphs (image_style.hpp).
   const DrawOptions draw = draw_options(options, options.foreground, options.size_px * layout.largest_stretch);

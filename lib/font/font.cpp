@@ -103,6 +103,18 @@ std::string normalise_tag(std::string_view tag) {
 
 using detail::trim;
 
+bool has_table(hb_face_t* face, hb_tag_t tag) {
+  const detail::HbBlobPtr blob(hb_face_reference_table(face, tag));
+  return hb_blob_get_length(blob.get()) > 0;
+}
+
+ColorFormat color_format_of(hb_face_t* face) {
+  if (has_table(face, HB_TAG('C', 'O', 'L', 'R'))) return ColorFormat::Layers;
+  if (has_table(face, HB_TAG('C', 'B', 'D', 'T')) || has_table(face, HB_TAG('s', 'b', 'i', 'x')))
+    return ColorFormat::Bitmap;
+  return ColorFormat::None;
+}
+
 // FNV-1a, 64 bit: stable across runs (the key may be stored) and good enough
 // to tell faces and variation settings apart.
 struct Fnv1a {
@@ -265,9 +277,10 @@ std::unique_ptr<FontAccess::Impl> open_face(FontBytes bytes, const std::string& 
   // Type 1 or bitmap font would open in FreeType but shape as nothing.
   if (!FT_IS_SFNT(face))
     throw Error(ErrorCode::FontInvalid, "not a TrueType/OpenType font (HarfBuzz cannot shape it): " + path);
-  if (!FT_IS_SCALABLE(face) || face->units_per_EM == 0)
-    throw Error(ErrorCode::FontInvalid, "font has no scalable outlines: " + path);
-  impl->units_per_em = face->units_per_EM;
+  // Bitmap colour fonts (CBDT, sbix) have no outlines but are drawn from
+  // their bitmaps; other bitmap-only fonts have nothing curvetext can draw.
+  if (!FT_IS_SCALABLE(face) && !(FT_HAS_COLOR(face) && face->num_fixed_sizes > 0))
+    throw Error(ErrorCode::FontInvalid, "font has no scalable outlines nor colour bitmaps: " + path);
 
   // The blob holds its own reference to the bytes (freed by the destroy
   // callback), so HarfBuzz objects that outlive this Font stay valid.
@@ -286,6 +299,13 @@ std::unique_ptr<FontAccess::Impl> open_face(FontBytes bytes, const std::string& 
   // set explicitly so a build where FreeType is the default does not change
   // results), at a scale of one unit per font unit: positions come out in
   // font units.
+  // FreeType leaves units_per_EM at 0 for faces without outlines; head has it.
+  impl->units_per_em =
+      FT_IS_SCALABLE(face) ? face->units_per_EM : static_cast<int>(hb_face_get_upem(impl->hb_face_owner.get()));
+  if (impl->units_per_em < 16 || impl->units_per_em > 16384)
+    throw Error(ErrorCode::FontInvalid, "font has " + std::to_string(impl->units_per_em) +
+                                            " units per em (OpenType allows 16 to 16384): " + path);
+  impl->color_format = color_format_of(impl->hb_face_owner.get());
   hb_ot_font_set_funcs(impl->hb_font);
   hb_font_set_scale(impl->hb_font, impl->units_per_em, impl->units_per_em);
 
@@ -312,7 +332,7 @@ std::unique_ptr<FontAccess::Impl> open_face(FontBytes bytes, const std::string& 
     FT_Done_MM_Var(impl->library_owner.get(), mm);
   }
 
-  set_unit_scale(*impl);
+  if (FT_IS_SCALABLE(face)) set_unit_scale(*impl);
   update_cache_key(*impl);
   return impl;
 }
@@ -518,6 +538,11 @@ void Font::glyph_outline(std::uint32_t glyph_id, Outline& outline) const {
   if (glyph_id >= static_cast<std::uint32_t>(im.ft_face->num_glyphs))
     throw Error(ErrorCode::FontInvalid, "glyph id " + std::to_string(glyph_id) + " out of range (font has " +
                                             std::to_string(im.ft_face->num_glyphs) + " glyphs): " + im.path);
+  if (!FT_IS_SCALABLE(im.ft_face))
+    throw Error(ErrorCode::FontInvalid, "glyph " + std::to_string(glyph_id) +
+                                            " has no outline: the font's glyphs are colour bitmaps (CBDT/sbix), "
+                                            "drawn by TextBlock or DrawBatch::from_color_bitmaps: " +
+                                            im.path);
   if (im.outlines_from_harfbuzz()) {
     DecomposeState state{&outline, 1.0, 1.0, Vec2{}};
     hb_font_get_glyph_shape(im.hb_font, glyph_id, draw_funcs(), &state);

@@ -90,6 +90,9 @@ struct Font::Impl {
 
   // The face's outlines are CFF or CFF2 charstrings (not glyf).
   bool cff_outlines = false;
+  // COLR layers, else CBDT/sbix bitmaps (lib/font/color_glyphs.cpp); a face
+  // with bitmaps only has no outlines (FT_IS_SCALABLE is false).
+  ColorFormat color_format = ColorFormat::None;
 
   // Where glyph_outline() reads outlines (see the comment there): HarfBuzz's
   // hb_font_get_glyph_shape for CFF/CFF2 faces and for variable fonts away

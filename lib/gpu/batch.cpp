@@ -335,6 +335,7 @@ std::size_t DrawBatch::vertex_count() const {
 std::size_t DrawBatch::gpu_bytes() const {
   if (!impl_) return 0;
   if (impl_->instanced()) return impl_->placements * 2 * sizeof(float);
+  if (impl_->bitmaps()) return impl_->vertex_count * 4 * sizeof(float);
   const std::size_t index_bytes = impl_->index_type == GL_UNSIGNED_SHORT ? 2
                                   : impl_->index_type == GL_UNSIGNED_INT ? 4
                                                                          : 0;

@@ -48,6 +48,34 @@ struct CachedGlyph {
   std::shared_ptr<const GlyphBuffers> buffers;
 };
 
+// A page of the colour bitmap atlas (lib/gpu/color_bitmaps.cpp): one RGBA8
+// texture of premultiplied bitmaps packed in shelves, sampled linearly. Shared
+// by the cache and every block that draws from it; deleted with the last of
+// them (the context that made it current).
+struct AtlasPage {
+  GLuint texture = 0;
+  int side = 0;                         // texels
+  int shelf_y = 0, shelf_h = 0, x = 0;  // the shelf being filled: its top, height, next free column
+  std::size_t bytes = 0;
+
+  AtlasPage() = default;
+  AtlasPage(const AtlasPage&) = delete;
+  AtlasPage& operator=(const AtlasPage&) = delete;
+  ~AtlasPage() {
+    if (texture != 0) glDeleteTextures(1, &texture);
+  }
+};
+
+// A colour glyph's bitmap in the atlas, at one level (the strike's bitmap
+// halved `level` times), and the box it covers from the glyph origin in
+// font units (y up): the texels [x, x + w) x [y, y + h), their border of a
+// transparent texel outside.
+struct CachedBitmap {
+  std::shared_ptr<const AtlasPage> page;  // null: the glyph has no bitmap
+  int x = 0, y = 0, w = 0, h = 0;
+  double left = 0.0, top = 0.0, width = 0.0, height = 0.0;  // font units
+};
+
 }  // namespace gpu
 
 struct DrawBatch::Impl {
@@ -70,6 +98,16 @@ struct DrawBatch::Impl {
   std::vector<Run> runs;
   std::size_t placements = 0;
 
+  // Colour bitmaps: textured quads (6 vertices of x, y, u, v each, outline
+  // units and texture coordinates), one run per atlas page.
+  struct BitmapRun {
+    std::shared_ptr<const gpu::AtlasPage> page;
+    GLint first = 0;  // vertex
+    GLsizei count = 0;
+  };
+  GLuint bitmap_vbo = 0;
+  std::vector<BitmapRun> bitmap_runs;
+
   Box bounds;                // of the vertices' base positions (outline units; growth offsets not included)
   std::uint64_t serial = 0;  // unique per upload: an offscreen pass is reused while it and the transform match
 
@@ -81,9 +119,14 @@ struct DrawBatch::Impl {
     if (vbo != 0) glDeleteBuffers(1, &vbo);
     if (ibo != 0) glDeleteBuffers(1, &ibo);
     if (offsets_vbo != 0) glDeleteBuffers(1, &offsets_vbo);
+    if (bitmap_vbo != 0) glDeleteBuffers(1, &bitmap_vbo);
   }
   bool instanced() const { return offsets_vbo != 0; }
-  bool empty() const { return instanced() ? runs.empty() : vbo == 0 || vertex_count == 0; }
+  bool bitmaps() const { return bitmap_vbo != 0; }
+  bool empty() const {
+    if (bitmaps()) return bitmap_runs.empty();
+    return instanced() ? runs.empty() : vbo == 0 || vertex_count == 0;
+  }
 };
 
 struct GlyphCache::Impl {
@@ -118,6 +161,14 @@ struct GlyphCache::Impl {
   std::list<Entry> lru;  // most recently used first
   std::unordered_map<Key, std::list<Entry>::iterator, KeyHash> index;
   Stats stats;
+
+  // Colour bitmaps (lib/gpu/color_bitmaps.cpp), keyed by lod = strike * 64 +
+  // level; pages oldest first, the last one being filled. Pages count in the
+  // budget; past it the oldest pages go with their entries (blocks keep the
+  // pages they draw from).
+  gpu::CachedBitmap bitmap(const Font& font, std::uint32_t glyph_id, double pixels_per_em);
+  std::unordered_map<Key, gpu::CachedBitmap, KeyHash> bitmaps;
+  std::vector<std::shared_ptr<gpu::AtlasPage>> pages;
 
  private:
   void evict();

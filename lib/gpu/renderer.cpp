@@ -181,6 +181,10 @@ struct Renderer::Impl {
   // composite[box][gamma]: one fetch per pixel, or vbaa's box filter
   // (CURVETEXT_BOX); with gamma or not. Each made when first needed.
   QuadProgram resolve, composite[2][2];
+  // Colour bitmaps: textured quads (bitmap.vert/frag.glsl).
+  GLuint bitmap_program = 0;
+  GLint bitmap_transform = -1, bitmap_viewport = -1, bitmap_depth = -1, bitmap_texture = -1, bitmap_opacity = -1,
+        bitmap_linear = -1;
   GLuint quad_vbo = 0;
   int max_samples = 0;    // 0: no multisampled renderbuffers
   int max_offscreen = 0;  // largest offscreen side
@@ -307,13 +311,15 @@ struct Renderer::Impl {
   void draw_area(const gpu::BatchImpl& b, const Transform& full, float vw, float vh, const std::array<float, 4>& color,
                  float gamma, CurveMode curve_mode, bool accumulate);
   void draw_debug_edges(const gpu::BatchImpl& b, const Transform& full, float vw, float vh);
+  void draw_bitmaps(const gpu::BatchImpl& b, const Transform& full, float vw, float vh, const DrawOptions& options);
 
   Impl() = default;
   Impl(const Impl&) = delete;
   Impl& operator=(const Impl&) = delete;
   ~Impl() {
-    for (GLuint p : {program, area_program[0][0], area_program[0][1], area_program[1][0], area_program[1][1],
-                     resolve.id, composite[0][0].id, composite[0][1].id, composite[1][0].id, composite[1][1].id})
+    for (GLuint p :
+         {program, area_program[0][0], area_program[0][1], area_program[1][0], area_program[1][1], resolve.id,
+          composite[0][0].id, composite[0][1].id, composite[1][0].id, composite[1][1].id, bitmap_program})
       if (p != 0) glDeleteProgram(p);
     if (quad_vbo != 0) glDeleteBuffers(1, &quad_vbo);
     if (vao != 0) glDeleteVertexArrays(1, &vao);
@@ -453,6 +459,10 @@ void Renderer::draw(const DrawBatch& batch, const Placement& placement, const Dr
   // projective transform.
   const Transform full =
       placement.transform * Transform{{s, 0.0, placement.origin_x, 0.0, -s, placement.origin_y, 0.0, 0.0, 1.0}};
+  if (b.bitmaps()) {
+    r.draw_bitmaps(b, full, vw, vh, options);
+    return;
+  }
   if (options.debug) {
     // The paper's Figure 1: its single pass, with what curved triangles discard shown.
     DrawOptions shown = options;
@@ -801,6 +811,73 @@ void Renderer::Impl::draw_debug_edges(const gpu::BatchImpl& b, const Transform& 
   glUniform1i(r.u_debug, 0);
   if (GLenum err = glGetError(); err != GL_NO_ERROR)
     throw Error(ErrorCode::Gl, "drawing debug edges failed (GL error " + hex(err) + ")");
+}
+
+namespace {
+
+// Unbinds a sampler object the application bound to texture unit 0 (GL 3
+// and GLES 3: it would override the atlas's filtering) and binds it back.
+class SamplerScope {
+ public:
+  explicit SamplerScope(bool gl3) : gl3_(gl3) {
+    if (!gl3_) return;
+    glGetIntegerv(GL_SAMPLER_BINDING, &sampler_);
+    glBindSampler(0, 0);
+  }
+  ~SamplerScope() {
+    if (gl3_) glBindSampler(0, static_cast<GLuint>(sampler_));
+  }
+  SamplerScope(const SamplerScope&) = delete;
+  SamplerScope& operator=(const SamplerScope&) = delete;
+
+ private:
+  bool gl3_;
+  GLint sampler_ = 0;
+};
+
+}  // namespace
+
+// Colour bitmaps: one draw per atlas page, premultiplied source-over into
+// the application's framebuffer (its depth test as it is).
+void Renderer::Impl::draw_bitmaps(const gpu::BatchImpl& b, const Transform& full, float vw, float vh,
+                                  const DrawOptions& options) {
+  if (bitmap_program == 0) {
+    Shader vs(GL_VERTEX_SHADER), fs(GL_FRAGMENT_SHADER);
+    compile(vs, GL_VERTEX_SHADER, shader_source::bitmap_vert_glsl, gles);
+    compile(fs, GL_FRAGMENT_SHADER, shader_source::bitmap_frag_glsl, gles);
+    bitmap_program = link_program(vs, fs, {"a_vertex"}, "colour bitmap program");
+    bitmap_transform = glGetUniformLocation(bitmap_program, "u_transform");
+    bitmap_viewport = glGetUniformLocation(bitmap_program, "u_viewport");
+    bitmap_depth = glGetUniformLocation(bitmap_program, "u_depth");
+    bitmap_texture = glGetUniformLocation(bitmap_program, "u_texture");
+    bitmap_opacity = glGetUniformLocation(bitmap_program, "u_opacity");
+    bitmap_linear = glGetUniformLocation(bitmap_program, "u_linear");
+  }
+  glUseProgram(bitmap_program);
+  ProgramUniforms u;
+  u.transform = bitmap_transform;
+  u.viewport = bitmap_viewport;
+  u.depth = bitmap_depth;
+  set_view(u, full, vw, vh, pass_depth);
+  glUniform1i(bitmap_texture, 0);
+  glUniform1f(bitmap_opacity, std::clamp(options.color.a, 0.0f, 1.0f));
+  glUniform1f(bitmap_linear, target_blending == Blending::Linear ? 1.0f : 0.0f);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  glActiveTexture(GL_TEXTURE0);
+  const SamplerScope sampler(info.gl3());
+  glBindBuffer(GL_ARRAY_BUFFER, b.bitmap_vbo);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 4 * sizeof(GLfloat), nullptr);
+  for (const gpu::BatchImpl::BitmapRun& run : b.bitmap_runs) {
+    glBindTexture(GL_TEXTURE_2D, run.page->texture);
+    glDrawArrays(GL_TRIANGLES, run.first, run.count);
+  }
+  glDisableVertexAttribArray(0);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  if (GLenum err = glGetError(); err != GL_NO_ERROR)
+    throw Error(ErrorCode::Gl, "drawing colour bitmaps failed (GL error " + hex(err) + ")");
 }
 
 std::size_t Renderer::offscreen_passes() const { return impl_->offscreen_passes; }

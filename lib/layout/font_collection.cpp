@@ -48,6 +48,17 @@ bool has_outlines(const Font& font) {
   return false;
 }
 
+namespace {
+
+// Faces fallback may take: with outlines or colour bitmaps; colour ones only
+// (COLR or bitmaps) for emoji presentation.
+bool drawable(const Font& font, bool color_only) {
+  if (color_only) return font.color_format() != ColorFormat::None;
+  return has_outlines(font) || font.color_format() == ColorFormat::Bitmap;
+}
+
+}  // namespace
+
 FontCollection::FontCollection(std::string default_font) : default_path_(std::move(default_font)) {}
 FontCollection::~FontCollection() = default;
 
@@ -134,16 +145,27 @@ bool FontCollection::has_glyph(const Font& font, char32_t c) {
 
 std::shared_ptr<const Font> FontCollection::fallback(char32_t c, const std::string& language,
                                                      const std::vector<Variation>& variations) {
-  const std::string key =
-      std::to_string(static_cast<unsigned long>(c)) + "|" + language + "|" + variations_key(variations);
+  return find_fallback(c, language, variations, false);
+}
+
+std::shared_ptr<const Font> FontCollection::color_fallback(char32_t c, const std::string& language) {
+  return find_fallback(c, language, {}, true);
+}
+
+std::shared_ptr<const Font> FontCollection::find_fallback(char32_t c, const std::string& language,
+                                                          const std::vector<Variation>& variations, bool color_only) {
+  const std::string key = std::to_string(static_cast<unsigned long>(c)) + "|" + language + "|" +
+                          variations_key(variations) + (color_only ? "|colour" : "");
   if (auto it = fallback_.find(key); it != fallback_.end()) {
     ++stats_.fallback_hits;
     return it->second;
   }
   // Faces already used for fallback first: a CJK paragraph then needs one
-  // fontconfig query, not one per ideograph.
+  // fontconfig query, not one per ideograph. Not a bitmap emoji face for
+  // other fallback, though: text presentation keeps fontconfig's order.
   for (const auto& face : fallback_faces_)
-    if (face->glyph_for_codepoint(c) != 0) {
+    if ((color_only ? face->color_format() != ColorFormat::None : face->color_format() != ColorFormat::Bitmap) &&
+        face->glyph_for_codepoint(c) != 0) {
       std::shared_ptr<const Font> f = face;
       if (!variations.empty()) f = open_file(face->path(), face->face_index(), variations, false);
       fallback_[key] = f;
@@ -169,14 +191,14 @@ std::shared_ptr<const Font> FontCollection::fallback(char32_t c, const std::stri
       FcCharSet* cs = nullptr;
       if (FcPatternGetCharSet(font, FC_CHARSET, 0, &cs) != FcResultMatch || !FcCharSetHasChar(cs, c)) continue;
       FcBool color = FcFalse;
-      if (FcPatternGetBool(font, FC_COLOR, 0, &color) == FcResultMatch && color) continue;  // bitmap emoji
+      if (color_only && (FcPatternGetBool(font, FC_COLOR, 0, &color) != FcResultMatch || !color)) continue;
       FcChar8* file = nullptr;
       int index = 0;
       if (FcPatternGetString(font, FC_FILE, 0, &file) != FcResultMatch) continue;
       FcPatternGetInteger(font, FC_INDEX, 0, &index);
       try {
         auto face = open_file(reinterpret_cast<const char*>(file), index, {}, false);
-        if (!has_outlines(*face) || face->glyph_for_codepoint(c) == 0) continue;
+        if (!drawable(*face, color_only) || face->glyph_for_codepoint(c) == 0) continue;
         fallback_faces_.push_back(face);
         chosen = variations.empty() ? face : open_file(face->path(), index, variations, false);
       } catch (const Error&) {

@@ -19,6 +19,7 @@
 #include "font/harfbuzz_font.hpp"
 #include "font/utf8.hpp"
 #include "layout/cluster_limit.hpp"
+#include "layout/emoji.hpp"
 #include "core/format.hpp"
 
 namespace curvetext {
@@ -277,6 +278,16 @@ struct ParagraphBuilder {
     return true;
   }
 
+  // A colour face (COLR or bitmaps) that covers [a, b): the style's first,
+  // else fontconfig's; -1 when none.
+  template <typename IndexOf>
+  std::size_t color_face(std::size_t a, std::size_t b, const ResolvedStyle& r, IndexOf& index_of) {
+    for (const auto& f : r.chain)
+      if (f->color_format() != ColorFormat::None && covers(*f, a, b)) return index_of(f);
+    if (auto f = fonts.color_fallback(para[a], r.language_tag); f && covers(*f, a, b)) return index_of(f);
+    return static_cast<std::size_t>(-1);
+  }
+
   void itemize() {
     const std::size_t n = para.size();
     // Script runs: Common and Inherited take the script of the text around them.
@@ -304,6 +315,7 @@ struct ParagraphBuilder {
     std::vector<std::uint32_t> keep(n, 0);
     std::size_t previous = static_cast<std::size_t>(-1);  // index into used
     std::size_t previous_style = static_cast<std::size_t>(-1);
+    bool previous_emoji = false;  // the previous cluster took a colour face for emoji presentation
     auto index_of = [&](const std::shared_ptr<const Font>& f) {
       std::size_t index = 0;
       while (index < used.size() && used[index] != f) ++index;
@@ -317,9 +329,17 @@ struct ParagraphBuilder {
       const ResolvedStyle& r = *resolved[si];
       std::size_t chosen = static_cast<std::size_t>(-1);
       const bool neutral = neutral_script[a] || ignorable_for_coverage(para[a]);
+      // Emoji presentation: a colour face first, the style's or fontconfig's,
+      // as Pango does.
+      const bool emoji = detail::emoji_presentation(std::u32string_view(para).substr(a, b - a));
+      if (emoji) chosen = color_face(a, b, r, index_of);
       // Spaces, digits and punctuation stay with the font before them when it
-      // has them, so a run of Arabic words is not cut at every space.
-      if (neutral && previous < used.size() && previous_style == si && covers(*used[previous], a, b)) chosen = previous;
+      // has them (not with an emoji's), so a run of Arabic words is not cut
+      // at every space.
+      if (chosen == static_cast<std::size_t>(-1) && neutral && !previous_emoji && previous < used.size() &&
+          previous_style == si && covers(*used[previous], a, b))
+        chosen = previous;
+      previous_emoji = emoji && chosen != static_cast<std::size_t>(-1);
       for (std::size_t k = 0; chosen == static_cast<std::size_t>(-1) && k < r.chain.size(); ++k)
         if (covers(*r.chain[k], a, b)) chosen = index_of(r.chain[k]);
       if (chosen == static_cast<std::size_t>(-1)) {

@@ -61,6 +61,16 @@ class CURVETEXT_API DrawBatch {
   // the upload fails (no current context).
   static DrawBatch from_glyphs(GlyphCache& cache, const Font& font, std::span<const PlacedGlyph> glyphs,
                                double pixels_per_em);
+  // A bitmap colour font's glyphs (Font::color_format() == Bitmap) from the
+  // cache's atlas, as textured quads: each bitmap scaled from its strike to
+  // `pixels_per_em` and placed at its glyph's origin (font units, y up, as
+  // from_glyphs). Glyphs without a bitmap (a space) draw nothing. Renderer::draw
+  // draws them in their own colours, times DrawOptions::color's alpha, with
+  // linear filtering (antialiasing modes do not apply). Throws as
+  // from_glyphs, Error(InvalidArgument) for a font that is not a bitmap
+  // colour font, and Font::color_bitmap's errors.
+  static DrawBatch from_color_bitmaps(GlyphCache& cache, const Font& font, std::span<const PlacedGlyph> glyphs,
+                                      double pixels_per_em);
   // One mesh (outline units, drawn at offset (0,0)); the mesh is copied.
   // Throws Error(Gl) when the upload fails.
   static DrawBatch from_mesh(const Mesh& mesh);

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "curvetext/color_glyph.hpp"
 #include "curvetext/export.hpp"
 #include "curvetext/outline.hpp"
 
@@ -45,8 +46,8 @@ struct FontMetrics {
 class CURVETEXT_API Font {
  public:
   // Reads the whole file. Throws Error(FontNotFound) if the file cannot be
-  // read, Error(FontInvalid) if it is not a usable scalable font or
-  // face_index is out of range.
+  // read, Error(FontInvalid) if it is not a usable font (outlines, COLR
+  // layers, or CBDT/sbix colour bitmaps) or face_index is out of range.
   static Font open(const std::string& path, int face_index = 0);
   // The same from font file bytes already in memory (an asset pack, an
   // embedded font). The bytes are copied: `data` need not outlive the call.
@@ -86,12 +87,38 @@ class CURVETEXT_API Font {
   unsigned glyph_count() const;  // glyph ids are 0 .. glyph_count() - 1
   // Outline of a glyph in font units, unhinted, at the current variations.
   // Empty outline for glyphs without contours (space). Throws Error(FontInvalid)
-  // for glyph ids out of range or a glyph the font's data cannot give.
+  // for glyph ids out of range or a glyph the font's data cannot give, and
+  // for any glyph of a face whose glyphs are colour bitmaps only (see
+  // color_bitmap).
   Outline glyph_outline(std::uint32_t glyph_id) const;
   // The same into `out`, which is cleared first (its storage is reused).
   void glyph_outline(std::uint32_t glyph_id, Outline& out) const;
   // Glyph id for a Unicode code point, 0 when the font has none.
   std::uint32_t glyph_for_codepoint(char32_t codepoint) const;
+
+  // Colour glyphs (color_glyph.hpp).
+  ColorFormat color_format() const;
+  // A COLR glyph's layers in drawing order, from the first palette; empty
+  // for a glyph without a colour record (draw its outline in the text's
+  // colour) and in faces without COLR. COLR v1 paint graphs are followed
+  // through layer lists, glyphs filled with a solid colour and references to
+  // other colour glyphs; gradients, transforms and composites are not drawn:
+  // Error(FontInvalid) names the paint and the glyph, as it does a glyph id
+  // out of range, a graph nested deeper than tolerance::kMaxColorPaintDepth,
+  // one visiting more than kMaxColorPaints paints or one with more than
+  // kMaxColorLayers layers.
+  std::vector<ColorLayer> color_layers(std::uint32_t glyph_id) const;
+  // The pixels per em of a bitmap colour font's strikes, in the font's
+  // order; empty in faces without bitmaps.
+  std::vector<double> color_bitmap_strikes() const;
+  // A bitmap colour font's glyph from the smallest strike of at least
+  // `pixels_per_em` (the largest strike when none is that large). Empty
+  // (0 x 0) for a glyph without a bitmap and in faces without bitmaps.
+  // Throws Error(InvalidArgument) for a size that is not positive and
+  // finite, Error(FontInvalid) for a glyph id out of range, a bitmap that
+  // cannot be decoded or one wider or taller than
+  // tolerance::kMaxColorBitmapSidePx.
+  ColorBitmap color_bitmap(std::uint32_t glyph_id, double pixels_per_em) const;
 
  private:
   friend struct FontAccess;  // lib/font/font_impl.hpp

@@ -3,10 +3,11 @@
 // of thousands of CJK ideographs costs one fontconfig query per font, not per
 // character.
 //
-// Only faces with outlines (glyf, CFF or CFF2) are used: colour bitmap fonts
-// (CBDT/CBLC like Noto Color Emoji, sbix) cannot be drawn as curve meshes, so
-// fallback skips them and takes an outline face that covers the character;
-// when there is none, the first font's missing glyph (.notdef) is drawn.
+// Faces with outlines (glyf, CFF or CFF2, with or without COLR layers) and
+// colour bitmap faces (CBDT/CBLC like Noto Color Emoji, sbix) are used, the
+// latter drawn from their bitmaps (color_glyph.hpp). Layout asks for a colour
+// face first for emoji presentation (color_fallback); when no face covers a
+// character, the first font's missing glyph (.notdef) is drawn.
 //
 // Not thread-safe: use one collection per thread (fonts handed out are
 // immutable and may be shared, font.hpp). The collection keeps every face it
@@ -47,13 +48,18 @@ class CURVETEXT_API FontCollection {
   // default_font_path (default_font.hpp) and Font::open.
   std::shared_ptr<const Font> default_font();
 
-  // An outline face that has a glyph for `c`, from fontconfig (language
-  // `language` preferred, may be empty); nullptr when none. Faces already
+  // A face with outlines or colour bitmaps that has a glyph for `c`, in
+  // fontconfig's order (language `language` preferred, may be empty);
+  // nullptr when none. Faces already
   // handed out are tried first. Variations are applied where the face has
   // the axes. Remembered per (c, language, variations). Faces that cannot be
   // opened are skipped, not thrown.
   std::shared_ptr<const Font> fallback(char32_t c, const std::string& language,
                                        const std::vector<Variation>& variations = {});
+  // The same among colour faces only (fontconfig's color, and COLR layers or
+  // bitmaps): for emoji presentation sequences, as Pango does. nullptr when
+  // none has `c`. Remembered per (c, language).
+  std::shared_ptr<const Font> color_fallback(char32_t c, const std::string& language);
 
   // font.glyph_for_codepoint(c) != 0, remembered per face for the Basic
   // Multilingual Plane (two 8 KiB bit sets per face, filled as characters
@@ -73,6 +79,8 @@ class CURVETEXT_API FontCollection {
  private:
   std::shared_ptr<const Font> open_file(const std::string& path, int index, const std::vector<Variation>& variations,
                                         bool strict);
+  std::shared_ptr<const Font> find_fallback(char32_t c, const std::string& language,
+                                            const std::vector<Variation>& variations, bool color_only);
   std::string default_path_;
   std::map<std::string, std::shared_ptr<const Font>> by_key_;      // path#index|variations -> face
   std::map<std::string, std::pair<std::string, int>> by_pattern_;  // fontconfig pattern -> file, index
@@ -87,7 +95,8 @@ class CURVETEXT_API FontCollection {
   Stats stats_;
 };
 
-// True when the face has outlines curvetext can draw (glyf, CFF or CFF2).
+// True when the face has outlines curvetext can draw (glyf, CFF or CFF2);
+// false for a colour bitmap face (Font::color_format() says Bitmap).
 // Reads the face's table directory; thread-safe as Font's const functions.
 CURVETEXT_API bool has_outlines(const Font& font);
 

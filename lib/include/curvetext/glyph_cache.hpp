@@ -15,7 +15,14 @@ namespace curvetext {
 // once an instanced block needed them, and its bookkeeping. A block keeps the
 // meshes it uses alive after they are dropped from the cache.
 //
-// Entries are filled by DrawBatch::from_text / from_glyphs. GPU buffers in it
+// Colour bitmaps (CBDT/sbix emoji, color_glyph.hpp) are kept in an atlas of
+// RGBA texture pages of tolerance::kColorAtlasPageTexels a side, per glyph
+// at the power-of-two reduction of its strike just above the size drawn
+// (box-filtered, so scaling down never skips texels), and drawn as textured
+// quads.
+//
+// Entries are filled by DrawBatch::from_text / from_glyphs /
+// from_color_bitmaps. GPU buffers in it
 // belong to the GL context (or share group) current when they were made: use
 // a cache with one context, and destroy it with that context current when it
 // holds any (GlyphCache::Stats::gpu_bytes > 0). Not thread-safe: one thread
@@ -37,6 +44,11 @@ class CURVETEXT_API GlyphCache {
     std::size_t hits = 0;       // lookups answered from the cache, since construction
     std::size_t misses = 0;     // lookups that built a mesh
     std::size_t gpu_bytes = 0;  // of the glyph meshes uploaded for instanced blocks (part of `bytes`)
+    // Colour bitmaps: texture pages of the atlas (not part of `bytes`; a new
+    // page drops the oldest ones while pages and meshes would pass the
+    // budget) and the bitmaps placed in them.
+    std::size_t bitmap_bytes = 0;
+    std::size_t bitmaps = 0;
   };
   Stats stats() const;
 

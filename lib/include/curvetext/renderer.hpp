@@ -108,7 +108,7 @@ struct DrawOptions {
 // vertex attributes 0 to 2: arrays, pointers, buffers), array and element
 // buffer bindings, attribute 2's current value, the draw and read
 // framebuffers, renderbuffer, active texture and texture unit 0's 2D
-// binding, viewport, scissor test and box, blend enable, equations and
+// binding (and sampler object, GLES 3 / GL 3), viewport, scissor test and box, blend enable, equations and
 // functions, depth test and depth writes, stencil and cull-face tests,
 // rasterizer discard, primitive restart, colour mask, clear colour, and the
 // pixel pack state. Buffers a DrawBatch uploads leave the bindings as they
@@ -133,7 +133,10 @@ class CURVETEXT_API Renderer {
   // Draws `batch` with premultiplied source-over blending of `options.color`
   // times coverage into the framebuffer bound now (the application's, or an
   // ImageTarget's), within its viewport, whose top-left pixel is (0, 0) of
-  // the placement, and its scissor box and colour mask. `batch` must have been built
+  // the placement, and its scissor box and colour mask. A batch of colour
+  // bitmaps (DrawBatch::from_color_bitmaps) is drawn in its own colours times
+  // `options.color`'s alpha, sampled linearly; antialiasing, curve mode,
+  // gamma and debug do not apply to it. `batch` must have been built
   // with this context (or one sharing with it). Throws
   // Error(InvalidArgument) for a non-finite or zero scale, a non-finite
   // origin or a transform Transform::validate refuses, Error(Gl) when a GL

@@ -3,6 +3,10 @@
 // colour (consecutive runs), each group one DrawBatch over the glyph meshes of
 // a GlyphCache, with the group's underlines and strikethroughs as one mesh;
 // run backgrounds (TextStyle::background) one mesh per colour, drawn first.
+// Colour glyphs (color_glyph.hpp): a COLR glyph's layers are drawn as groups
+// of their own, one per layer index and colour, in the layers' order; a
+// bitmap colour font's glyphs (CBDT/sbix emoji) as textured quads from the
+// cache's atlas, in their own colours times the style colour's alpha.
 // Built once; drawn again, moved or transformed, it changes only uniforms.
 #pragma once
 
@@ -27,7 +31,8 @@ class CURVETEXT_API TextBlock {
   // picks the glyph meshes' level of detail and `auto` antialiasing per
   // group; 1 for text drawn at its layout size. Throws
   // Error(InvalidArgument) for a scale that is not positive and finite, and
-  // the errors of DrawBatch's builders.
+  // the errors of DrawBatch's builders and of Font::color_layers (COLR v1
+  // paints not supported are refused by name).
   static TextBlock from_paragraph(GlyphCache& cache, const Paragraph& paragraph, double on_screen_scale = 1.0);
 
   TextBlock(TextBlock&&) noexcept;

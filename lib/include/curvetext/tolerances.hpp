@@ -149,4 +149,21 @@ inline constexpr std::size_t kMaxShapeFileBytes = std::size_t{64} << 20;
 inline constexpr std::size_t kMaxSegmentsPerPath = std::size_t{1} << 16;
 inline constexpr std::size_t kMaxSegmentsPerDocument = std::size_t{1} << 18;
 
+// --- Colour glyphs (color_glyph.hpp) -------------------------------------------
+// A COLR v1 paint graph nested deeper than this (paints within paints,
+// colour glyphs referring to colour glyphs) is refused: fonts are untrusted
+// and a cycle would never end.
+inline constexpr int kMaxColorPaintDepth = 32;
+// Most layers one colour glyph may have (each is drawn as a pass of its own),
+// and most paints a COLR v1 glyph's graph may visit to find them.
+inline constexpr std::size_t kMaxColorLayers = 1024;
+inline constexpr std::size_t kMaxColorPaints = 16384;
+// Largest side of a colour bitmap, in pixels (CBDT / sbix strikes are at
+// most a few hundred; RGBA8: 4 MiB at this side).
+inline constexpr int kMaxColorBitmapSidePx = 1024;
+// Side of a page of the colour bitmap atlas, in texels (RGBA8: 4 MiB). A
+// bitmap and its levels are stored with a border of transparent texels, so
+// linear filtering never reads a neighbour.
+inline constexpr int kColorAtlasPageTexels = 1024;
+
 }  // namespace curvetext::tolerance
