@@ -7,6 +7,9 @@
 //                                            Arabic with Latin and digits, Hebrew,
 //                                            Devanagari, Thai, CJK (Noto fonts)
 //   build/bench/layout_bench --check-breaks  line starts, ours vs Pango's
+//   build/bench/layout_bench --check-scripts per script (Thai, Lao, Khmer and
+//                                            Myanmar without spaces too), over
+//                                            several widths
 //
 // Both lay out from scratch each time (text set, itemised, shaped, broken);
 // both keep their font caches warm (a FontCollection / a PangoFontMap), as an
@@ -126,6 +129,35 @@ const std::vector<ScriptSet>& script_sets() {
         "不能出现在行首。",
         "東京は日本の首都であり、世界有数の大都市です。電車やバスなどの公共交通機関が発達していて、毎日何百万人もの人々"
         "が通勤しています。"}},
+  };
+  return sets;
+}
+
+// Line starts per script (--check-scripts): the sets above, plus scripts
+// written without spaces between words. Thai gets libthai's dictionary
+// breaks on both sides; Lao, Khmer and Myanmar have no dictionary on either
+// side, so both break them at spaces, else between grapheme clusters.
+const std::vector<ScriptSet>& unspaced_sets() {
+  static const std::vector<ScriptSet> sets = {
+      {"Thai without spaces",
+       {std::string(kNoto) + "NotoSansThai-Regular.ttf", std::string(kNoto) + "NotoSans-Regular.ttf"},
+       "Noto Sans Thai, Noto Sans",
+       {"ภาษาไทยเขียนโดยไม่เว้นวรรคระหว่างคำการตัดคำจึงต้องใช้พจนานุกรมเพื่อหาว่าคำหนึ่งจบลงที่ใด",
+        "ประเทศไทยตั้งอยู่ในเอเชียตะวันออกเฉียงใต้มีกรุงเทพมหานครเป็นเมืองหลวงและเป็นเมืองที่ใหญ่ที่สุดของประเทศ",
+        "พรุ่งนี้เช้าเราจะไปตลาดน้ำเพื่อซื้อผลไม้และขนมไทยแล้วตอนบ่ายจะไปเที่ยววัดพระแก้วกับเพื่อน",
+        "นักเรียนทุกคนต้องมาโรงเรียนก่อนแปดโมงเช้าเพื่อเข้าแถวเคารพธงชาติและร้องเพลงชาติพร้อมกัน"}},
+      {"Lao",
+       {std::string(kNoto) + "NotoSansLao-Regular.ttf"},
+       "Noto Sans Lao",
+       {"ພາສາລາວເປັນພາສາທາງການຂອງສາທາລະນະລັດປະຊາທິປະໄຕປະຊາຊົນລາວ ແລະ ຂຽນດ້ວຍອັກສອນລາວ"}},
+      {"Khmer",
+       {std::string(kNoto) + "NotoSansKhmer-Regular.ttf"},
+       "Noto Sans Khmer",
+       {"ភាសាខ្មែរគឺជាភាសាផ្លូវការរបស់ព្រះរាជាណាចក្រកម្ពុជា ហើយត្រូវបានសរសេរដោយអក្សរខ្មែរ"}},
+      {"Myanmar",
+       {std::string(kNoto) + "NotoSansMyanmar-Regular.ttf"},
+       "Noto Sans Myanmar",
+       {"မြန်မာဘာသာစကားသည်မြန်မာနိုင်ငံ၏ရုံးသုံးဘာသာစကားဖြစ်ပြီး မြန်မာအက္ခရာဖြင့်ရေးသားသည်"}},
   };
   return sets;
 }
@@ -302,10 +334,64 @@ int check_breaks() {
   return differ_plain == 0 && unexplained == 0 ? 0 : 1;
 }
 
+// Per script: line starts against Pango's (insert-hyphens off) at several
+// widths, and whether both drew with the same font files, as a Markdown
+// table; each layout that differs is printed.
+int check_scripts() {
+  curvetext::FontCollection fonts;
+  std::vector<ScriptSet> sets = {{"Latin (English, German)", {kFontFile}, kFontFamily, english()}};
+  sets.back().texts.insert(sets.back().texts.end(), german().begin(), german().end());
+  for (const auto* group : {&script_sets(), &unspaced_sets()}) sets.insert(sets.end(), group->begin(), group->end());
+  const std::vector<double> widths = {120.0, 160.0, 240.0, 330.0, 420.0};
+  std::string table =
+      "| script | font files | paragraphs | layouts identical | line starts identical |\n|---|---|---|---|---|\n";
+  int all_differ = 0;
+  for (const ScriptSet& set : sets) {
+    PangoSetup pango(set.pango_family);
+    int layouts = 0, same_layouts = 0, starts = 0, same_starts = 0;
+    std::set<std::string> ours_files, pango_files;
+    for (const double width : widths)
+      for (const std::string& text : set.texts) {
+        std::vector<std::size_t> ours;
+        const curvetext::Paragraph p = curvetext::Paragraph::layout(fonts, text, {}, style(width, set.files));
+        for (const auto& l : p.lines()) {
+          ours.push_back(l.start);
+          for (const auto& run : l.runs)
+            ours_files.insert(run.font->path() + "#" + std::to_string(run.font->face_index()));
+        }
+        const auto f = pango.font_files(text);
+        pango_files.insert(f.begin(), f.end());
+        const auto theirs = pango.line_starts(text, nullptr, width, false);
+        ++layouts;
+        same_layouts += ours == theirs ? 1 : 0;
+        for (std::size_t k = 1; k < theirs.size(); ++k, ++starts)
+          same_starts += std::find(ours.begin(), ours.end(), theirs[k]) != ours.end() ? 1 : 0;
+        if (ours == theirs) continue;
+        ++all_differ;
+        std::printf("%s differs at width %.0f: \"%.60s...\"\n", set.name, width, text.c_str());
+        std::printf("  curvetext:");
+        for (std::size_t k = 1; k < ours.size(); ++k) std::printf(" %zu", ours[k]);
+        std::printf("\n  pango    :");
+        for (std::size_t k = 1; k < theirs.size(); ++k) std::printf(" %zu", theirs[k]);
+        std::printf("\n");
+      }
+    char row[256];
+    const bool same_files = ours_files == pango_files;
+    all_differ += same_files ? 0 : 1;
+    std::snprintf(row, sizeof row, "| %s | %s | %zu | %d of %d | %d of %d |\n", set.name,
+                  same_files ? "identical" : "DIFFER", set.texts.size(), same_layouts, layouts, same_starts, starts);
+    table += row;
+  }
+  std::printf("\nline starts against Pango 1.50 (insert-hyphens off), %.0f px, widths 120, 160, 240, 330, 420 px:\n%s",
+              kSize, table.c_str());
+  return all_differ == 0 ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc > 1 && std::strcmp(argv[1], "--check-breaks") == 0) return check_breaks();
+  if (argc > 1 && std::strcmp(argv[1], "--check-scripts") == 0) return check_scripts();
   std::vector<std::string> texts = english();
   texts.insert(texts.end(), german().begin(), german().end());
   curvetext::FontCollection fonts;

@@ -380,6 +380,47 @@ TEST(TextBlockDraw, ParagraphInTheAppsViewportMatchesTheImagePath) {
   }
 }
 
+// Underline and strikethrough end at a line's last visible glyph: the
+// space a soft wrap leaves at the line's end (no ink of its own) gets no bar,
+// whatever the alignment; the bar still reaches the last glyph.
+TEST(TextBlockDraw, DecorationsStopAtTheLastVisibleGlyph) {
+  FontCollection fonts;
+  ParagraphStyle style;
+  style.default_style.fonts = {test::kDejaVuSans};
+  style.default_style.size_px = 40;
+  style.default_style.underline = true;
+  style.default_style.strikethrough = true;
+  style.width = 150;
+  for (const Align align : {Align::Start, Align::End, Align::Center}) {
+    style.align = align;
+    const Paragraph p = Paragraph::layout(fonts, "Bar    bar", {}, style);
+    ASSERT_EQ(p.lines().size(), 2u);
+    ParagraphImageOptions options;
+    options.margin_px = 10;
+    options.antialiasing = AntiAliasing::None;
+    const Image image = render_paragraph_image(gpu().renderer, gpu().cache, p, options);
+    const LayoutLine& line = p.lines()[0];
+    double run_left = 1e9, run_right = -1e9;
+    for (const GlyphRun& r : line.runs) {
+      run_left = std::min(run_left, r.x);
+      run_right = std::max(run_right, r.x + r.width);
+    }
+    ASSERT_GT(run_right - (line.x + line.width), 20.0);  // the trailing spaces lie on the line
+    // Ink in columns of the first line: beyond its content (the spaces), and
+    // just inside its right end (the bars under the last glyph).
+    auto ink = [&](double x0, double x1) {
+      int n = 0;
+      for (int y = static_cast<int>(10 + line.top); y < static_cast<int>(10 + line.top + line.height); ++y)
+        for (int x = static_cast<int>(std::ceil(10 + x0)); x < static_cast<int>(10 + x1) && x < image.width; ++x)
+          n += image.pixel(x, y)[0] < 128;
+      return n;
+    };
+    const double end = line.x + line.width;
+    EXPECT_EQ(ink(std::max(end, run_left) + 1.0, std::max(run_right, end) - 1.0), 0) << static_cast<int>(align);
+    EXPECT_GT(ink(end - 3.0, end - 1.0), 4) << static_cast<int>(align);
+  }
+}
+
 // The debug view reaches paragraphs (two runs, the first underlined): orange
 // pixels (discarded by curved triangles) and blue triangle edges appear,
 // none without it.

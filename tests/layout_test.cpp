@@ -304,6 +304,152 @@ TEST(Layout, TabStops) {
   EXPECT_NEAR(xs[2], 300.0, 1e-9);  // default stops every 50 px after the last
 }
 
+// Thai with no break opportunity (no space) before the paragraph's end: the
+// lines still end where libthai's dictionary puts word ends, at every width
+// where the words fit, never inside a word ("จึงต้|อง").
+TEST(Layout, ThaiWithoutSpacesBreaksAtDictionaryWords) {
+  FontCollection fonts;
+  const std::string text =
+      "\u0E20\u0E32\u0E29\u0E32\u0E44\u0E17\u0E22\u0E40\u0E02\u0E35\u0E22\u0E19\u0E42\u0E14\u0E22\u0E44\u0E21\u0E48"
+      "\u0E40\u0E27\u0E49\u0E19\u0E27\u0E23\u0E23\u0E04\u0E01\u0E32\u0E23\u0E15\u0E31\u0E14\u0E04\u0E33\u0E08\u0E36"
+      "\u0E07\u0E15\u0E49\u0E2D\u0E07\u0E43\u0E0A\u0E49\u0E1E\u0E08\u0E19\u0E32\u0E19\u0E38\u0E01\u0E23\u0E21";
+  const std::u32string cps = detail::decode_utf8(text);
+  std::vector<BreakAction> words = line_breaks(cps);
+  for (std::size_t i = 0; i + 1 < words.size(); ++i) ASSERT_EQ(words[i], BreakAction::None) << i;
+  add_dictionary_breaks(cps, words);
+  const auto idx = cp_index_of_bytes(text);
+  for (const double width : {110.0, 140.0, 180.0, 240.0}) {
+    const Paragraph p = Paragraph::layout(fonts, text, {}, style_with({test::kNotoThai}, 20, width));
+    ASSERT_GE(p.lines().size(), 2u) << width;
+    for (std::size_t k = 1; k < p.lines().size(); ++k) {
+      const std::size_t at = idx[p.lines()[k].start];
+      EXPECT_NE(words[at - 1], BreakAction::None) << "width " << width << ": line starts inside a word at " << at;
+    }
+  }
+}
+
+// Lao, Khmer and Myanmar need a dictionary too (UAX #14 class SA), but none
+// is installed (libthai knows Thai only, and Pango has none for them either):
+// they break at spaces, and a run without one longer than the line breaks
+// between grapheme clusters, every line within the width.
+TEST(Layout, LaoKhmerMyanmarWithoutSpacesBreakBetweenClusters) {
+  FontCollection fonts;
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"/usr/share/fonts/truetype/noto/NotoSansLao-Regular.ttf",
+       "\u0E9E\u0EB2\u0EAA\u0EB2\u0EA5\u0EB2\u0EA7\u0EC0\u0E9B\u0EB1\u0E99\u0E9E\u0EB2\u0EAA\u0EB2\u0E97\u0EB2\u0E87"
+       "\u0E81\u0EB2\u0E99"},
+      {"/usr/share/fonts/truetype/noto/NotoSansKhmer-Regular.ttf",
+       "\u1797\u17B6\u179F\u17B6\u1781\u17D2\u1798\u17C2\u179A\u1782\u17BA\u1787\u17B6\u1797\u17B6\u179F\u17B6"
+       "\u1795\u17D2\u179B\u17BC\u179C\u1780\u17B6\u179A"},
+      {"/usr/share/fonts/truetype/noto/NotoSansMyanmar-Regular.ttf",
+       "\u1019\u103C\u1014\u103A\u1019\u102C\u1018\u102C\u101E\u102C\u1005\u1000\u102C\u1038\u101E\u100A\u103A"},
+  };
+  for (const auto& [font, text] : cases) {
+    const std::u32string cps = detail::decode_utf8(text);
+    const auto clusters = grapheme_starts(cps);
+    const auto idx = cp_index_of_bytes(text);
+    const Paragraph p = Paragraph::layout(fonts, text, {}, style_with({font}, 20, 70));
+    ASSERT_GE(p.lines().size(), 2u) << font;
+    for (const LayoutLine& l : p.lines()) {
+      EXPECT_LE(l.width, 70.0 + 1e-6) << font;
+      EXPECT_TRUE(clusters[idx[l.start]]) << font << ": line starts inside a cluster at byte " << l.start;
+      for (const GlyphRun& r : l.runs)
+        for (const PositionedGlyph& g : r.glyphs) EXPECT_NE(g.id, 0u) << font;
+    }
+  }
+}
+
+// CJK and Thai lines have no spaces to stretch: a justified line is spread
+// between its clusters (equal gaps), so both edges line up.
+TEST(Layout, JustifyWithoutSpacesSpreadsBetweenClusters) {
+  FontCollection fonts;
+  const std::string cjk =
+      "\u5317\u4EAC\u662F\u4E2D\u534E\u4EBA\u6C11\u5171\u548C\u56FD\u7684\u9996\u90FD\uFF0C\u4E5F\u662F\u5168\u56FD"
+      "\u7684\u653F\u6CBB\u3001\u6587\u5316\u548C\u56FD\u9645\u4EA4\u5F80\u4E2D\u5FC3\u3002";
+  const std::string thai =
+      "\u0E20\u0E32\u0E29\u0E32\u0E44\u0E17\u0E22\u0E40\u0E02\u0E35\u0E22\u0E19\u0E42\u0E14\u0E22\u0E44\u0E21\u0E48"
+      "\u0E40\u0E27\u0E49\u0E19\u0E27\u0E23\u0E23\u0E04";
+  const std::vector<std::pair<std::string, std::string>> cases = {{std::string(test::kNotoCjk) + "#2", cjk},
+                                                                  {test::kNotoThai, thai}};
+  for (const auto& [font, t] : cases) {
+    ParagraphStyle s = style_with({font}, 20, 157);
+    s.align = Align::Justify;
+    const Paragraph p = Paragraph::layout(fonts, t, {}, s);
+    ASSERT_GE(p.lines().size(), 2u);
+    for (std::size_t k = 0; k + 1 < p.lines().size(); ++k) {
+      const LayoutLine& l = p.lines()[k];
+      EXPECT_NEAR(l.x + l.width, 157.0, 1e-6) << font << " line " << k;
+      // The ink ends at the right edge too: the last glyph's pen end.
+      const PositionedGlyph& last = l.runs.back().glyphs.back();
+      EXPECT_NEAR(last.x + last.advance, 157.0, 1e-6) << font << " line " << k;
+    }
+    EXPECT_LT(p.lines().back().x + p.lines().back().width, 157.0 - 1.0);
+  }
+  // Equal gaps: each ideograph of a justified line advances by the same
+  // amount more than unjustified (one gap after each but the last).
+  ParagraphStyle plain = style_with({std::string(test::kNotoCjk) + "#2"}, 20, 157);
+  ParagraphStyle justified = plain;
+  justified.align = Align::Justify;
+  const Paragraph u = Paragraph::layout(fonts, cjk, {}, plain), j = Paragraph::layout(fonts, cjk, {}, justified);
+  const std::vector<PositionedGlyph>& ug = u.lines()[0].runs[0].glyphs;
+  const std::vector<PositionedGlyph>& jg = j.lines()[0].runs[0].glyphs;
+  ASSERT_EQ(ug.size(), jg.size());
+  const double gap = (157.0 - u.lines()[0].width) / static_cast<double>(ug.size() - 1);
+  for (std::size_t k = 0; k + 1 < ug.size(); ++k) EXPECT_NEAR(jg[k].advance - ug[k].advance, gap, 1e-9) << k;
+  EXPECT_NEAR(jg.back().advance, ug.back().advance, 1e-9);
+}
+
+// A negative first-line indent hangs: the first line at the box's start
+// edge, the others indented by its size, none outside the box.
+TEST(Layout, NegativeIndentHangs) {
+  FontCollection fonts;
+  for (const Align align : {Align::Start, Align::Justify}) {
+    ParagraphStyle s = style_with({test::kDejaVuSans}, 16, 200);
+    s.first_line_indent = -30;
+    s.align = align;
+    const Paragraph p =
+        Paragraph::layout(fonts, "A hanging indent: the first line sticks out and the rest of it is indented.", {}, s);
+    ASSERT_GE(p.lines().size(), 3u);
+    EXPECT_NEAR(p.lines()[0].x, 0.0, 1e-9);
+    for (std::size_t k = 1; k < p.lines().size(); ++k) EXPECT_NEAR(p.lines()[k].x, 30.0, 1e-9) << k;
+    for (const LayoutLine& l : p.lines()) EXPECT_LE(l.x + l.width, 200.0 + 1e-6);
+    EXPECT_GE(p.ink_bounds().x, 0.0);
+  }
+}
+
+// Bold text stays bold in the scripts its font lacks: the fallback face is
+// the same family's bold face where one is installed (here DejaVu Sans Bold,
+// fontconfig's fallback family for Hebrew and Arabic), not the Regular one
+// fontconfig finds by coverage.
+TEST(Layout, BoldAppliesToFallbackFaces) {
+  FontCollection fonts;
+  const std::string bold = "/usr/share/fonts/truetype/noto/NotoSans-Bold.ttf";
+  for (const std::string& text :
+       {std::string("Bold \u05E9\u05DC\u05D5\u05DD"), std::string("Bold \u0645\u0631\u062D\u0628\u0627")}) {
+    const Paragraph p = Paragraph::layout(fonts, text, {}, style_with({bold}, 20));
+    ASSERT_EQ(p.lines().size(), 1u);
+    std::size_t fallback_runs = 0;
+    for (const GlyphRun& r : p.lines()[0].runs) {
+      const float weight = hb_style_get_value(harfbuzz_font(*r.font), HB_STYLE_TAG_WEIGHT);
+      EXPECT_GE(weight, 600.0f) << r.font->path();
+      for (const PositionedGlyph& g : r.glyphs) EXPECT_NE(g.id, 0u) << r.font->path();
+      fallback_runs += r.font->path() != bold;
+    }
+    EXPECT_GE(fallback_runs, 1u) << text;
+  }
+  // Italic too (DejaVu Sans Oblique, which has the italic bit).
+  const Paragraph italic = Paragraph::layout(fonts, "Italic \u05E9\u05DC\u05D5\u05DD", {},
+                                             style_with({"/usr/share/fonts/truetype/noto/NotoSans-Italic.ttf"}, 20));
+  for (const GlyphRun& r : italic.lines()[0].runs) {
+    EXPECT_GT(hb_style_get_value(harfbuzz_font(*r.font), HB_STYLE_TAG_ITALIC), 0.0f) << r.font->path();
+  }
+  // Regular text keeps the Regular fallback faces.
+  const Paragraph p =
+      Paragraph::layout(fonts, "Regular \u05E9\u05DC\u05D5\u05DD", {}, style_with({test::kNotoSans}, 20));
+  for (const GlyphRun& r : p.lines()[0].runs)
+    EXPECT_LT(hb_style_get_value(harfbuzz_font(*r.font), HB_STYLE_TAG_WEIGHT), 500.0f) << r.font->path();
+}
+
 TEST(Layout, JustifyStretchesSpacesOnly) {
   FontCollection fonts;
   ParagraphStyle s = style_with({test::kDejaVuSans}, 18, 260);

@@ -54,7 +54,9 @@ void add_bar(Outline& bars, const LayoutLine& line, const GlyphRun& run, hb_ot_m
                                                                   : run.font->metrics().units_per_em * 0.05 * scale;
   t = std::max(t, 1.0);
   const double top = line.baseline - off - t / 2.0;
-  const double x0 = run.x, x1 = run.x + run.width;
+  // Within the line's content: spaces at a line's end are not decorated.
+  const double x0 = std::max(run.x, line.x), x1 = std::min(run.x + run.width, line.x + line.width);
+  if (!(x1 > x0)) return;
   bars.move_to({x0, -top});
   bars.line_to({x1, -top});
   bars.line_to({x1, -(top + t)});

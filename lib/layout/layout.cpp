@@ -287,6 +287,41 @@ struct ParagraphBuilder {
     if (auto f = fonts.color_fallback(para[a], r.language_tag); f && covers(*f, a, b)) return index_of(f);
     return static_cast<std::size_t>(-1);
   }
+  // A fallback face in the weight and slant of the style's first font (bold
+  // or italic text stays bold or italic in Hebrew or Arabic): the same
+  // family's face for them where fontconfig has one that covers [a, b),
+  // else `f` as it is.
+  std::shared_ptr<const Font> styled_like(const std::shared_ptr<const Font>& f, const Font& first, std::size_t a,
+                                          std::size_t b) {
+    hb_font_t* want = harfbuzz_font(first);
+    hb_font_t* have = harfbuzz_font(*f);
+    const float weight = hb_style_get_value(want, HB_STYLE_TAG_WEIGHT);
+    const bool italic = hb_style_get_value(want, HB_STYLE_TAG_ITALIC) > 0;
+    const bool has_italic = hb_style_get_value(have, HB_STYLE_TAG_ITALIC) > 0;
+    const float has_weight = hb_style_get_value(have, HB_STYLE_TAG_WEIGHT);
+    if (std::abs(weight - has_weight) < 100 && italic == has_italic) return f;
+    const std::string family = f->family_name();
+    if (family.empty() || family.find_first_of(":,-\\") != std::string::npos) return f;
+    static const char* const names[] = {"thin",     "extralight", "light",     "regular", "medium",
+                                        "semibold", "bold",       "extrabold", "black"};
+    const int k = std::clamp(static_cast<int>(std::lround(weight / 100.0f)) - 1, 0, 8);
+    const std::string pattern = family + ":weight=" + names[k] + (italic ? ":slant=italic" : "");
+    auto [it, added] = restyled_.try_emplace(pattern, nullptr);
+    if (added) {
+      try {
+        it->second = fonts.resolve(pattern);
+      } catch (const Error&) {
+        // No such face: the fallback face as it is.
+      }
+    }
+    const std::shared_ptr<const Font>& g = it->second;
+    if (!g || !covers(*g, a, b)) return f;
+    hb_font_t* got = harfbuzz_font(*g);
+    const bool closer = std::abs(hb_style_get_value(got, HB_STYLE_TAG_WEIGHT) - weight) < std::abs(has_weight - weight);
+    const bool slant_fixed = (hb_style_get_value(got, HB_STYLE_TAG_ITALIC) > 0) == italic && has_italic != italic;
+    return closer || slant_fixed ? g : f;
+  }
+  std::map<std::string, std::shared_ptr<const Font>> restyled_;  // fontconfig pattern -> face (null: none)
 
   void itemize() {
     const std::size_t n = para.size();
@@ -346,6 +381,7 @@ struct ParagraphBuilder {
         std::size_t c = a;
         while (c + 1 < b && ignorable_for_coverage(para[c])) ++c;
         auto f = fonts.fallback(para[c], r.language_tag, style(si).variations);
+        if (f && style(si).variations.empty()) f = styled_like(f, *r.chain.front(), a, b);
         chosen = index_of(f ? f : r.chain.front());
       }
       for (std::size_t i = a; i < b; ++i) keep[i] = static_cast<std::uint32_t>(chosen);
@@ -382,6 +418,14 @@ struct ParagraphBuilder {
       if (s.letter_spacing != 0.0 && (i + 1 == n || grapheme[i + 1])) advance[i] += s.letter_spacing;
       if (s.word_spacing != 0.0 && is_space(para[i])) advance[i] += s.word_spacing;
     }
+  }
+
+  // A negative first-line indent hangs: the first line starts at the edge,
+  // the others that far in (nothing is drawn outside the box).
+  double line_indent(bool first) const {
+    const double i = pstyle.first_line_indent;
+    if (i >= 0) return first ? i : 0.0;
+    return first ? 0.0 : -i;
   }
 
   double space_width(std::size_t style_index) const {
@@ -537,7 +581,7 @@ struct ParagraphBuilder {
     line.ellipsized = ellipsized;
     line.hyphenated = hyphenated;
     const bool rtl_para = bidi.paragraph_level % 2 == 1;
-    const double indent = first ? pstyle.first_line_indent : 0.0;
+    const double indent = line_indent(first);
 
     // Spacing, tabs (logical order, pen from the line start) and the content width.
     double x = indent, visible = indent;
@@ -580,28 +624,15 @@ struct ParagraphBuilder {
     double content = visible - indent;
     const double box = pstyle.width > 0 ? pstyle.width : 0.0;
 
-    // Justification: stretch the spaces of a full line (not the paragraph's
-    // last line, nor one ended by a mandatory break); letters are never
-    // stretched, so Arabic keeps its joins.
-    if (pstyle.align == Align::Justify && box > 0 && !last_of_paragraph && !mandatory && !ellipsized) {
-      std::size_t last_visible = a;
-      for (std::size_t i = a; i < b; ++i)
-        if (!is_whitespace(para[i])) last_visible = i;
-      std::vector<Glyph*> spaces;
-      for (Piece& p : pieces)
-        for (Glyph& g : p.glyphs)
-          if (!p.synthetic && g.cluster < last_visible && para[g.cluster] == U' ') spaces.push_back(&g);
-      const double extra = box - indent - content;
-      if (!spaces.empty() && extra > 0) {
-        for (Glyph* g : spaces) g->advance += extra / static_cast<double>(spaces.size());
-        content += extra;
-      }
-    }
-
     // Visual order of the pieces (L2 on their levels).
     std::vector<std::uint8_t> levels;
     for (const Piece& p : pieces) levels.push_back(p.level);
     const std::vector<std::size_t> order = reorder_levels(levels);
+
+    // Justification of a full line (not the paragraph's last line, nor one
+    // ended by a mandatory break).
+    if (pstyle.align == Align::Justify && box > 0 && !last_of_paragraph && !mandatory && !ellipsized)
+      content += justify(pieces, order, a, b, box - indent - content);
 
     // Metrics: the tallest font on the line (the default style's first font
     // for an empty line).
@@ -675,6 +706,54 @@ struct ParagraphBuilder {
     out.boxes_.push_back(std::move(boxes));
     line_indent_.push_back(indent);
     y += out.lines_.back().height;
+  }
+
+  // Spreads `extra` px over the line's spaces; a line without spaces (CJK,
+  // Thai) gets it between its clusters instead, except inside runs of a
+  // joining script (Arabic keeps its joins). Returns the width added.
+  double justify(std::vector<Piece>& pieces, const std::vector<std::size_t>& order, std::size_t a, std::size_t b,
+                 double extra) const {
+    if (!(extra > 0)) return 0.0;
+    std::size_t last_visible = a;
+    for (std::size_t i = a; i < b; ++i)
+      if (!is_whitespace(para[i])) last_visible = i;
+    std::vector<Glyph*> gaps;
+    for (Piece& p : pieces)
+      for (Glyph& g : p.glyphs)
+        if (!p.synthetic && g.cluster < last_visible && para[g.cluster] == U' ') gaps.push_back(&g);
+    if (gaps.empty()) {
+      // The glyphs before the line's visible end, left to right, without
+      // invisible characters (a zero width space is no cluster of its own
+      // here); a gap after the last glyph of each cluster but the rightmost.
+      std::vector<Glyph*> seq;
+      for (std::size_t k : order)
+        if (!pieces[k].synthetic)
+          for (Glyph& g : pieces[k].glyphs)
+            if (g.cluster <= last_visible && !ignorable_for_coverage(para[g.cluster])) seq.push_back(&g);
+      for (std::size_t i = 0; i + 1 < seq.size(); ++i)
+        if (seq[i]->cluster != seq[i + 1]->cluster && !joins(seq[i]->cluster) && !joins(seq[i + 1]->cluster))
+          gaps.push_back(seq[i]);
+    }
+    if (gaps.empty()) return 0.0;
+    for (Glyph* g : gaps) g->advance += extra / static_cast<double>(gaps.size());
+    return extra;
+  }
+
+  // Is code point i in a script whose letters join (spacing them out would
+  // break the joins)?
+  bool joins(std::size_t i) const {
+    switch (items[item_of[i]].script) {
+      case HB_SCRIPT_ARABIC:
+      case HB_SCRIPT_SYRIAC:
+      case HB_SCRIPT_NKO:
+      case HB_SCRIPT_MONGOLIAN:
+      case HB_SCRIPT_MANDAIC:
+      case HB_SCRIPT_ADLAM:
+      case HB_SCRIPT_HANIFI_ROHINGYA:
+        return true;
+      default:
+        return false;
+    }
   }
 
   void add_boxes(std::vector<Paragraph::ClusterBox>& boxes, const Piece& p,
@@ -751,7 +830,7 @@ struct ParagraphBuilder {
     std::size_t a = 0;
     bool first = true;
     while (a < content_end && !stop) {
-      const double indent = first ? pstyle.first_line_indent : 0.0;
+      const double indent = line_indent(first);
       const double avail = wrap ? pstyle.width - indent : std::numeric_limits<double>::infinity();
       // Greedy: the last opportunity where the line still fits. The line
       // ends somewhere in (best, overflow]; Thai runs there get their
@@ -777,17 +856,16 @@ struct ParagraphBuilder {
           if (action == BreakAction::None) continue;
           double w = visible - indent;
           if (para[i] == 0xAD && !at_end) w += hyphen_width(i);
-          if (w <= avail + kEpsilon || best == 0) {
-            if (w <= avail + kEpsilon) {
-              best = i + 1;
-              best_mandatory = action == BreakAction::Mandatory;
-            }
-            if (action == BreakAction::Mandatory) break;
-          }
+          // A line that does not fit ends in (best, i]: that range gets its
+          // dictionary breaks, even where the only break left is the
+          // mandatory one at the paragraph's end.
           if (w > avail + kEpsilon) {
             overflow = i;
             break;
           }
+          best = i + 1;
+          best_mandatory = action == BreakAction::Mandatory;
+          if (best_mandatory) break;
         }
         measure = wrap && overflow < content_end &&
                   add_dictionary_breaks(para, breaks, best > a ? best : a, overflow + 1, dictionary_done);

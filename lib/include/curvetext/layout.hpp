@@ -70,6 +70,7 @@ struct ParagraphStyle {
   std::string language;         // BCP 47: line breaking tailoring and shaping
   double line_height = 0.0;     // multiple of A - D + gap; 0 is 1
   double line_height_px = 0.0;  // a fixed line advance in px; wins when > 0
+  // px; negative: a hanging indent (the first line at the edge, the others that far in)
   double first_line_indent = 0.0;
   std::vector<double> tab_stops;       // px from the line start, increasing
   double tab_interval = 0.0;           // px between default stops after the last; 0: 8 spaces
