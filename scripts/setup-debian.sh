@@ -20,6 +20,9 @@ packages=(
   libpng-dev
   # tests and benchmarks
   googletest libgtest-dev libbenchmark-dev
+  # fuzzing (scripts/fuzz.sh): clang 14 with its libFuzzer and sanitizer runtimes, and
+  # hb-subset, which cuts the font target's seeds from installed fonts
+  clang libclang-rt-14-dev libharfbuzz-bin
   # the incumbent layout engine the benchmarks compare with
   libpango1.0-dev
   # fonts: the default font (DejaVu Sans) and the test corpus

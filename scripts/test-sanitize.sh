@@ -3,8 +3,9 @@
 # and UndefinedBehaviorSanitizer (-DCURVETEXT_SANITIZE=ON, RelWithDebInfo: -O2 -g,
 # every UBSan check fatal) in its own directory, then runs every test except the
 # full glyph corpus (label mesh_corpus) and the package test (label package,
-# which builds its own unsanitized trees) -- the unit tests, the CLI test and the
-# corpus subset (label corpus_coverage, where present) -- plus three fonts of the
+# which builds its own unsanitized trees) -- the unit tests, the CLI test, the
+# replay of the fuzz corpora (label fuzz, tests/fuzz/) and the corpus subset
+# (label corpus_coverage, where present) -- plus three fonts of the
 # full corpus test (a TrueType, a CFF and a variable font with overlapping
 # contours). Any sanitizer report fails the run. Then a ThreadSanitizer build
 # of the library runs the two-thread test (tests/threads_test.cpp).

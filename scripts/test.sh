@@ -3,7 +3,10 @@
 # format (.clang-format), builds, runs every test;
 # then builds a second tree with AddressSanitizer + UndefinedBehaviorSanitizer
 # (build-sanitize/, scripts/test-sanitize.sh) and runs the unit tests and a
-# subset of the glyph corpus there. CURVETEXT_SANITIZE_TESTS=0 skips that half.
+# subset of the glyph corpus there (and replays the fuzz corpora, tests/fuzz/).
+# CURVETEXT_SANITIZE_TESTS=0 skips that half. Last, scripts/fuzz.sh builds the
+# library and the fuzz targets with clang (build-clang/) and runs each target
+# for CURVETEXT_FUZZ_SECONDS (default 10); CURVETEXT_FUZZ_SECONDS=0 skips it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup-debian.sh
@@ -13,5 +16,8 @@ scripts/build.sh -DCURVETEXT_BUILD_TESTS=ON -DCURVETEXT_BUILD_BENCH=ON
 ctest --test-dir "${BUILD_DIR:-build}" --output-on-failure -j"${JOBS:-2}" --timeout 900 || status=1
 if [ "${CURVETEXT_SANITIZE_TESTS:-1}" != 0 ]; then
   scripts/test-sanitize.sh || status=1
+fi
+if [ "${CURVETEXT_FUZZ_SECONDS:-10}" != 0 ]; then
+  scripts/fuzz.sh "${CURVETEXT_FUZZ_SECONDS:-10}" || status=1
 fi
 exit $status

@@ -24,6 +24,16 @@ struct Value {
   int line = 1;
   int column = 1;
 
+  // Declared here, defined where Value is complete: `object` holds pairs of
+  // Value, which clang (with libstdc++) refuses to destroy or copy inside
+  // Value's own definition.
+  Value();
+  Value(const Value&);
+  Value(Value&&) noexcept;
+  Value& operator=(const Value&);
+  Value& operator=(Value&&) noexcept;
+  ~Value();
+
   // Member by key, or nullptr.
   const Value* find(std::string_view key) const;
   // "line L, column C"

@@ -877,7 +877,10 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
       // (their outcomes are unpredictable; most pairs are rejected by their
       // boxes alone).
       thread_local std::vector<double> box_sides;
-      const auto [min_x, max_x, min_y, max_y] = columns<4>(box_sides, count);
+      // Named pointers, not a structured binding: the lambda below captures
+      // them, which clang before 16 does not allow for bindings.
+      const auto sides = columns<4>(box_sides, count);
+      double *const min_x = sides[0], *const max_x = sides[1], *const min_y = sides[2], *const max_y = sides[3];
       for (std::size_t k = 0; k < count && !by_partners; ++k) {
         const Box& b = unsorted[k].box;
         min_x[k] = b.min.x;

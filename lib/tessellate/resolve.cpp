@@ -593,7 +593,11 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
   // The ends' heights in either frame, one array each: y, and for rotated
   // rays -x (the rotated frame's y, exact).
   thread_local std::vector<double> heights;
-  const auto [a_y, b_y, a_rotated, b_rotated] = columns<4>(heights, n);
+  // Named pointers, not a structured binding: the lambda below captures
+  // them, which clang before 16 does not allow for bindings.
+  const auto height_columns = columns<4>(heights, n);
+  double *const a_y = height_columns[0], *const b_y = height_columns[1], *const a_rotated = height_columns[2],
+                *const b_rotated = height_columns[3];
   for (std::size_t j = 0; j < n; ++j) {
     a_y[j] = edges[j].a.y;
     b_y[j] = edges[j].b.y;
