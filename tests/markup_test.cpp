@@ -95,7 +95,7 @@ TEST(Markup, SpanAttributes) {
   const TextStyle base = base_style();
   const MarkupText m = parse_markup(
       "<span font_family='DejaVu Serif' size='30px' weight='bold' style='italic' foreground='#00ff00' "
-      "background=\"blue\" underline='single' strikethrough='true' letter_spacing='2.5' "
+      "background=\"blue\" underline='single' strikethrough='true' letter_spacing='2.5' word_spacing='4' "
       "font_features='-liga,smcp' lang='de'>x</span>",
       base);
   ASSERT_EQ(m.spans.size(), 1u);
@@ -111,6 +111,7 @@ TEST(Markup, SpanAttributes) {
   EXPECT_TRUE(s.underline);
   EXPECT_TRUE(s.strikethrough);
   EXPECT_EQ(s.letter_spacing, 2.5);
+  EXPECT_EQ(s.word_spacing, 4.0);
   ASSERT_EQ(s.features.size(), 2u);
   EXPECT_EQ(s.features[0].tag, "liga");
   EXPECT_EQ(s.features[0].value, 0u);

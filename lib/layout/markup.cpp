@@ -309,6 +309,8 @@ class MarkupParser {
         s.strikethrough = boolean(at, key, value);
       } else if (key == "letter_spacing") {
         s.letter_spacing = pixels(at, key, value, -1e4, 1e4);
+      } else if (key == "word_spacing") {
+        s.word_spacing = pixels(at, key, value, -1e4, 1e4);
       } else if (key == "font_features") {
         const std::vector<Feature> features = parse_features(value);
         s.features.insert(s.features.end(), features.begin(), features.end());
@@ -317,7 +319,7 @@ class MarkupParser {
       } else {
         fail(at, "span attribute " + key +
                      " is not supported (known: font_family, size, weight, style, foreground, background, underline, "
-                     "strikethrough, letter_spacing, font_features, lang)");
+                     "strikethrough, letter_spacing, word_spacing, font_features, lang)");
       }
     } catch (const Error& e) {
       if (e.code() == ErrorCode::InvalidText) throw;
