@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Full glyph corpus: every glyph of every face of fonts-noto-core, the first
-# face of Noto Sans CJK Regular, fonts-urw-base35 (OpenType CFF), DejaVu (core
-# and extra) and Inter variable at wght 100, 400 and 900 goes through
+# Full glyph corpus: every glyph of every face (each face of a collection) of
+# the fonts scripts/setup-debian.sh installs: fonts-noto-core, fonts-noto-cjk
+# (Sans and Serif, Regular and Bold collections), fonts-urw-base35 (OpenType
+# CFF), fonts-freefont-otf, DejaVu (core and extra) and Inter variable at wght
+# 100, 400 and 900 goes through
 # tests/corpus/corpus_run: mesh invariants (area identity...), a coverage
 # comparison with the real renderer against exact nonzero-union coverage at
 # 32 px/em, and a per-glyph time bound (tests/support/glyph_corpus.hpp).
@@ -31,27 +33,36 @@ if ! { cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCURVETEXT_BUILD
 fi
 runner="$build/tests/corpus_run"
 
-# One job per line: FILE|FACE|VARIATIONS
+# One job per line: FILE|FACE|VARIATIONS; every face of each file.
+faces() {
+  local f=$1 n
+  [ -f "$f" ] || { echo "$f|0|"; return; }  # (named as missing below)
+  n=$("$runner" --font "$f" --face-count yes)
+  for ((k = 0; k < n; ++k)); do echo "$f|$k|"; done
+}
 list="$logs/jobs.txt"
 {
   # fonts-noto-core's own files: the directory also holds other packages'
   # fonts (NotoColorEmoji.ttf from fonts-noto-color-emoji, bitmaps only).
   if dpkg-query -L fonts-noto-core >/dev/null 2>&1; then
-    dpkg-query -L fonts-noto-core | grep -E '^/usr/share/fonts/truetype/noto/.*\.ttf$' | sort | while read -r f; do echo "$f|0|"; done
+    dpkg-query -L fonts-noto-core | grep -E '^/usr/share/fonts/truetype/noto/.*\.ttf$' | sort | while read -r f; do faces "$f"; done
   else
     for f in /usr/share/fonts/truetype/noto/*.ttf; do
-      [ "$(basename "$f")" = NotoColorEmoji.ttf ] || echo "$f|0|"
+      [ "$(basename "$f")" = NotoColorEmoji.ttf ] || faces "$f"
     done
   fi
-  echo "/usr/share/fonts/opentype/noto/NotoSansCJK-Regular.ttc|0|"
-  for f in /usr/share/fonts/opentype/urw-base35/*.otf; do echo "$f|0|"; done
-  for f in /usr/share/fonts/truetype/dejavu/*.ttf; do echo "$f|0|"; done
+  for w in Sans Serif; do
+    for s in Regular Bold; do faces "/usr/share/fonts/opentype/noto/Noto${w}CJK-$s.ttc"; done
+  done
+  for f in /usr/share/fonts/opentype/urw-base35/*.otf; do faces "$f"; done
+  for f in /usr/share/fonts/opentype/freefont/*.otf; do faces "$f"; done
+  for f in /usr/share/fonts/truetype/dejavu/*.ttf; do faces "$f"; done
   for w in 100 400 900; do echo "/usr/share/fonts/truetype/inter-vf/Inter.var.ttf|0|wght=$w"; done
 } >"$list"
 missing=$(cut -d'|' -f1 "$list" | sort -u | while read -r f; do [ -f "$f" ] || echo "$f"; done)
 if [ -n "$missing" ]; then
-  echo "corpus: missing font files (install fonts-noto-core fonts-noto-cjk fonts-urw-base35 fonts-dejavu-core" \
-       "fonts-dejavu-extra fonts-inter-variable):" >&2
+  echo "corpus: missing font files (install fonts-noto-core fonts-noto-cjk fonts-urw-base35 fonts-freefont-otf" \
+       "fonts-dejavu-core fonts-dejavu-extra fonts-inter-variable):" >&2
   echo "$missing" >&2
   exit 2
 fi

@@ -28,6 +28,8 @@ packages=(
   # fonts: the default font (DejaVu Sans) and the test corpus
   fonts-dejavu-core fonts-dejavu-extra fonts-noto-core fonts-noto-cjk fonts-urw-base35
   fonts-inter-variable
+  # more CFF (OpenType) outlines for the corpus: FreeSerif had a glyph meshed short of its area
+  fonts-freefont-otf
   # a colour bitmap (CBDT) emoji face: drawn from its bitmaps, through fallback and by name
   fonts-noto-color-emoji
   # fontTools, to regenerate the test fonts in fonts/test (tests/fixtures/make_*test_fonts.py)

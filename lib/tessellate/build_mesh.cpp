@@ -13,11 +13,14 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <map>
+#include <new>
 #include <optional>
 #include <set>
 #include <span>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -80,7 +83,9 @@ bool needs_simplifying(const Ring& ring) {
 }
 
 // One pass of local simplifications; returns true when something changed.
-bool simplify_pass(Ring& ring) {
+// `approximated` is set when a conic or a spike within the flatness
+// tolerance, not exactly flat, was made straight (the area changes).
+bool simplify_pass(Ring& ring, bool& approximated) {
   bool changed = false;
   const double merge2 = tolerance::kMergeDistanceFontUnits * tolerance::kMergeDistanceFontUnits;
   // Zero-length pieces (repeated points, conics that return to their start).
@@ -109,6 +114,7 @@ bool simplify_pass(Ring& ring) {
   for (std::size_t i = 0; i < ring.size(); ++i) {
     Piece& p = ring[i];
     if (p.conic && nearly_flat(p.a, p.control, ring_end(ring, i))) {
+      approximated = approximated || orient2d(p.a, p.control, ring_end(ring, i)) != 0;
       p.conic = false;
       p.weight = 1.0;
       changed = true;
@@ -128,7 +134,9 @@ bool simplify_pass(Ring& ring) {
       // change where j ends; leave that pair to the next pass.
       if (ring[i].conic || ring[j].conic || drop[i] || drop[j] || drop[after_j]) continue;
       const Vec2 a = ring[i].a, b = ring[j].a, c = ring_end(ring, j);
-      if (orient2d(a, b, c) == 0 || folds_back(b - a, c - b)) {
+      const int turn = orient2d(a, b, c);
+      if (turn == 0 || folds_back(b - a, c - b)) {
+        approximated = approximated || turn != 0;
         drop[j] = 1;  // the piece starting at b disappears; piece i now ends at c
         any_dropped = true;
       }
@@ -262,8 +270,10 @@ void recycle_rings(std::vector<Ring>& rings) {
   rings.clear();
 }
 
-bool clean_rings(const Outline& outline, double cubic_tolerance, std::vector<Ring>& rings, bool split_repeated) {
+bool clean_rings(const Outline& outline, double cubic_tolerance, std::vector<Ring>& rings, bool split_repeated,
+                 bool* approximated) {
   recycle_rings(rings);
+  bool approximated_any = false;
   thread_local std::vector<Segment> quadratics;  // scratch: one cubic's replacement
   // Outline::is_finite's test, made here on the points as they are read
   // (a pass of its own over the outline cost more): x * 0 is 0 for finite x
@@ -304,7 +314,7 @@ bool clean_rings(const Outline& outline, double cubic_tolerance, std::vector<Rin
     // adversarial input, where leftovers are handled by the ear clipper.
     // (The first pass's tests in one loop: the usual ring needs no pass.)
     if (ring.size() >= 2 && needs_simplifying(ring)) {
-      for (int pass = 0; pass < 16 && ring.size() >= 2 && simplify_pass(ring); ++pass) {
+      for (int pass = 0; pass < 16 && ring.size() >= 2 && simplify_pass(ring, approximated_any); ++pass) {
       }
     }
     // Split after simplifying: simplification only deletes vertices, so it
@@ -331,7 +341,43 @@ bool clean_rings(const Outline& outline, double cubic_tolerance, std::vector<Rin
     }
     recycle_ring(std::move(ring));  // (when not kept)
   }
+  if (approximated != nullptr) *approximated = approximated_any;
   return zero == 0.0 && weights_ok;
+}
+
+// --- Coordinates -------------------------------------------------------------------
+
+namespace {
+
+int point_count(const Segment& s) { return s.kind == Segment::Kind::Line ? 2 : s.kind == Segment::Kind::Conic ? 3 : 4; }
+
+}  // namespace
+
+bool flush_tiny_coordinates(const Outline& outline, Outline& flushed, double& largest) {
+  largest = 0.0;
+  double smallest = std::numeric_limits<double>::infinity();
+  for (const Contour& contour : outline.contours()) {
+    for (const Segment& s : contour.segments) {
+      for (int k = 0; k < point_count(s); ++k) {
+        for (const double c : {std::fabs(s.p[k].x), std::fabs(s.p[k].y)}) {
+          largest = std::fmax(largest, c);
+          if (c > 0.0) smallest = std::fmin(smallest, c);
+        }
+      }
+    }
+  }
+  const double flush = std::fmax(tolerance::kFlushCoordinateRelative * largest, tolerance::kFlushCoordinateAbsolute);
+  if (!(smallest < flush)) return false;
+  flushed = outline;
+  for (Contour& contour : flushed.contours()) {
+    for (Segment& s : contour.segments) {
+      for (int k = 0; k < point_count(s); ++k) {
+        if (std::fabs(s.p[k].x) < flush) s.p[k].x = 0.0;
+        if (std::fabs(s.p[k].y) < flush) s.p[k].y = 0.0;
+      }
+    }
+  }
+  return true;
 }
 
 // --- Hull separation --------------------------------------------------------------
@@ -625,7 +671,17 @@ bool crossing_parameters(const Vec2* p, int np, double wp, const Vec2* q, int nq
 constexpr std::size_t kAllPairsLimit = 64;
 static_assert(kAllPairsLimit <= 64, "the all-pairs test reads one 64-bit block per piece");
 
-bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_crossings) {
+std::size_t mesh_work_budget(std::size_t pieces) {
+  return tolerance::kMeshWorkPerPiece * pieces + tolerance::kMeshWorkBase;
+}
+
+void work_budget_exceeded(const char* stage, std::size_t used, std::size_t budget) {
+  throw Error(ErrorCode::Geometry, std::string("build_mesh: ") + stage + " needs more than its work budget (" +
+                                       std::to_string(used) + " > " + std::to_string(budget) +
+                                       "): the outline is too degenerate to mesh");
+}
+
+bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_crossings, std::size_t max_pieces) {
   // A piece's hull with what the sweep needs, copied out of the rings so the
   // pair loop reads one compact array.
   struct HullRef {
@@ -1083,6 +1139,9 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
       rings[r].swap(next);
       recycle_ring(std::move(next));
     }
+    std::size_t pieces = 0;
+    for (const Ring& ring : rings) pieces += ring.size();
+    if (pieces > max_pieces) work_budget_exceeded("hull separation", pieces, max_pieces);
   }
   if (crossing_split) *crossing = true;
   return false;  // passes used up right after splitting: not known to be separated
@@ -1329,15 +1388,23 @@ bool any_ring_repeats_a_vertex(const std::vector<detail::Ring>& rings) {
 // through a point twice where it splits two of its pieces at their crossing;
 // looking for repeats before resolving would build such glyphs twice, about
 // one in 25 of Inter's.) Returns true when the mesh is built.
-bool build_mesh_once(const Outline& outline, const MeshOptions& options, Mesh& mesh, bool split_repeated) {
+bool build_mesh_once(const Outline& outline, const MeshOptions& options, Mesh& mesh, bool split_repeated,
+                     bool& needs_check) {
   using namespace detail;
   // The rings (and their storage) are reused from glyph to glyph.
   thread_local std::vector<Ring> rings;
-  if (!clean_rings(outline, options.cubic_tolerance, rings, split_repeated))
+  bool approximated = false;
+  if (!clean_rings(outline, options.cubic_tolerance, rings, split_repeated, &approximated))
     throw Error(ErrorCode::Geometry, "build_mesh: outline has non-finite coordinates or weights");
+  // Straightening within the flatness tolerance changes the area by up to
+  // 1e-9 of a chord squared, which a sliver's area may not allow.
+  needs_check = needs_check || approximated;
   stage_mark(MeshStage::Clean);
+  std::size_t input_pieces = 0;
+  for (const Ring& ring : rings) input_pieces += ring.size();
+  const std::size_t budget = mesh_work_budget(input_pieces);
   bool crossing = false;
-  const bool separated = separate_hulls(rings, &crossing, kResolveCrossingContours);
+  const bool separated = separate_hulls(rings, &crossing, kResolveCrossingContours, budget);
   stage_mark(MeshStage::Separate);
   // Crossing, overlapping or edge-sharing contours: resolve them into
   // non-crossing rings of the nonzero fill first (skipped for the usual
@@ -1345,17 +1412,21 @@ bool build_mesh_once(const Outline& outline, const MeshOptions& options, Mesh& m
   // Pieces of separated, non-crossing rings meet only at common vertices,
   // which lets sweep_triangulate take their loops when no position repeats.
   bool simple_edges = separated && !crossing;
-  if (kResolveCrossingContours && (crossing || (!separated && rings_cross(rings, false)))) {
+  bool resolved_rings = false;
+  auto resolve = [&](bool hulls_separated) {
     bool settled = false;
-    std::vector<Ring> resolved = resolve_crossings(rings, separated, &settled);
+    std::vector<Ring> resolved = resolve_crossings(rings, hulls_separated, &settled, budget);
     recycle_rings(rings);
     rings = std::move(resolved);
+    resolved_rings = true;
     // The resolved rings do not cross; where the resolver found nothing left
     // in conflict, or the same test as above agrees (and no position repeats:
     // the sweep checks), they take the sweep too.
     bool still_crossing = true;
-    simple_edges = settled || (separate_hulls(rings, &still_crossing) && !still_crossing);
-  }
+    simple_edges = settled || (separate_hulls(rings, &still_crossing, false, budget) && !still_crossing);
+    needs_check = needs_check || !settled;
+  };
+  if (kResolveCrossingContours && (crossing || (!separated && rings_cross(rings, false)))) resolve(separated);
   stage_mark(MeshStage::Resolve);
   mesh.triangles.clear();
   // Polygon loops as vertex indices, grouped by region when nest_rings has
@@ -1463,7 +1534,20 @@ bool build_mesh_once(const Outline& outline, const MeshOptions& options, Mesh& m
   bool swept = false;
   bool repeated = false;
   region_start.clear();
-  if (simple_edges && !rings.empty()) {
+  // Rings that meet at vertices without crossing (the sweep gives up where a
+  // position repeats) may still overlap: two contours through the same two
+  // vertices, one bulging into the other between them, enclose a lens that
+  // no edge test sees. The resolver sorts out any such meeting by windings;
+  // the fast path is then tried again on its rings.
+  for (int attempt = 0; attempt < 2 && simple_edges && !rings.empty() && !swept; ++attempt) {
+    if (attempt == 1) {
+      if (!repeated || resolved_rings || !kResolveCrossingContours) break;
+      resolve(true);
+      stage_mark(MeshStage::Resolve);
+      repeated = false;
+      if (!simple_edges || rings.empty()) break;
+    }
+    piece_count = 0;
     std::size_t lowest_ring = 0, lowest_piece = 0;
     Vec2 lowest = rings[0].empty() ? Vec2{} : rings[0][0].a;
     for (std::size_t r = 0; r < rings.size(); ++r) {
@@ -1490,6 +1574,7 @@ bool build_mesh_once(const Outline& outline, const MeshOptions& options, Mesh& m
     swept = sweep_loops(&repeated);
     stage_mark(MeshStage::Triangles);
   }
+
   if (!swept) {
     if (!split_repeated && any_ring_repeats_a_vertex(rings)) return false;
     nest_rings(rings, region_rings, region_start);
@@ -1510,6 +1595,9 @@ bool build_mesh_once(const Outline& outline, const MeshOptions& options, Mesh& m
     stage_mark(MeshStage::Loops);
   }
   recycle_rings(rings);
+  // The sweep checks its own output (triangle counts, orientations); the
+  // other paths are checked by the caller.
+  needs_check = needs_check || !swept;
   if (!swept) {
     thread_local std::vector<std::array<Vec2, 3>> triangle_points;
     triangle_points.clear();
@@ -1560,13 +1648,46 @@ bool build_mesh_once(const Outline& outline, const MeshOptions& options, Mesh& m
 
 }  // namespace
 
+namespace {
+
+void build_checked_mesh(const Outline& outline, const MeshOptions& options, Mesh& mesh) {
+  bool needs_check = false;
+  if (!build_mesh_once(outline, options, mesh, false, needs_check)) {
+    needs_check = false;
+    build_mesh_once(outline, options, mesh, true, needs_check);
+  }
+  if (!needs_check) return;
+  // Self-check before success: a mesh from the general path (ear clipping, or
+  // crossings resolved with conflicts left) that breaks an invariant is an
+  // error, never a result.
+  const MeshCheck check = check_mesh(mesh, to_quadratic_outline(outline, options.cubic_tolerance));
+  if (!check.ok())
+    throw Error(ErrorCode::Geometry, "build_mesh: the mesh fails its own check (" + check.problems.front() + ")");
+}
+
+}  // namespace
+
 void build_mesh(const Outline& outline, const MeshOptions& options, Mesh& mesh) {
   // (Non-finite coordinates and weights are found while cleaning: clean_rings.)
   if (!(options.cubic_tolerance > 0.0) || !std::isfinite(options.cubic_tolerance)) {
     throw Error(ErrorCode::Geometry, "build_mesh: cubic_tolerance must be positive and finite");
   }
   detail::stage_start();  // (no-op unless built with CURVETEXT_STAGE_TIMING)
-  if (!build_mesh_once(outline, options, mesh, false)) build_mesh_once(outline, options, mesh, true);
+  try {
+    thread_local Outline flushed;  // (storage reused; rarely needed)
+    double largest = 0.0;
+    const bool flush = detail::flush_tiny_coordinates(outline, flushed, largest);
+    if (std::isfinite(largest) && largest > tolerance::kMaxMeshCoordinate) {
+      char message[160];
+      std::snprintf(message, sizeof message, "build_mesh: outline coordinate %.17g is beyond the largest accepted (%g)",
+                    largest, tolerance::kMaxMeshCoordinate);
+      throw Error(ErrorCode::Geometry, message);
+    }
+    build_checked_mesh(flush ? flushed : outline, options, mesh);
+  } catch (const std::bad_alloc&) {
+    mesh = Mesh{};
+    throw Error(ErrorCode::Geometry, "build_mesh: out of memory while meshing the outline");
+  }
 }
 
 Mesh build_mesh(const Outline& outline, const MeshOptions& options) {

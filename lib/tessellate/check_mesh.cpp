@@ -7,14 +7,17 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <new>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "curvetext/curves.hpp"
+#include "curvetext/error.hpp"
 #include "curvetext/mesh.hpp"
 #include "curvetext/tolerances.hpp"
 #include "tessellate/predicates.hpp"
+#include "tessellate/rings.hpp"
 
 namespace curvetext {
 namespace {
@@ -33,7 +36,10 @@ int contour_winding(const Contour& contour, Vec2 p, bool& on_curve) {
   on_curve = false;
   for (const Segment& s : contour.segments) {
     const Vec2 a = s.p[0], b = s.end();
-    if (s.kind == Segment::Kind::Line && detail::point_on_segment(a, b, p)) on_curve = true;
+    // On a line, or on a conic's chord: the chord polygon's count and the
+    // cap's then disagree about which side p is on (p on the chord of a
+    // cap it lies in counts twice), so the caller asks another point.
+    if (detail::point_on_segment(a, b, p)) on_curve = true;
     if (a.y <= p.y) {
       if (b.y > p.y && orient2d(a, b, p) > 0) ++winding;
     } else if (b.y <= p.y && orient2d(a, b, p) < 0) {
@@ -55,14 +61,14 @@ int contour_winding(const Contour& contour, Vec2 p, bool& on_curve) {
   return winding;
 }
 
-// Points on a contour used to ask "where is this contour": its on-curve
-// points and the middles of its pieces.
+// Points on a contour used to ask "where is this contour": the middles of
+// its pieces, then its on-curve points. Middles first: contours that touch
+// (a serif's tip on a neighbouring stroke) meet at on-curve points, where
+// "inside" is decided by rounding.
 std::vector<Vec2> probe_points(const Contour& contour) {
   std::vector<Vec2> probes;
-  for (const Segment& s : contour.segments) {
-    probes.push_back(s.p[0]);
-    probes.push_back(evaluate(s, 0.5));
-  }
+  for (const Segment& s : contour.segments) probes.push_back(evaluate(s, 0.5));
+  for (const Segment& s : contour.segments) probes.push_back(s.p[0]);
   return probes;
 }
 
@@ -191,7 +197,10 @@ double swept_nonzero_area(const Outline& outline, bool& crossing) {
         if (detail::segments_cross_properly(e.a, e.b, f.a, f.b)) {
           crossing = true;
           const Vec2 r = e.b - e.a, q = f.b - f.a;
-          const double t = std::clamp(cross(f.a - e.a, q) / cross(r, q), 0.0, 1.0);
+          // (Nearly parallel edges can cross with a cross product that
+          // rounds to 0: then any height of the pair's common span serves.)
+          double t = cross(f.a - e.a, q) / cross(r, q);
+          t = std::isnan(t) ? 0.5 : std::clamp(t, 0.0, 1.0);
           ys.push_back(e.a.y + r.y * t);
           continue;
         }
@@ -289,7 +298,9 @@ double mesh_area(const Mesh& mesh) {
   return area;
 }
 
-MeshCheck check_mesh(const Mesh& mesh, const Outline& quadratic_outline) {
+namespace {
+
+MeshCheck check_mesh_of(const Mesh& mesh, const Outline& quadratic_outline) {
   MeshCheck check;
   const std::uint32_t npoints = static_cast<std::uint32_t>(mesh.points.size());
   auto valid_index = [&](std::uint32_t i) { return i < npoints; };
@@ -441,6 +452,26 @@ MeshCheck check_mesh(const Mesh& mesh, const Outline& quadratic_outline) {
     }
   }
   return check;
+}
+
+}  // namespace
+
+MeshCheck check_mesh(const Mesh& mesh, const Outline& quadratic_outline) {
+  try {
+    // The outline as build_mesh reads it (tiny coordinates as 0), so that
+    // the areas compared are of the same outline.
+    Outline flushed;
+    double largest = 0.0;
+    const bool flush = detail::flush_tiny_coordinates(quadratic_outline, flushed, largest);
+    if (largest > tolerance::kMaxMeshCoordinate) {
+      MeshCheck check;
+      add_problem(check, "outline coordinates beyond the largest build_mesh accepts");
+      return check;
+    }
+    return check_mesh_of(mesh, flush ? flushed : quadratic_outline);
+  } catch (const std::bad_alloc&) {
+    throw Error(ErrorCode::Geometry, "check_mesh: out of memory while checking the mesh");
+  }
 }
 
 }  // namespace curvetext

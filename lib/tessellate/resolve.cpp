@@ -377,7 +377,9 @@ void line_pair_cuts(const std::vector<Edge>& edges, std::uint32_t i, std::uint32
     const Edge& h = e_first ? f : e;
     const Vec2 r = g.b - g.a, s = h.b - h.a;
     double t = cross(h.a - g.a, s) / cross(r, s);
-    t = std::clamp(t, 0.0, 1.0);
+    // (Nearly parallel lines can cross with a cross product that rounds to
+    // 0: the point is then ill-conditioned anyway; the middle stands in.)
+    t = std::isnan(t) ? 0.5 : std::clamp(t, 0.0, 1.0);
     const Vec2 p = g.a + r * t;
     cut(i, p);
     cut(j, p);
@@ -785,8 +787,14 @@ bool lines_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   return orient2d(shared, p, q) == 0 && dot(p - shared, q - shared) > 0.0;
 }
 
-std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, bool hulls_separated, bool* settled) {
+std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, bool hulls_separated, bool* settled,
+                                    std::size_t max_pieces) {
   std::vector<Edge> edges = edges_of(rings);
+  // Rounded crossing points can make new crossings round after round; the
+  // budget stops an arrangement that keeps growing.
+  auto within_budget = [&](const char* what, std::size_t used) {
+    if (used > max_pieces) work_budget_exceeded(what, used, max_pieces);
+  };
 
   // Conics in conflict with another piece (sharing a point other than a
   // common vertex, or both end points) are halved, and flattened once at the
@@ -822,6 +830,7 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, bool hulls_s
       if (!e.fresh && !f.fresh) return false;
       if (!e.conic && !f.conic) {
         if (!same_ends(e, f)) line_pair_cuts(edges, i, j, cuts);
+        within_budget("crossing resolution (cut points)", cuts.size());
         return false;
       }
       // Hull separation has kept the conics apart from every piece they
@@ -849,10 +858,12 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, bool hulls_s
         conflicts_left = false;
         break;
       }
+      within_budget("crossing resolution (edges)", edges.size());
       continue;
     }
     if (conic_rounds++ == kMaxConicRounds) {
       split_at_cuts(edges, cuts);
+      within_budget("crossing resolution (edges)", edges.size());
       break;
     }
     // Conics first; the lines' cuts are found again in the next round (the
@@ -887,6 +898,7 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, bool hulls_s
       }
     }
     edges.swap(next);
+    within_budget("crossing resolution (edges)", edges.size());
   }
   // (Scratch reused across calls from here on: no allocation once warm.)
   thread_local std::vector<Edge> merged, kept;

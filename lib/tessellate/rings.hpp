@@ -2,6 +2,7 @@
 // the quadratic outline and the polygon loops.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -37,6 +38,12 @@ inline Vec2 ring_end(const Ring& ring, std::size_t i) { return ring[i + 1 == rin
 // Exact signed area of a ring (conic caps included), counter-clockwise > 0.
 double ring_area(const Ring& ring);
 
+// The coordinate rule of tolerance::kFlushCoordinate*: when some coordinate
+// of `outline` is to be read as 0, `flushed` becomes a copy with those
+// coordinates 0 and the result is true. `largest` is set to the largest
+// |coordinate| (infinite or NaN ones aside), for the kMaxMeshCoordinate test.
+bool flush_tiny_coordinates(const Outline& outline, Outline& flushed, double& largest);
+
 // Rings of the outline (cubics replaced by quadratics within
 // `cubic_tolerance`, as to_quadratic_outline does) with zero-length pieces,
 // flat conics, exact collinear runs and spikes removed, each split at its
@@ -47,7 +54,10 @@ double ring_area(const Ring& ring);
 // storage is reused: no allocation per glyph once warm). Returns false when
 // a coordinate or weight is not finite or a weight is not positive
 // (Outline::is_finite): the rings are then not to be used.
-bool clean_rings(const Outline& outline, double cubic_tolerance, std::vector<Ring>& rings, bool split_repeated = true);
+// `approximated`, when given, is set when a piece was straightened that was
+// within the flatness tolerance but not exactly flat (the area changed).
+bool clean_rings(const Outline& outline, double cubic_tolerance, std::vector<Ring>& rings, bool split_repeated = true,
+                 bool* approximated = nullptr);
 
 // True when two hulls (2 points: a segment; 3: a control triangle) share any
 // point other than a common vertex.
@@ -68,7 +78,18 @@ bool hulls_overlap(const Vec2* p, int np, const Vec2* q, int nq);
 // at that point (exact: the point is on the line) instead of the conic being
 // halved towards it; with `split_at_crossings` that too sets `crossing`
 // (contours touching there may overlap without crossing anywhere).
-bool separate_hulls(std::vector<Ring>& rings, bool* crossing = nullptr, bool split_at_crossings = false);
+// `max_pieces`: the work budget (tolerance::kMeshWorkPerPiece); a pass that
+// leaves more pieces than that throws Error(Geometry).
+bool separate_hulls(std::vector<Ring>& rings, bool* crossing = nullptr, bool split_at_crossings = false,
+                    std::size_t max_pieces = SIZE_MAX);
+
+// The work budget of one build from its cleaned rings' piece count
+// (tolerance::kMeshWorkPerPiece, kMeshWorkBase).
+std::size_t mesh_work_budget(std::size_t pieces);
+
+// Throws Error(Geometry) naming the stage whose work (pieces, edges or cut
+// points) went past the budget.
+[[noreturn]] void work_budget_exceeded(const char* stage, std::size_t used, std::size_t budget);
 
 // Position of p against the chord polygon of a ring (nonzero winding).
 Where point_in_ring(const Ring& ring, Vec2 p);
@@ -101,8 +122,9 @@ bool lines_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
 // last look found no conflict left (no crossing, no T-junction, no conic hull
 // overlapping another piece): the rings are then as separate_hulls would
 // leave them, with no crossing.
+// Edges and each round's cut points beyond `max_pieces` throw Error(Geometry).
 std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, bool hulls_separated = false,
-                                    bool* settled = nullptr);
+                                    bool* settled = nullptr, std::size_t max_pieces = SIZE_MAX);
 
 // Nonzero-rule roles of non-crossing rings: which bound the fill, their
 // orientation normalised in place (fill on the left: outer rings

@@ -102,7 +102,8 @@ int usage(const char* message) {
   std::fprintf(stderr,
                "corpus_run: %s\nusage: corpus_run --font FILE [--face N] [--variations wght=100] [--size PX]\n"
                "                  [--first G] [--stride K] [--skip G1,G2] [--hang-seconds S] [--images N]\n"
-               "                  [--stats FILE] [--broken drop-triangle] [--all-images yes]\n",
+               "                  [--stats FILE] [--broken drop-triangle] [--all-images yes]\n"
+               "       corpus_run --font FILE --face-count yes   (prints the number of faces)\n",
                message);
   return 2;
 }
@@ -116,7 +117,7 @@ int main(int argc, char** argv) {
   std::uint32_t first = 0, stride = 1;
   std::set<std::uint32_t> skip;
   std::string stats_path;
-  bool broken = false, all_images = false;
+  bool broken = false, all_images = false, face_count = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (i + 1 >= argc) return usage(("missing value for " + a).c_str());
@@ -139,6 +140,8 @@ int main(int argc, char** argv) {
       images = std::atoi(v);
     else if (a == "--stats")
       stats_path = v;
+    else if (a == "--face-count")
+      face_count = std::string(v) == "yes";
     else if (a == "--all-images")
       all_images = std::string(v) == "yes";
     else if (a == "--broken")
@@ -154,6 +157,10 @@ int main(int argc, char** argv) {
       return usage(("unknown option " + a).c_str());
   }
   if (path.empty()) return usage("--font is required");
+  if (face_count) {  // for the driver: every face of a collection
+    std::printf("%d\n", Font::face_count(path));
+    return 0;
+  }
   if (!(size > 0) || stride == 0) return usage("bad --size or --stride");
   std::snprintf(g_prefix, sizeof g_prefix, "FAIL %s face %d%s%s", path.c_str(), face, variations.empty() ? "" : " ",
                 variations.c_str());

@@ -47,10 +47,16 @@ struct MeshOptions {
 };
 
 // Builds the mesh of the nonzero-winding fill of `outline`. Throws
-// Error(Geometry) on non-finite input or a cubic_tolerance that is not
-// positive and finite. Never hangs: work is bounded by the input size and
-// tolerance::kMaxHullSubdivisionDepth. Thread-safe (scratch memory is per
-// thread).
+// Error(Geometry) on non-finite input, a cubic_tolerance that is not
+// positive and finite, or a coordinate beyond tolerance::kMaxMeshCoordinate;
+// coordinates below tolerance::kFlushCoordinate* are read as 0. Never hangs:
+// hull separation and crossing resolution have a work budget proportional to
+// the input (tolerance::kMeshWorkPerPiece), past which they throw
+// Error(Geometry), and the other stages are bounded by what those leave. No
+// other exception leaves it (running out of memory is Error(Geometry) too).
+// A mesh that does not come from the self-checking sweep is checked with
+// check_mesh before it is returned; one that fails is Error(Geometry).
+// Thread-safe (scratch memory is per thread).
 CURVETEXT_API Mesh build_mesh(const Outline& outline, const MeshOptions& options = {});
 // The same into `mesh`, whose contents are replaced and whose storage is
 // reused (a glyph cache building many meshes in a row allocates less).
@@ -74,7 +80,8 @@ struct MeshCheck {
 
 // `quadratic_outline` must be the outline the mesh was built from after cubic
 // replacement (to_quadratic_outline with the same tolerance). Violations are
-// reported in the result, not thrown.
+// reported in the result, not thrown (Error(Geometry) only when memory runs
+// out). Its coordinates are read as build_mesh reads them (tiny ones as 0).
 CURVETEXT_API MeshCheck check_mesh(const Mesh& mesh, const Outline& quadratic_outline);
 
 }  // namespace curvetext

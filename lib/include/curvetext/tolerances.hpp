@@ -34,6 +34,28 @@ inline constexpr double kMergeDistanceFontUnits = 1e-9;
 // tolerance for recognising a two-line spike that folds back on itself.
 inline constexpr double kConicFlatnessRelative = 1e-9;
 
+// Coordinates build_mesh accepts and how it reads them (outline units). Every
+// product the exact predicates form must be a finite, normal double: incircle's
+// fourth-degree terms reach (2 * kMaxMeshCoordinate)^4 = 1.6e121, far from
+// overflow. A coordinate whose magnitude is below kFlushCoordinateRelative times
+// the outline's largest |coordinate|, or below kFlushCoordinateAbsolute, is read
+// as 0: it is below the rounding of any point the mesher computes from the
+// largest one (at most 1/2048 of its ulp), and a subnormal or tiny value beside large
+// ones makes the predicates' error terms underflow, which drove crossing
+// resolution into endless splitting. Coordinates beyond kMaxMeshCoordinate get
+// Error(Geometry).
+inline constexpr double kMaxMeshCoordinate = 1e30;
+inline constexpr double kFlushCoordinateRelative = 0x1p-64;
+inline constexpr double kFlushCoordinateAbsolute = 1e-30;
+// Work budget of one build_mesh call: hull separation may make at most this
+// many pieces per piece of the cleaned outline (cubics already replaced), plus
+// kMeshWorkBase, and the crossing resolver as many arrangement edges and as
+// many cut points per round. Past it build_mesh throws Error(Geometry) instead
+// of running on (every glyph of every face of the corpus fonts builds within
+// it: docs/corpus.md). Dimensionless counts.
+inline constexpr std::size_t kMeshWorkPerPiece = 64;
+inline constexpr std::size_t kMeshWorkBase = 4096;
+
 // --- Rendering ----------------------------------------------------------------
 // Farthest a vertex may lie from the origin of the coordinates it is drawn
 // in, in pixels at the drawn scale: float32 on the GPU (24-bit significand)
