@@ -8,6 +8,9 @@
 # build-clang/fuzz/<name>/. Fails when a target finds anything.
 #
 #   scripts/fuzz.sh [SECONDS] [TARGET...]
+#   FUZZ_RUNS=ci     a fixed number of inputs per target (below) instead of a
+#                    time, with SECONDS as a cap: the same inputs on any
+#                    machine, so a CI verdict does not depend on its speed
 #   FUZZ_BUILD_DIR   build directory        (default build-clang)
 #   FUZZ_ARGS        extra libFuzzer flags  (e.g. -runs=1000000 -fork=1 -ignore_timeouts=1)
 #   JOBS             parallel build jobs    (default 2)
@@ -38,6 +41,8 @@ subset /usr/share/fonts/truetype/inter-vf/Inter.var.ttf inter-var.ttf
 # Per input: at most 10 s and 2 GiB (a hang or a runaway allocation is a
 # finding, not a stuck run); input sizes as each target needs.
 declare -A max_len=([font]=65536 [outline]=4096 [svg]=8192 [svg_path]=4096 [nurbs_json]=8192 [paragraph]=2048)
+# CI's fixed runs: about 10 s per target on a 2-core machine.
+declare -A ci_runs=([font]=2000 [outline]=2000 [svg]=30000 [svg_path]=20000 [nurbs_json]=30000 [paragraph]=20000)
 declare -A seeds=([font]="fonts/test $fonts" [svg]=tests/fixtures/shapes [nurbs_json]="tests/fixtures/shapes docs/shapes")
 # fontconfig's own leaks at initialisation (tests/sanitizer/lsan.supp says why).
 export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizer/lsan.supp:print_suppressions=0"
@@ -49,7 +54,7 @@ for name in "${targets[@]}"; do
   echo "== fuzz $name: $seconds s"
   # shellcheck disable=SC2086 # seeds and FUZZ_ARGS are lists
   if ! "$build/tests/fuzz/${name}_fuzzer" "$work/corpus" "tests/fuzz/corpus/$name" ${seeds[$name]:-} \
-      -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=2048 -max_len="${max_len[$name]}" \
+      -max_total_time="$seconds" $( [ "${FUZZ_RUNS:-}" = ci ] && echo "-runs=${ci_runs[$name]}" ) -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=2048 -max_len="${max_len[$name]}" \
       -seed=1 -print_final_stats=1 -artifact_prefix="$work/" \
       $( [ -f "$dict" ] && echo "-dict=$dict" ) ${FUZZ_ARGS:-} 2>"$work/log"; then
     status=1
