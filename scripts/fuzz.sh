@@ -9,8 +9,8 @@
 #
 #   scripts/fuzz.sh [SECONDS] [TARGET...]
 #   FUZZ_RUNS=ci     a fixed number of inputs per target (below) instead of a
-#                    time, with SECONDS as a cap: the same inputs on any
-#                    machine, so a CI verdict does not depend on its speed
+#                    time, with SECONDS as a cap: how much is fuzzed does not
+#                    depend on the machine's speed
 #   FUZZ_BUILD_DIR   build directory        (default build-clang)
 #   FUZZ_ARGS        extra libFuzzer flags  (e.g. -runs=1000000 -fork=1 -ignore_timeouts=1)
 #   JOBS             parallel build jobs    (default 2)
