@@ -121,6 +121,48 @@ TEST(MeshLimits, TinyCoordinatesAreReadAsZero) {
   EXPECT_TRUE(found);
 }
 
+// Outlines drawn in tiny units keep their pieces: points are merged only when
+// closer than a fraction of the outline's own size (the fuzz findings
+// svg_path/triangle-1e-9-dropped and outline/empty-mesh-of-a-sliver, both
+// meshed empty while their areas were 5e-19 and 5e-26).
+TEST(MeshLimits, TinyOutlinesKeepTheirArea) {
+  for (const double side : {1e-9, 1e-15, 1e-25}) {  // (below 1e-30 coordinates read as 0)
+    Outline o;
+    o.move_to({0, 0});
+    o.line_to({side, 0});
+    o.conic_to({side, side}, {0, side}, 0.7071067811865476);
+    o.close();
+    const MeshCheck check = build_and_check(o, 0.25);
+    EXPECT_TRUE(check.ok()) << side;
+    EXPECT_GT(check.area_mesh, 0.5 * side * side) << side;
+  }
+  const Outline sliver = parse_outline(R"(
+contour
+ L 0,0 -0x1p-50,0
+ L -0x1p-50,0 0,0x1.008p-33
+ L 0,0x1.008p-33 0,0
+)");
+  const MeshCheck check = build_and_check(sliver, 0.25);
+  EXPECT_TRUE(check.ok());
+  EXPECT_GT(check.area_mesh, 0.0);
+}
+
+// A conic whose weight is near 0 lies on its chord within the flatness
+// tolerance: it is built as a line (a fuzz finding: weight 4.2e-309 gave a
+// curved triangle of zero area after hull separation).
+TEST(MeshLimits, ConicWithTinyWeightIsItsChord) {
+  for (const double weight : {4.17744579392587e-309, 1e-20, 1e-12}) {
+    Outline o;
+    o.move_to({2, 0.5});
+    o.line_to({100, 0});
+    o.conic_to({0, 2}, {122, -15.375}, weight);
+    o.close();
+    const MeshCheck check = build_and_check(o, 0.25);
+    EXPECT_TRUE(check.ok()) << weight;
+    EXPECT_GT(check.area_mesh, 0.0) << weight;
+  }
+}
+
 TEST(MeshLimits, CoordinatesBeyondTheLimitAreRefused) {
   // 1e160: the outline's area (and orient2d's products) overflow to infinity.
   for (const double big : {2 * tolerance::kMaxMeshCoordinate, 1e160}) {
@@ -179,7 +221,7 @@ TEST(MeshLimits, HullSeparationStopsAtItsWorkBudget) {
     o.close();
   }
   std::vector<detail::Ring> rings;
-  ASSERT_TRUE(detail::clean_rings(o, 0.25, rings));
+  ASSERT_TRUE(detail::clean_rings(o, 0.25, 1e-12, rings));
   bool crossing = false;
   EXPECT_THROW(detail::separate_hulls(rings, &crossing, true, 9), Error);
   // Within the real budget the mesh is built and checked.

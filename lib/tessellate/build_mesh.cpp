@@ -46,10 +46,16 @@ namespace detail {
 
 namespace {
 
-bool nearly_flat(Vec2 a, Vec2 control, Vec2 b) {
+// Within the flatness tolerance of its chord. A conic's farthest point from
+// the chord's line, its shoulder, is w / (1 + w) of the control point's
+// distance from that line: a weight near 0 flattens the curve onto its chord
+// wherever the control point is (and its hull would be split into degenerate
+// pieces). The control point's own distance is the bound for w >= 1.
+bool nearly_flat(Vec2 a, Vec2 control, Vec2 b, double weight) {
   const Vec2 chord = b - a;
   const double len2 = dot(chord, chord);
-  return std::fabs(cross(control - a, chord)) <= tolerance::kConicFlatnessRelative * len2 ||
+  const double shoulder = std::fmin(1.0, 2.0 * weight / (1.0 + weight));
+  return std::fabs(cross(control - a, chord)) * shoulder <= tolerance::kConicFlatnessRelative * len2 ||
          orient2d(a, control, b) == 0;
 }
 
@@ -63,8 +69,7 @@ bool folds_back(Vec2 ab, Vec2 bc) {
 // Whether simplify_pass would change the ring: its three tests (a
 // zero-length piece, a flat conic, two lines in a row on one line or folding
 // back) in one loop, for the usual ring, which needs none of them.
-bool needs_simplifying(const Ring& ring) {
-  const double merge2 = tolerance::kMergeDistanceFontUnits * tolerance::kMergeDistanceFontUnits;
+bool needs_simplifying(const Ring& ring, double merge2) {
   const std::size_t n = ring.size();
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t j = i + 1 == n ? 0 : i + 1;
@@ -72,7 +77,7 @@ bool needs_simplifying(const Ring& ring) {
     const Vec2 ab = b - a;
     if (dot(ab, ab) <= merge2) return true;
     if (ring[i].conic) {
-      if (nearly_flat(a, ring[i].control, b)) return true;
+      if (nearly_flat(a, ring[i].control, b, ring[i].weight)) return true;
       continue;
     }
     if (ring[j].conic) continue;
@@ -85,9 +90,8 @@ bool needs_simplifying(const Ring& ring) {
 // One pass of local simplifications; returns true when something changed.
 // `approximated` is set when a conic or a spike within the flatness
 // tolerance, not exactly flat, was made straight (the area changes).
-bool simplify_pass(Ring& ring, bool& approximated) {
+bool simplify_pass(Ring& ring, double merge2, bool& approximated) {
   bool changed = false;
-  const double merge2 = tolerance::kMergeDistanceFontUnits * tolerance::kMergeDistanceFontUnits;
   // Zero-length pieces (repeated points, conics that return to their start).
   // Compacted in place; piece i ends where piece i + 1 starts, which is not
   // yet overwritten (the write index never passes the read index), except
@@ -113,7 +117,7 @@ bool simplify_pass(Ring& ring, bool& approximated) {
   // is again equivalent to its chord (the spike is not part of any region).
   for (std::size_t i = 0; i < ring.size(); ++i) {
     Piece& p = ring[i];
-    if (p.conic && nearly_flat(p.a, p.control, ring_end(ring, i))) {
+    if (p.conic && nearly_flat(p.a, p.control, ring_end(ring, i), p.weight)) {
       approximated = approximated || orient2d(p.a, p.control, ring_end(ring, i)) != 0;
       p.conic = false;
       p.weight = 1.0;
@@ -270,8 +274,8 @@ void recycle_rings(std::vector<Ring>& rings) {
   rings.clear();
 }
 
-bool clean_rings(const Outline& outline, double cubic_tolerance, std::vector<Ring>& rings, bool split_repeated,
-                 bool* approximated) {
+bool clean_rings(const Outline& outline, double cubic_tolerance, double merge_distance, std::vector<Ring>& rings,
+                 bool split_repeated, bool* approximated) {
   recycle_rings(rings);
   bool approximated_any = false;
   thread_local std::vector<Segment> quadratics;  // scratch: one cubic's replacement
@@ -313,8 +317,9 @@ bool clean_rings(const Outline& outline, double cubic_tolerance, std::vector<Rin
     // Each pass shrinks the ring or stops the loop; the cap only matters for
     // adversarial input, where leftovers are handled by the ear clipper.
     // (The first pass's tests in one loop: the usual ring needs no pass.)
-    if (ring.size() >= 2 && needs_simplifying(ring)) {
-      for (int pass = 0; pass < 16 && ring.size() >= 2 && simplify_pass(ring, approximated_any); ++pass) {
+    const double merge2 = merge_distance * merge_distance;
+    if (ring.size() >= 2 && needs_simplifying(ring, merge2)) {
+      for (int pass = 0; pass < 16 && ring.size() >= 2 && simplify_pass(ring, merge2, approximated_any); ++pass) {
       }
     }
     // Split after simplifying: simplification only deletes vertices, so it
@@ -1388,13 +1393,13 @@ bool any_ring_repeats_a_vertex(const std::vector<detail::Ring>& rings) {
 // through a point twice where it splits two of its pieces at their crossing;
 // looking for repeats before resolving would build such glyphs twice, about
 // one in 25 of Inter's.) Returns true when the mesh is built.
-bool build_mesh_once(const Outline& outline, const MeshOptions& options, Mesh& mesh, bool split_repeated,
-                     bool& needs_check) {
+bool build_mesh_once(const Outline& outline, const MeshOptions& options, double merge_distance, Mesh& mesh,
+                     bool split_repeated, bool& needs_check) {
   using namespace detail;
   // The rings (and their storage) are reused from glyph to glyph.
   thread_local std::vector<Ring> rings;
   bool approximated = false;
-  if (!clean_rings(outline, options.cubic_tolerance, rings, split_repeated, &approximated))
+  if (!clean_rings(outline, options.cubic_tolerance, merge_distance, rings, split_repeated, &approximated))
     throw Error(ErrorCode::Geometry, "build_mesh: outline has non-finite coordinates or weights");
   // Straightening within the flatness tolerance changes the area by up to
   // 1e-9 of a chord squared, which a sliver's area may not allow.
@@ -1650,11 +1655,12 @@ bool build_mesh_once(const Outline& outline, const MeshOptions& options, Mesh& m
 
 namespace {
 
-void build_checked_mesh(const Outline& outline, const MeshOptions& options, Mesh& mesh) {
+void build_checked_mesh(const Outline& outline, const MeshOptions& options, double largest, Mesh& mesh) {
+  const double merge_distance = tolerance::kMergeDistanceRelative * largest;
   bool needs_check = false;
-  if (!build_mesh_once(outline, options, mesh, false, needs_check)) {
+  if (!build_mesh_once(outline, options, merge_distance, mesh, false, needs_check)) {
     needs_check = false;
-    build_mesh_once(outline, options, mesh, true, needs_check);
+    build_mesh_once(outline, options, merge_distance, mesh, true, needs_check);
   }
   if (!needs_check) return;
   // Self-check before success: a mesh from the general path (ear clipping, or
@@ -1683,7 +1689,7 @@ void build_mesh(const Outline& outline, const MeshOptions& options, Mesh& mesh) 
                     largest, tolerance::kMaxMeshCoordinate);
       throw Error(ErrorCode::Geometry, message);
     }
-    build_checked_mesh(flush ? flushed : outline, options, mesh);
+    build_checked_mesh(flush ? flushed : outline, options, largest, mesh);
   } catch (const std::bad_alloc&) {
     mesh = Mesh{};
     throw Error(ErrorCode::Geometry, "build_mesh: out of memory while meshing the outline");

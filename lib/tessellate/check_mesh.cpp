@@ -116,30 +116,48 @@ double nonzero_outline_area(const Outline& outline) {
 // (vertices and crossings) the covered width is linear in y, so width at the
 // slab's middle times its height is exact. Each piece's cap is then added
 // back with the sign given by the windings on its two sides in that slab:
-// cap * ([w_left != 0] - [w_right != 0]). That is exact unless another edge
-// runs through the cap (only pieces at crossings, each wrong by less than its
-// cap), so the relative error is below kCapRelative * diag^2 / area per
-// crossing, ~1e-8 for a glyph, well inside kAreaIdentityRelative. Horizontal
-// curved pieces span no slab; their caps (below the same bound) are left out.
+// cap * ([w_left != 0] - [w_right != 0]). That is exact unless another piece
+// enters the cap. So pieces whose control triangle (which holds the cap)
+// overlaps another piece's hull are halved further, until their caps are at
+// most kCapFineRelative * diag^2 (a piece at a crossing always stays in
+// contact); what remains wrong is below that per crossing, ~1e-15 of diag^2,
+// far inside kAreaIdentityRelative of the area floor (1e-6 of diag^2).
+// Horizontal curved pieces span no slab; their caps (below the coarse bound)
+// are left out.
 constexpr double kCapRelative = 1e-8;
+constexpr double kCapFineRelative = 1e-15;
+constexpr int kMaxCoarseDepth = 9;                  // 512 pieces per conic at most
+constexpr int kMaxFineDepth = 40;                   // near contacts
+constexpr std::size_t kMaxFinePiecesPerPiece = 64;  // refinement budget, per coarse piece
 
 struct FlatEdge {
   Vec2 a, b;
-  double cap;  // area between arc and chord, positive when bulging right
-  Box box;
+  double cap;                          // area between arc and chord, positive when bulging right
+  Box box;                             // of the chord
   std::size_t contour = 0, index = 0;  // position in the flattened contour
+  Segment piece;                       // the conic piece (kind Line for lines)
+  int depth = 0;
 };
 
-void flatten_conic(const Segment& s, double cap_limit, int depth, std::vector<FlatEdge>& out) {
-  constexpr int kMaxDepth = 9;  // 512 pieces per conic at most
+FlatEdge flat_edge(const Segment& s, int depth) {
+  FlatEdge e;
+  e.a = s.p[0];
+  e.b = s.end();
   // Area between arc and chord, positive when the arc bulges right of
   // p0 -> p2 (the formula ring_area uses; conic_chord_area's sign is not
   // relied on here).
-  const double cap = conic_area_ratio(s.weight) * 0.5 * cross(s.p[1] - s.p[0], s.p[2] - s.p[0]);
-  if (depth >= kMaxDepth || std::fabs(cap) <= cap_limit) {
-    FlatEdge e{s.p[0], s.p[2], cap, {}, 0, 0};
-    e.box.add(e.a);
-    e.box.add(e.b);
+  e.cap =
+      s.kind == Segment::Kind::Conic ? conic_area_ratio(s.weight) * 0.5 * cross(s.p[1] - s.p[0], s.p[2] - s.p[0]) : 0.0;
+  e.box.add(e.a);
+  e.box.add(e.b);
+  e.piece = s;
+  e.depth = depth;
+  return e;
+}
+
+void flatten_conic(const Segment& s, double cap_limit, int depth, std::vector<FlatEdge>& out) {
+  FlatEdge e = flat_edge(s, depth);
+  if (depth >= kMaxCoarseDepth || std::fabs(e.cap) <= cap_limit) {
     out.push_back(e);
     return;
   }
@@ -148,34 +166,119 @@ void flatten_conic(const Segment& s, double cap_limit, int depth, std::vector<Fl
   flatten_conic(halves.second, cap_limit, depth + 1, out);
 }
 
+// The hull of a flattened piece: its chord, or a conic piece's control triangle.
+int hull_of(const FlatEdge& e, Vec2* hull) {
+  hull[0] = e.a;
+  if (e.cap == 0.0) {
+    hull[1] = e.b;
+    return 2;
+  }
+  hull[1] = e.piece.p[1];
+  hull[2] = e.b;
+  return 3;
+}
+
+// One round of refinement: marks the conic pieces (caps above `fine_limit`)
+// whose hull overlaps another piece's hull. Returns the number marked.
+std::size_t mark_contacts(const std::vector<std::vector<FlatEdge>>& contours, double fine_limit,
+                          std::vector<std::vector<char>>& marks) {
+  struct Ref {
+    Box box;
+    std::size_t c, i;
+  };
+  std::vector<Ref> refs;
+  for (std::size_t c = 0; c < contours.size(); ++c) {
+    marks[c].assign(contours[c].size(), 0);
+    for (std::size_t i = 0; i < contours[c].size(); ++i) {
+      Ref r{contours[c][i].box, c, i};
+      if (contours[c][i].cap != 0.0) r.box.add(contours[c][i].piece.p[1]);
+      refs.push_back(r);
+    }
+  }
+  std::sort(refs.begin(), refs.end(), [](const Ref& x, const Ref& y) { return x.box.min.x < y.box.min.x; });
+  auto refinable = [&](const Ref& r) {
+    const FlatEdge& e = contours[r.c][r.i];
+    return std::fabs(e.cap) > fine_limit && e.depth < kMaxFineDepth;
+  };
+  std::size_t marked = 0;
+  for (std::size_t x = 0; x < refs.size(); ++x) {
+    for (std::size_t y = x + 1; y < refs.size() && refs[y].box.min.x <= refs[x].box.max.x; ++y) {
+      const Ref& r = refs[x];
+      const Ref& q = refs[y];
+      if (!refinable(r) && !refinable(q)) continue;
+      if (!detail::boxes_overlap(r.box, q.box)) continue;
+      Vec2 hr[3], hq[3];
+      const int nr = hull_of(contours[r.c][r.i], hr), nq = hull_of(contours[q.c][q.i], hq);
+      if (!detail::hulls_overlap(hr, nr, hq, nq)) continue;
+      for (const Ref* t : {&r, &q}) {
+        if (refinable(*t) && !marks[t->c][t->i]) {
+          marks[t->c][t->i] = 1;
+          ++marked;
+        }
+      }
+    }
+  }
+  return marked;
+}
+
+// Halves the conic pieces in contact with other pieces until their caps are
+// below `fine_limit` or the budget of pieces is spent.
+void refine_contacts(std::vector<std::vector<FlatEdge>>& contours, double fine_limit, std::size_t budget) {
+  std::vector<std::vector<char>> marks(contours.size());
+  std::size_t total = 0;
+  for (const auto& c : contours) total += c.size();
+  while (total < budget) {
+    const std::size_t marked = mark_contacts(contours, fine_limit, marks);
+    if (marked == 0 || total + marked > budget) return;
+    total += marked;
+    for (std::size_t c = 0; c < contours.size(); ++c) {
+      std::vector<FlatEdge> refined;
+      refined.reserve(contours[c].size());
+      for (std::size_t i = 0; i < contours[c].size(); ++i) {
+        const FlatEdge& e = contours[c][i];
+        if (!marks[c][i]) {
+          refined.push_back(e);
+          continue;
+        }
+        const auto halves = split(e.piece, 0.5);
+        refined.push_back(flat_edge(halves.first, e.depth + 1));
+        refined.push_back(flat_edge(halves.second, e.depth + 1));
+      }
+      contours[c] = std::move(refined);
+    }
+  }
+}
+
 // Nonzero area by the slab sweep; `crossing` is set when two edges meet other
 // than as consecutive pieces of one contour (then only this method is right).
 double swept_nonzero_area(const Outline& outline, bool& crossing) {
   const Box cb = outline.control_box();
   const Vec2 diag = cb.max - cb.min;
   const double cap_limit = kCapRelative * dot(diag, diag);
-  std::vector<FlatEdge> edges;
-  std::vector<std::size_t> contour_size;
+  std::vector<std::vector<FlatEdge>> contours;
   for (const Contour& c : outline.contours()) {
-    const std::size_t first = edges.size();
+    std::vector<FlatEdge>& flat = contours.emplace_back();
     for (const Segment& s : c.segments) {
       if (s.kind == Segment::Kind::Conic) {
-        flatten_conic(s, cap_limit, 0, edges);
+        flatten_conic(s, cap_limit, 0, flat);
       } else {
-        FlatEdge e{s.p[0], s.end(), 0.0, {}, 0, 0};
-        e.box.add(e.a);
-        e.box.add(e.b);
-        edges.push_back(e);
+        flat.push_back(flat_edge(s, 0));
       }
     }
-    edges.erase(std::remove_if(edges.begin() + static_cast<std::ptrdiff_t>(first), edges.end(),
-                               [](const FlatEdge& e) { return e.a == e.b; }),
-                edges.end());
-    for (std::size_t i = first; i < edges.size(); ++i) {
-      edges[i].contour = contour_size.size();
-      edges[i].index = i - first;
+    flat.erase(std::remove_if(flat.begin(), flat.end(), [](const FlatEdge& e) { return e.a == e.b; }), flat.end());
+  }
+  std::size_t coarse = 0;
+  for (const auto& c : contours) coarse += c.size();
+  refine_contacts(contours, kCapFineRelative * dot(diag, diag), kMaxFinePiecesPerPiece * coarse + 4096);
+  std::vector<FlatEdge> edges;
+  std::vector<std::size_t> contour_size;
+  for (const auto& c : contours) {
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      edges.push_back(c[i]);
+      edges.back().contour = contour_size.size();
+      edges.back().index = i;
     }
-    contour_size.push_back(edges.size() - first);
+    contour_size.push_back(c.size());
   }
   // Events: end points and crossing heights.
   std::vector<double> ys;

@@ -245,7 +245,9 @@ void snap_cuts(const std::vector<Edge>& edges, std::vector<Cut>& cuts) {
     all.add(e.b);
   }
   const double extent = std::max(all.max.x - all.min.x, all.max.y - all.min.y);
-  const double eps = std::max(tolerance::kMergeDistanceFontUnits, 1e-12 * extent);
+  const double largest =
+      std::max({std::fabs(all.min.x), std::fabs(all.min.y), std::fabs(all.max.x), std::fabs(all.max.y)});
+  const double eps = tolerance::kMergeDistanceRelative * std::max(extent, largest);
   auto by_x = [](Vec2 a, Vec2 b) { return a.x != b.x ? a.x < b.x : a.y < b.y; };
   struct Loose {
     Vec2 p;

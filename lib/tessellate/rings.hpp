@@ -45,8 +45,8 @@ double ring_area(const Ring& ring);
 bool flush_tiny_coordinates(const Outline& outline, Outline& flushed, double& largest);
 
 // Rings of the outline (cubics replaced by quadratics within
-// `cubic_tolerance`, as to_quadratic_outline does) with zero-length pieces,
-// flat conics, exact collinear runs and spikes removed, each split at its
+// `cubic_tolerance`, as to_quadratic_outline does) with zero-length pieces
+// (ends closer than `merge_distance`), flat conics, exact collinear runs and spikes removed, each split at its
 // repeated vertices into sub-rings that pass through every vertex once
 // (unless split_repeated is false: build_mesh looks for such rings only where
 // they matter); rings without area dropped. Replaces the contents of `rings`,
@@ -56,8 +56,8 @@ bool flush_tiny_coordinates(const Outline& outline, Outline& flushed, double& la
 // (Outline::is_finite): the rings are then not to be used.
 // `approximated`, when given, is set when a piece was straightened that was
 // within the flatness tolerance but not exactly flat (the area changed).
-bool clean_rings(const Outline& outline, double cubic_tolerance, std::vector<Ring>& rings, bool split_repeated = true,
-                 bool* approximated = nullptr);
+bool clean_rings(const Outline& outline, double cubic_tolerance, double merge_distance, std::vector<Ring>& rings,
+                 bool split_repeated = true, bool* approximated = nullptr);
 
 // True when two hulls (2 points: a segment; 3: a control triangle) share any
 // point other than a common vertex.

@@ -26,8 +26,11 @@ inline constexpr double kAreaIdentityRelative = 1e-6;
 inline constexpr double kAreaIdentityFloorOfBox = 1e-6;
 // Deepest de Casteljau subdivision used to separate overlapping curve hulls.
 inline constexpr int kMaxHullSubdivisionDepth = 10;
-// Points closer than this (font units) are merged when building loops.
-inline constexpr double kMergeDistanceFontUnits = 1e-9;
+// Points closer than this fraction of the outline's largest |coordinate| are
+// merged when building loops (dimensionless; 1e-9 font units for a glyph whose
+// coordinates reach 1000). Relative, so that an outline drawn in tiny units
+// (a triangle of side 1e-9) keeps its pieces.
+inline constexpr double kMergeDistanceRelative = 1e-12;
 // A conic whose control point lies closer to its chord's line than this
 // fraction of the chord length is treated as a straight line (dimensionless;
 // the area this ignores is below 1e-9 of the chord length squared). Also the
