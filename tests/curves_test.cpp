@@ -37,6 +37,19 @@ TEST(Conic, AreaRatioMatchesIntegration) {
   EXPECT_NEAR(conic_area_ratio(std::numbers::sqrt2 / 2), std::numbers::pi / 2 - 1, 1e-14);
 }
 
+// Huge weights: the ratio tends to 1 (the curve hugs its legs), also where
+// w * w overflows (it read 0 from w = 1.3e154 on, dropping a conic's cap).
+TEST(Conic, AreaRatioOfHugeWeights) {
+  double previous = conic_area_ratio(1e3);
+  for (double w : {1e6, 1e7 * (1 - 1e-12), 1e7, 1e7 * (1 + 1e-12), 1e100, 1e154, 1e160, 1e300, 1.7e308}) {
+    const double r = conic_area_ratio(w);
+    EXPECT_GE(r, previous) << "w=" << w;
+    EXPECT_LE(r, 1.0) << "w=" << w;
+    EXPECT_GT(r, 1.0 - 1e-10) << "w=" << w;
+    previous = r;
+  }
+}
+
 Outline circle(Vec2 c, double r) {
   const double w = std::numbers::sqrt2 / 2;
   Outline o;

@@ -163,6 +163,24 @@ TEST(MeshLimits, ConicWithTinyWeightIsItsChord) {
   }
 }
 
+// A conic whose weight is so large that its shoulder is within the flatness
+// tolerance of its control point is built as its two legs (a fuzz finding:
+// weight 7.8e143 split into a curved triangle of zero area).
+TEST(MeshLimits, ConicWithHugeWeightIsItsLegs) {
+  for (const double weight : {7.773885550103301e+143, 1e30, 1e300}) {
+    Outline o;
+    o.move_to({-0.125, 0});
+    o.conic_to({-0.0625, -31.9375}, {0, -1}, weight);
+    o.close();
+    o.move_to({119, -168.625});
+    o.line_to({0, 0});
+    o.close();
+    const MeshCheck check = build_and_check(o, 0.25);
+    EXPECT_TRUE(check.ok()) << weight;
+    EXPECT_GT(check.area_mesh, 0.0) << weight;
+  }
+}
+
 TEST(MeshLimits, CoordinatesBeyondTheLimitAreRefused) {
   // 1e160: the outline's area (and orient2d's products) overflow to infinity.
   for (const double big : {2 * tolerance::kMaxMeshCoordinate, 1e160}) {

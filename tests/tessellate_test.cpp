@@ -897,6 +897,51 @@ TEST(Crossing, ManySegmentsThroughOnePoint) {
   EXPECT_GT(check.area_outline, 60.0);
 }
 
+// check_mesh's reference where pieces meet other than at vertices: a lens of
+// two parabolas on one chord (their chords coincide), beside a far square
+// that makes the lens's caps smaller than the coarse flattening's bound; and a
+// thin half-ellipse crossed by a thin triangle (both fuzz findings: the lens
+// was given the negative of its area, the ellipse 1.2e-6 of it too much).
+TEST(CheckMesh, ReferenceWherePiecesTouch) {
+  Outline lens;
+  lens.move_to({0, 0});
+  lens.conic_to({0.5, -0.5}, {1, 0});
+  lens.conic_to({0.5, 0.5}, {0, 0});
+  lens.close();
+  add_polygon(lens, square(1e4, 1e4, 1, true));
+  build_and_check(lens, 1.0 / 3.0 + 1.0);
+  // Half an ellipse of radii 40 and 40,802 (as SVG scales a 20 x 20,401 arc
+  // that must reach 80 units), and a triangle through it.
+  Outline crossed;
+  const double w = std::sqrt(0.5);
+  crossed.move_to({30, 50});
+  crossed.conic_to({30, 50 + 40802}, {-10, 50 + 40802}, w);
+  crossed.conic_to({-50, 50 + 40802}, {-50, 50}, w);
+  crossed.close();
+  add_polygon(crossed, {{3, 240010}, {0, 0}, {1, 5}});
+  const Mesh mesh = build_mesh(crossed);
+  const MeshCheck check = check_mesh(mesh, crossed);
+  for (const std::string& p : check.problems) ADD_FAILURE() << p;
+  // Half the ellipse, plus the triangle's parts outside it (above the arc's
+  // top at y = 40,852 and the sliver below y = 50), from the mesh's own area
+  // to 1e-9: the mesh and the reference agree.
+  EXPECT_NEAR(check.area_outline, check.area_mesh, 1e-9 * check.area_outline);
+  // A parabola on a horizontal chord (cap 66.7, below the coarse bound of a
+  // box 250,000 tall) in an outline crossed by a tall triangle away from the
+  // cap (no refinement near contacts): the reference
+  // lost its cap (a horizontal chord spans no slab).
+  Outline flat_chord;
+  flat_chord.move_to({40, 10});
+  flat_chord.conic_to({70, 15}, {80, 10});
+  flat_chord.line_to({80, 0});
+  flat_chord.line_to({40, 0});
+  flat_chord.close();
+  add_polygon(flat_chord, {{30, 1}, {42, 2}, {-1e5, 250000}});
+  const Mesh flat_mesh = build_mesh(flat_chord);
+  const MeshCheck flat_check = check_mesh(flat_mesh, flat_chord);
+  for (const std::string& p : flat_check.problems) ADD_FAILURE() << p;
+}
+
 TEST(Crossing, RandomSelfIntersectingPolygons) {
   // Random polygons on a small integer grid: crossings, collinear overlaps,
   // repeated points and vertices on edges are all common.

@@ -83,6 +83,9 @@ double conic_area_ratio(double w) {
     const double k = 1.0 - w * w;  // ellipse arc
     return (w / k) * (std::acos(w) / std::sqrt(k) - w);
   }
+  // Far from 1, w * w overflows (past 1.3e154): there r = 1 - (ln 2w - 1) / w^2
+  // + O(ln w / w^4), whose next terms are below 1e-26 from w = 1e7 on.
+  if (w > 1e7) return 1.0 - (std::log(2.0) + std::log(w) - 1.0) / w / w;
   const double k = w * w - 1.0;  // hyperbola arc
   return (w / k) * (w - std::acosh(w) / std::sqrt(k));
 }

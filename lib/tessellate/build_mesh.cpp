@@ -59,6 +59,17 @@ bool nearly_flat(Vec2 a, Vec2 control, Vec2 b, double weight) {
          orient2d(a, control, b) == 0;
 }
 
+// A conic of weight above 1 whose shoulder, (m - c) / (1 + w) from its
+// control point c (m the chord's middle), is within the flatness tolerance of
+// c: the curve is its two legs (a huge weight would split into hulls of zero
+// area).
+bool hugs_its_legs(const Segment& s) {
+  if (!(s.weight > 1.0)) return false;
+  const Vec2 chord = s.p[2] - s.p[0], to_middle = 0.5 * (s.p[0] + s.p[2]) - s.p[1];
+  const double reach = tolerance::kConicFlatnessRelative * (1.0 + s.weight);
+  return dot(to_middle, to_middle) <= reach * reach * dot(chord, chord);
+}
+
 // Two consecutive lines with directions ab and bc that go back along
 // themselves: a spike, within the flatness tolerance.
 bool folds_back(Vec2 ab, Vec2 bc) {
@@ -289,6 +300,13 @@ bool clean_rings(const Outline& outline, double cubic_tolerance, double merge_di
   auto add_piece = [&](Ring& ring, const Segment& s) {
     // Written in place (a temporary's copy would reload its bool and int
     // fields in wider loads, which stall; see append() in lib/curves/outline.cpp).
+    if (s.kind == Segment::Kind::Conic && hugs_its_legs(s)) {
+      zero += finite_term(s.p[0]) + finite_term(s.p[1]);
+      ring.emplace_back().a = canonical(s.p[0]);
+      ring.emplace_back().a = canonical(s.p[1]);
+      approximated_any = true;
+      return;
+    }
     Piece& p = ring.emplace_back();
     p.a = canonical(s.p[0]);
     zero += finite_term(s.p[0]) + finite_term(s.p[1]);  // a line's start and end, a conic's start and control

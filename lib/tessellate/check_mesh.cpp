@@ -122,8 +122,8 @@ double nonzero_outline_area(const Outline& outline) {
 // most kCapFineRelative * diag^2 (a piece at a crossing always stays in
 // contact); what remains wrong is below that per crossing, ~1e-15 of diag^2,
 // far inside kAreaIdentityRelative of the area floor (1e-6 of diag^2).
-// Horizontal curved pieces span no slab; their caps (below the coarse bound)
-// are left out.
+// Curved pieces with a horizontal chord are halved (a horizontal chord spans
+// no slab).
 constexpr double kCapRelative = 1e-8;
 constexpr double kCapFineRelative = 1e-15;
 constexpr int kMaxCoarseDepth = 9;                  // 512 pieces per conic at most
@@ -157,7 +157,9 @@ FlatEdge flat_edge(const Segment& s, int depth) {
 
 void flatten_conic(const Segment& s, double cap_limit, int depth, std::vector<FlatEdge>& out) {
   FlatEdge e = flat_edge(s, depth);
-  if (depth >= kMaxCoarseDepth || std::fabs(e.cap) <= cap_limit) {
+  // A horizontal chord spans no slab, so its cap would be lost: split it.
+  const bool horizontal = e.a.y == e.b.y && e.cap != 0.0;
+  if (depth >= kMaxCoarseDepth || (std::fabs(e.cap) <= cap_limit && !horizontal)) {
     out.push_back(e);
     return;
   }
@@ -178,8 +180,18 @@ int hull_of(const FlatEdge& e, Vec2* hull) {
   return 3;
 }
 
+// Chords on one line that share more than a point: the slab sweep would put
+// an artificial winding between them (zero width), which a cap on either
+// side would take for its own.
+bool chords_overlap(const FlatEdge& e, const FlatEdge& f) {
+  if (orient2d(e.a, e.b, f.a) != 0 || orient2d(e.a, e.b, f.b) != 0) return false;
+  auto inside = [](Vec2 a, Vec2 b, Vec2 p) { return detail::point_on_segment(a, b, p) && p != a && p != b; };
+  return inside(e.a, e.b, f.a) || inside(e.a, e.b, f.b) || inside(f.a, f.b, e.a) || inside(f.a, f.b, e.b) ||
+         (e.a == f.a && e.b == f.b) || (e.a == f.b && e.b == f.a);
+}
+
 // One round of refinement: marks the conic pieces (caps above `fine_limit`)
-// whose hull overlaps another piece's hull. Returns the number marked.
+// whose hull overlaps another piece's hull, or whose chord overlaps another's. Returns the number marked.
 std::size_t mark_contacts(const std::vector<std::vector<FlatEdge>>& contours, double fine_limit,
                           std::vector<std::vector<char>>& marks) {
   struct Ref {
@@ -209,7 +221,7 @@ std::size_t mark_contacts(const std::vector<std::vector<FlatEdge>>& contours, do
       if (!detail::boxes_overlap(r.box, q.box)) continue;
       Vec2 hr[3], hq[3];
       const int nr = hull_of(contours[r.c][r.i], hr), nq = hull_of(contours[q.c][q.i], hq);
-      if (!detail::hulls_overlap(hr, nr, hq, nq)) continue;
+      if (!detail::hulls_overlap(hr, nr, hq, nq) && !chords_overlap(contours[r.c][r.i], contours[q.c][q.i])) continue;
       for (const Ref* t : {&r, &q}) {
         if (refinable(*t) && !marks[t->c][t->i]) {
           marks[t->c][t->i] = 1;
