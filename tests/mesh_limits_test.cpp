@@ -181,6 +181,35 @@ TEST(MeshLimits, ConicWithHugeWeightIsItsLegs) {
   }
 }
 
+// A path that runs over itself n times: its n copies of each edge all meet,
+// n^2 / 2 pairs. A few hundred runs are merged into one edge each and built;
+// 8,192 runs (32,768 segments; 65,536 took over 300 s) stop at the pair-test
+// budget with Error(Geometry).
+TEST(MeshLimits, RetracedPathIsBuiltOrRefusedInBoundedTime) {
+  auto retraced = [](int runs) {
+    Outline o;
+    o.move_to({0, 0});
+    for (int k = 0; k < runs; ++k) {
+      o.line_to({1000, 0});
+      o.line_to({1000, 1000});
+      o.line_to({0, 1000});
+      o.line_to({0, 0});
+    }
+    o.close();
+    return o;
+  };
+  const MeshCheck check = build_and_check(retraced(300), 0.25);
+  EXPECT_TRUE(check.ok());
+  EXPECT_DOUBLE_EQ(check.area_mesh, 1e6);
+  try {
+    (void)build_mesh(retraced(8192));
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::Geometry);
+    EXPECT_NE(std::string(e.what()).find("pair tests"), std::string::npos) << e.what();
+  }
+}
+
 TEST(MeshLimits, CoordinatesBeyondTheLimitAreRefused) {
   // 1e160: the outline's area (and orient2d's products) overflow to infinity.
   for (const double big : {2 * tolerance::kMaxMeshCoordinate, 1e160}) {

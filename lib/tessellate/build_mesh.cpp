@@ -746,6 +746,11 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
   // not split and overlapped nothing before has not changed.
   thread_local std::vector<std::uint64_t> overlaps, partners;
   thread_local std::vector<std::uint32_t> child_first;
+  // Pair tests, against their budget: coincident pieces all meet.
+  std::size_t pairs_tested = 0;
+  const std::size_t pair_budget = max_pieces == SIZE_MAX
+                                      ? SIZE_MAX
+                                      : tolerance::kMeshPairTestsPerPiece * (max_pieces / tolerance::kMeshWorkPerPiece);
   // (The pieces' `fresh` flags are not read in the first pass, which tests
   // every pair; a pass that splits sets them all for the next one.)
   for (int pass = 0; pass <= tolerance::kMaxHullSubdivisionDepth; ++pass) {
@@ -850,6 +855,8 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
         return next_bit | previous_bit;
       };
       auto test_pair = [&](const HullRef& ri, const HullRef& rj) {
+        if (++pairs_tested > pair_budget)
+          work_budget_exceeded("hull separation (pair tests)", pairs_tested, pair_budget);
         const bool ci = ri.n == 3, cj = rj.n == 3;
         if (!ci && !cj) {
           if (!cross_seen && lines_cross(ri.hull[0], ri.hull[1], rj.hull[0], rj.hull[1])) {

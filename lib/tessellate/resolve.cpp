@@ -227,7 +227,7 @@ std::vector<Edge> edges_of(const std::vector<Ring>& rings) {
 // differ in their last bits; left apart they make slivers and zero-length
 // loops. Cut points closer than the merge distance to an end point of any
 // edge become that end point, and to each other the first of them (the merge
-// distance is 1e-9 font units or 1e-12 of the outline's size, far above the
+// distance is 1e-12 of the outline's size or largest coordinate, far above the
 // rounding error of a crossing of lines that are not nearly parallel).
 struct Cut {
   std::uint32_t edge;
@@ -791,7 +791,11 @@ bool lines_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
 
 std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, bool hulls_separated, bool* settled,
                                     std::size_t max_pieces) {
-  std::vector<Edge> edges = edges_of(rings);
+  // Coincident edges (a path that retraces itself, contours sharing edges)
+  // are merged first: n runs over one edge are one edge with a count, not
+  // n^2 / 2 pairs to cut.
+  std::vector<Edge> edges;
+  merge_coincident(edges_of(rings), edges);
   // Rounded crossing points can make new crossings round after round; the
   // budget stops an arrangement that keeps growing.
   auto within_budget = [&](const char* what, std::size_t used) {

@@ -79,7 +79,9 @@ bool hulls_overlap(const Vec2* p, int np, const Vec2* q, int nq);
 // halved towards it; with `split_at_crossings` that too sets `crossing`
 // (contours touching there may overlap without crossing anywhere).
 // `max_pieces`: the work budget (tolerance::kMeshWorkPerPiece); a pass that
-// leaves more pieces than that throws Error(Geometry).
+// leaves more pieces than that, or more pair tests than
+// tolerance::kMeshPairTestsPerPiece per kMeshWorkPerPiece of it, throws
+// Error(Geometry).
 bool separate_hulls(std::vector<Ring>& rings, bool* crossing = nullptr, bool split_at_crossings = false,
                     std::size_t max_pieces = SIZE_MAX);
 

@@ -58,6 +58,10 @@ inline constexpr double kFlushCoordinateAbsolute = 1e-30;
 // it: docs/corpus.md). Dimensionless counts.
 inline constexpr std::size_t kMeshWorkPerPiece = 64;
 inline constexpr std::size_t kMeshWorkBase = 4096;
+// Hull separation may test at most this many pairs of pieces whose boxes meet
+// per (kMeshWorkPerPiece) unit of that budget, summed over its passes: a path
+// that runs over itself n times has n^2 / 2 such pairs (dimensionless).
+inline constexpr std::size_t kMeshPairTestsPerPiece = 1024;
 
 // --- Rendering ----------------------------------------------------------------
 // Farthest a vertex may lie from the origin of the coordinates it is drawn
