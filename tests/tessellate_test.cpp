@@ -15,6 +15,7 @@
 
 #include "curvetext/curves.hpp"
 #include "curvetext/error.hpp"
+#include "curvetext/tolerances.hpp"
 #include "curvetext/font.hpp"
 #include "curvetext/mesh.hpp"
 #include "curvetext/outline.hpp"
@@ -1289,6 +1290,41 @@ TEST(DelaunayFlipsManifold, AgreesWithTheGeneralFlips) {
     }
   }
   EXPECT_GE(large_compared, 15);
+}
+
+}  // namespace
+}  // namespace curvetext
+
+namespace curvetext {
+namespace {
+
+// A star polygon {n/2}: every edge crosses its neighbours' neighbours, so
+// ear tests keep failing and each vertex goes by the best-effort fallback,
+// after a full turn of tests: O(n^3) vertex visits. The budget stops it.
+std::vector<Vec2> crossing_star(int n) {
+  std::vector<Vec2> loop;
+  for (int k = 0; k < n; ++k) {
+    const double angle = 2.0 * 3.141592653589793 * ((2 * k) % n) / n;
+    loop.push_back({std::round(1e4 * std::cos(angle)), std::round(1e4 * std::sin(angle))});
+  }
+  return loop;
+}
+
+TEST(EarClip, StopsAtItsWorkBudget) {
+  std::vector<std::array<Vec2, 3>> triangles;
+  const std::vector<Vec2> small = crossing_star(101);
+  (void)detail::ear_clip(small, triangles);  // (best effort; finishes)
+  EXPECT_FALSE(triangles.empty());
+  const std::vector<Vec2> star = crossing_star(4001);
+  triangles.clear();
+  try {
+    (void)detail::ear_clip(star, triangles,
+                           tolerance::kEarClipVisitsPerVertex * star.size() + tolerance::kEarClipVisitsBase);
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::Geometry);
+    EXPECT_NE(std::string(e.what()).find("ear clipping"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -1645,7 +1645,9 @@ bool build_mesh_once(const Outline& outline, const MeshOptions& options, double 
       // Where loops touch at vertices, re-link them first so that each polygon
       // handed to the ear clipper has one filled sector per corner.
       for (PolygonLoops& polygon : relink_touching_loops(std::move(outer), std::move(holes))) {
-        ear_clip(bridge_holes(std::move(polygon.outer), std::move(polygon.holes)), triangle_points);
+        const std::vector<Vec2> loop = bridge_holes(std::move(polygon.outer), std::move(polygon.holes));
+        ear_clip(loop, triangle_points,
+                 tolerance::kEarClipVisitsPerVertex * loop.size() + tolerance::kEarClipVisitsBase);
       }
     }
     mesh.triangles.reserve(triangle_points.size());

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "tessellate/predicates.hpp"
+#include "tessellate/rings.hpp"
 
 namespace curvetext::detail {
 namespace {
@@ -385,8 +386,13 @@ class LiveEdges {
 
 }  // namespace
 
-bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& triangles) {
+bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& triangles, std::size_t max_visits) {
   std::size_t n = loop.size();
+  std::size_t visits = 0;
+  auto spend = [&](std::size_t work) {
+    visits += work;
+    if (visits > max_visits) work_budget_exceeded("ear clipping", visits, max_visits);
+  };
   if (n < 3) return n == 0;
   if (n >= 0xffffffffu) return false;  // indices are 32-bit
   // Scratch reused across calls (no allocation per glyph once warm).
@@ -431,6 +437,7 @@ bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& t
   auto is_ear = [&](std::size_t ia, std::size_t ib, std::size_t ic) {
     const Vec2 a = loop[ia], b = loop[ib], c = loop[ic];
     if (orient2d(a, b, c) <= 0) return false;
+    spend(live.entries().size());
     const double min_x = std::min({a.x, b.x, c.x}), max_x = std::max({a.x, b.x, c.x});
     const double min_y = std::min({a.y, b.y, c.y}), max_y = std::max({a.y, b.y, c.y});
     // The new edge a-c must leave a and c into the filled side of their own
@@ -510,6 +517,7 @@ bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& t
     // clip the first strictly convex corner, or drop a vertex, so that every
     // iteration removes one vertex and the loop terminates.
     clean = false;
+    spend(remaining);
     std::size_t pick = cur;
     bool convex_found = false;
     for (std::size_t i = 0, p = cur; i < remaining; ++i, p = next[p]) {

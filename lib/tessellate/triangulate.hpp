@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <set>
 #include <utility>
@@ -42,8 +43,11 @@ std::vector<PolygonLoops> relink_touching_loops(std::vector<Vec2> outer, std::ve
 // runs. Always terminates in O(n^2) ear tests per removed vertex at most; on an
 // invalid loop it falls back to best-effort ears (check_mesh reports the damage).
 // Returns false when a fallback was needed. (Simple loops that neither cross
-// nor touch each other go to sweep_triangulate instead.)
-bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& triangles);
+// nor touch each other go to sweep_triangulate instead.) Throws
+// Error(Geometry) once its ear tests have looked at more than `max_visits`
+// vertices in all (each test looks at up to every vertex left).
+bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& triangles,
+              std::size_t max_visits = SIZE_MAX);
 
 // Triangulates polygon loops that neither cross nor touch (each loop simple,
 // no position repeated anywhere, the filled side on the left of every edge,
