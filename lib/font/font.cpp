@@ -18,8 +18,10 @@
 #include <system_error>
 
 #include "curvetext/error.hpp"
+#include "curvetext/tolerances.hpp"
 #include "font/font_impl.hpp"
 #include "font/option_lists.hpp"
+#include "font/synthesis.hpp"
 
 namespace curvetext {
 
@@ -142,6 +144,12 @@ void update_cache_key(FontAccess::Impl& impl) {
   // {wght=default} draw the same outlines and share cache entries, and so do
   // values clamped to the same axis end.
   for (FT_Fixed c : impl.coordinates) hash.add_value<std::int64_t>(c);
+  // A synthesised face draws other outlines than the plain one; a plain
+  // face hashes nothing more.
+  if (impl.synthetic_strength != 0.0 || impl.synthesis.slant != 0.0) {
+    hash.add_value<double>(impl.synthetic_strength);
+    hash.add_value<double>(impl.synthesis.slant);
+  }
   impl.cache_key = hash.value;
 }
 
@@ -401,13 +409,44 @@ void Font::set_variations(const std::vector<Variation>& variations) {
     for (std::size_t i = 0; i < im.axes.size(); ++i)
       hb_variations.push_back({im.axes[i].hb_tag, static_cast<float>(static_cast<double>(coordinates[i]) / 65536.0)});
     hb_font_set_variations(im.hb_font, hb_variations.data(), static_cast<unsigned int>(hb_variations.size()));
+    // A sub-font copies its parent's coordinates when made.
+    if (im.hb_synthetic_owner)
+      im.hb_synthetic_owner = detail::make_synthetic_font(im.hb_font, static_cast<hb_position_t>(im.synthetic_strength),
+                                                          im.synthesis.slant);
   }
   im.coordinates = std::move(coordinates);
   im.variations = std::move(applied);
   update_cache_key(im);
 }
 
-hb_font_t* harfbuzz_font(const Font& font) { return FontAccess::impl(font).hb_font; }
+void Font::set_synthesis(const FontSynthesis& synthesis) {
+  Impl& im = *impl_;
+  const auto in_range = [](double v, double lo, double hi) { return std::isfinite(v) && v >= lo && v <= hi; };
+  if (!in_range(synthesis.embolden_em, 0.0, tolerance::kMaxSyntheticEmboldenEm))
+    throw Error(ErrorCode::InvalidArgument,
+                "synthetic emboldening must be 0 to " + std::to_string(tolerance::kMaxSyntheticEmboldenEm) + " em");
+  if (!in_range(synthesis.slant, -tolerance::kMaxSyntheticSlant, tolerance::kMaxSyntheticSlant))
+    throw Error(ErrorCode::InvalidArgument, "synthetic slant must be -" +
+                                                std::to_string(tolerance::kMaxSyntheticSlant) + " to " +
+                                                std::to_string(tolerance::kMaxSyntheticSlant));
+  const bool any = synthesis.embolden_em != 0.0 || synthesis.slant != 0.0;
+  if (any && im.color_format != ColorFormat::None)
+    throw Error(ErrorCode::FontInvalid, "a colour font cannot be made synthetic bold or slanted: " + im.path);
+  const double strength = std::round(synthesis.embolden_em * im.units_per_em);
+  im.hb_synthetic_owner =
+      any ? detail::make_synthetic_font(im.hb_font, static_cast<hb_position_t>(strength), synthesis.slant) : nullptr;
+  im.synthesis = synthesis;
+  im.synthetic_strength = strength;
+  update_cache_key(im);
+}
+
+const FontSynthesis& Font::synthesis() const { return impl_->synthesis; }
+double Font::synthetic_strength() const { return impl_->synthetic_strength; }
+
+hb_font_t* harfbuzz_font(const Font& font) {
+  const FontAccess::Impl& im = FontAccess::impl(font);
+  return im.hb_synthetic_owner ? im.hb_synthetic_owner.get() : im.hb_font;
+}
 
 const std::vector<Variation>& Font::variations() const { return impl_->variations; }
 const std::string& Font::path() const { return impl_->path; }
@@ -532,8 +571,10 @@ Outline Font::glyph_outline(std::uint32_t glyph_id) const {
   return outline;
 }
 
-void Font::glyph_outline(std::uint32_t glyph_id, Outline& outline) const {
-  const Impl& im = *impl_;
+namespace {
+
+// The glyph's outline as the font draws it (no synthesis).
+void load_outline(const FontAccess::Impl& im, std::uint32_t glyph_id, Outline& outline) {
   outline.clear();
   if (glyph_id >= static_cast<std::uint32_t>(im.ft_face->num_glyphs))
     throw Error(ErrorCode::FontInvalid, "glyph id " + std::to_string(glyph_id) + " out of range (font has " +
@@ -575,6 +616,14 @@ void Font::glyph_outline(std::uint32_t glyph_id, Outline& outline) const {
     throw Error(ErrorCode::FontInvalid,
                 "cannot decompose glyph " + std::to_string(glyph_id) + " (" + ft_error_text(error) + "): " + im.path);
   outline.close();
+}
+
+}  // namespace
+
+void Font::glyph_outline(std::uint32_t glyph_id, Outline& outline) const {
+  load_outline(*impl_, glyph_id, outline);
+  detail::embolden_outline(outline, impl_->synthetic_strength);
+  detail::slant_outline(outline, impl_->synthesis.slant);
 }
 
 }  // namespace curvetext

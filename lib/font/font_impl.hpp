@@ -85,6 +85,12 @@ struct Font::Impl {
   std::vector<FT_Fixed> coordinates;
   // What set_variations() was last given, deduplicated and clamped.
   std::vector<Variation> variations;
+  // set_synthesis(); strength in font units (rounded, as HarfBuzz's
+  // advances are whole units at our scale). hb_synthetic_owner: a sub-font of
+  // hb_font that shapes and measures the synthesised face (null without one).
+  FontSynthesis synthesis;
+  double synthetic_strength = 0.0;
+  detail::HbFontPtr hb_synthetic_owner;
   std::uint64_t cache_key = 0;
   std::uint64_t bytes_hash = 0;  // of a font opened from memory (0: from a file)
 

@@ -37,7 +37,10 @@ using HbBufferPtr = std::unique_ptr<hb_buffer_t, HbBufferDeleter>;
 // The HarfBuzz font of `font` (scale: units per em, at the font's current
 // variations). Owned by `font`: valid while it lives (take a reference with
 // hb_font_reference to keep it longer). HarfBuzz allows reads from several
-// threads at once; nothing may change it while set_variations runs.
+// threads at once; nothing may change it while set_variations or
+// set_synthesis runs. For a synthesised font (Font::synthesis) its advances
+// and glyph extents include the synthesis; the slant of glyph offsets does
+// not: a shaped glyph's x_offset gains synthesis().slant * y_offset.
 hb_font_t* harfbuzz_font(const Font& font);
 
 }  // namespace curvetext

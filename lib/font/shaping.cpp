@@ -106,13 +106,14 @@ ShapedLine shape_line(const Font& font, std::string_view utf8, const ShapeOption
   unsigned int count = 0;
   const hb_glyph_info_t* infos = hb_buffer_get_glyph_infos(buf, &count);
   const hb_glyph_position_t* positions = hb_buffer_get_glyph_positions(buf, &count);
+  const double slant = font.synthesis().slant;  // raised marks follow a synthetic slant
   ShapedLine line;
   line.glyphs.reserve(count);
   for (unsigned int i = 0; i < count; ++i) {
     ShapedGlyph g;
     g.glyph_id = infos[i].codepoint;
     g.cluster = infos[i].cluster;
-    g.x_offset = positions[i].x_offset;
+    g.x_offset = positions[i].x_offset + slant * positions[i].y_offset;
     g.y_offset = positions[i].y_offset;
     g.x_advance = positions[i].x_advance;
     g.y_advance = positions[i].y_advance;

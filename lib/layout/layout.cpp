@@ -116,6 +116,17 @@ struct Metrics {
   double ascent = 0, descent = 0, gap = 0;
 };
 
+// The weight and italic a face is drawn in: its own, or bold and slanted
+// where synthesised.
+float drawn_weight(const Font& font) {
+  const float weight = hb_style_get_value(harfbuzz_font(font), HB_STYLE_TAG_WEIGHT);
+  return font.synthesis().embolden_em > 0.0 ? std::max(weight, 700.0f) : weight;
+}
+
+bool drawn_italic(const Font& font) {
+  return hb_style_get_value(harfbuzz_font(font), HB_STYLE_TAG_ITALIC) > 0 || font.synthesis().slant != 0.0;
+}
+
 Metrics font_metrics(const Font& font, double size_px) {
   const FontMetrics m = font.metrics();
   const double s = size_px / m.units_per_em;
@@ -241,12 +252,13 @@ struct ParagraphBuilder {
     const hb_glyph_info_t* info = hb_buffer_get_glyph_infos(buf, &n);
     const hb_glyph_position_t* pos = hb_buffer_get_glyph_positions(buf, &n);
     const double s = style(style_index).size_px / font.metrics().units_per_em;
+    const double slant = font.synthesis().slant;  // raised marks follow a synthetic slant
     std::vector<Glyph> glyphs(n);
     for (unsigned i = 0; i < n; ++i) {
       glyphs[i].id = info[i].codepoint;
       glyphs[i].cluster = info[i].cluster;
       glyphs[i].advance = pos[i].x_advance * s;
-      glyphs[i].x_offset = pos[i].x_offset * s;
+      glyphs[i].x_offset = (pos[i].x_offset + slant * pos[i].y_offset) * s;
       glyphs[i].y_offset = pos[i].y_offset * s;
       glyphs[i].unsafe = (hb_glyph_info_get_glyph_flags(&info[i]) & HB_GLYPH_FLAG_UNSAFE_TO_BREAK) != 0;
     }
@@ -268,7 +280,9 @@ struct ParagraphBuilder {
     const double sc = style(style_index).size_px / font.metrics().units_per_em;
     std::vector<Glyph> glyphs(n);
     for (unsigned i = 0; i < n; ++i)
-      glyphs[i] = {info[i].codepoint, 0, pos[i].x_advance * sc, pos[i].x_offset * sc, pos[i].y_offset * sc, false};
+      glyphs[i] = {info[i].codepoint,     0,
+                   pos[i].x_advance * sc, (pos[i].x_offset + font.synthesis().slant * pos[i].y_offset) * sc,
+                   pos[i].y_offset * sc,  false};
     return glyphs;
   }
 
@@ -289,19 +303,18 @@ struct ParagraphBuilder {
   }
   // A fallback face in the weight and slant of the style's first font (bold
   // or italic text stays bold or italic in Hebrew or Arabic): the same
-  // family's face for them where fontconfig has one that covers [a, b),
-  // else `f` as it is.
+  // family's face for them where fontconfig has one that covers [a, b) (a
+  // Regular-only family's face comes synthesised), else `f` synthesised.
   std::shared_ptr<const Font> styled_like(const std::shared_ptr<const Font>& f, const Font& first, std::size_t a,
                                           std::size_t b) {
-    hb_font_t* want = harfbuzz_font(first);
-    hb_font_t* have = harfbuzz_font(*f);
-    const float weight = hb_style_get_value(want, HB_STYLE_TAG_WEIGHT);
-    const bool italic = hb_style_get_value(want, HB_STYLE_TAG_ITALIC) > 0;
-    const bool has_italic = hb_style_get_value(have, HB_STYLE_TAG_ITALIC) > 0;
-    const float has_weight = hb_style_get_value(have, HB_STYLE_TAG_WEIGHT);
+    const float weight = drawn_weight(first);
+    const bool italic = drawn_italic(first);
+    const bool has_italic = drawn_italic(*f);
+    const float has_weight = drawn_weight(*f);
     if (std::abs(weight - has_weight) < 100 && italic == has_italic) return f;
     const std::string family = f->family_name();
-    if (family.empty() || family.find_first_of(":,-\\") != std::string::npos) return f;
+    if (family.empty() || family.find_first_of(":,-\\") != std::string::npos)
+      return fonts.synthesised(f, weight, italic);
     static const char* const names[] = {"thin",     "extralight", "light",     "regular", "medium",
                                         "semibold", "bold",       "extrabold", "black"};
     const int k = std::clamp(static_cast<int>(std::lround(weight / 100.0f)) - 1, 0, 8);
@@ -315,11 +328,10 @@ struct ParagraphBuilder {
       }
     }
     const std::shared_ptr<const Font>& g = it->second;
-    if (!g || !covers(*g, a, b)) return f;
-    hb_font_t* got = harfbuzz_font(*g);
-    const bool closer = std::abs(hb_style_get_value(got, HB_STYLE_TAG_WEIGHT) - weight) < std::abs(has_weight - weight);
-    const bool slant_fixed = (hb_style_get_value(got, HB_STYLE_TAG_ITALIC) > 0) == italic && has_italic != italic;
-    return closer || slant_fixed ? g : f;
+    if (!g || !covers(*g, a, b)) return fonts.synthesised(f, weight, italic);
+    const bool closer = std::abs(drawn_weight(*g) - weight) < std::abs(has_weight - weight);
+    const bool slant_fixed = drawn_italic(*g) == italic && has_italic != italic;
+    return closer || slant_fixed ? g : fonts.synthesised(f, weight, italic);
   }
   std::map<std::string, std::shared_ptr<const Font>> restyled_;  // fontconfig pattern -> face (null: none)
 

@@ -119,7 +119,7 @@ std::string weight_name(std::size_t at, const std::string& value) {
 // slant, from which <b> / <i> / weight / style build a fontconfig pattern.
 struct State {
   TextStyle style;     // fonts without the weighted or slanted face
-  std::string family;  // empty: the family of style.fonts.front()
+  std::string family;  // empty: the family (or font file) of style.fonts.front()
   std::string weight;  // fontconfig weight name; empty: the font's own
   std::string slant;   // "italic", "oblique"; empty: the font's own
   std::string tag;     // element name, matched by its closing tag
@@ -155,8 +155,7 @@ class MarkupParser {
   MarkupText out_;
   State root_;
   std::vector<State> stack_;
-  std::size_t segment_ = 0;                    // start of the text not yet in a span
-  std::map<std::string, std::string> family_;  // font file -> family name
+  std::size_t segment_ = 0;  // start of the text not yet in a span
 
   // The text since the last tag becomes a span of the innermost element.
   void flush() {
@@ -327,8 +326,9 @@ class MarkupParser {
     }
   }
 
-  // The face: the family (or the first font's family) with the weight and
-  // slant asked for, as a fontconfig pattern in front of the other fonts.
+  // The face: the family (or the first font's family, or font file) with the
+  // weight and slant asked for, as a fontconfig pattern in front of the other
+  // fonts; a face lacking them is synthesised (FontCollection::resolve).
   void finish(State& state) {
     state.effective = state.style;
     if (state.weight.empty() && state.slant.empty()) return;
@@ -338,27 +338,14 @@ class MarkupParser {
     state.effective.fonts.insert(state.effective.fonts.begin(), pattern);
   }
 
+  // The first font's family; for a font file the file itself, which
+  // FontCollection::resolve reads with the style ("file.ttf:weight=bold": its
+  // family's face in that style where fontconfig has one, else the file).
   std::string family_of(State& state) {
     if (!state.family.empty()) return state.family;
     const std::string first = state.style.fonts.empty() ? "DejaVu Sans" : state.style.fonts.front();
-    state.family = first.substr(0, first.find(':'));
-    if (first.find('/') != std::string::npos) {
-      auto [it, added] = family_.try_emplace(first, first);
-      if (added) {
-        try {
-          // "file.ttc#2" names a face of a collection.
-          const std::size_t hash = first.rfind('#');
-          const bool indexed = hash != std::string::npos && hash > first.rfind('/');
-          const Font font =
-              indexed ? Font::open(first.substr(0, hash), std::stoi(first.substr(hash + 1))) : Font::open(first);
-          const std::string family = font.family_name();
-          if (!family.empty()) it->second = family;
-        } catch (const std::exception&) {
-          // Not a readable font: fontconfig gets the name as it is and says so.
-        }
-      }
-      state.family = it->second;
-    }
+    const std::size_t slash = first.rfind('/');
+    state.family = first.substr(0, first.find(':', slash == std::string::npos ? 0 : slash + 1));
     return state.family;
   }
 };

@@ -35,6 +35,27 @@ struct FontMetrics {
   double line_gap = 0.0;
 };
 
+// Synthetic bold and slant for a face that lacks the weight or slant asked
+// for (fontconfig's FC_EMBOLDEN and FC_MATRIX, as Pango draws them). Layout
+// applies tolerance::kSyntheticEmboldenEm / kSyntheticSlant by the rule in
+// docs/markup.md; zeros: the face as designed.
+struct FontSynthesis {
+  // Stroke growth in ems: every outline is offset outward as FreeType's
+  // FT_Outline_EmboldenXY does with a strength of s = round(embolden_em *
+  // units_per_em) font units (the left side and the baseline stay, the
+  // right side and the top move out by s), and every non-zero horizontal
+  // advance grows by s. 0 to tolerance::kMaxSyntheticEmboldenEm.
+  double embolden_em = 0.0;
+  // Shear after emboldening: x += slant * y for every outline point, and
+  // x_offset += slant * y_offset for shaped glyphs (raised marks follow the
+  // slant). -kMaxSyntheticSlant to kMaxSyntheticSlant.
+  double slant = 0.0;
+  friend bool operator==(const FontSynthesis& a, const FontSynthesis& b) {
+    return a.embolden_em == b.embolden_em && a.slant == b.slant;
+  }
+  friend bool operator!=(const FontSynthesis& a, const FontSynthesis& b) { return !(a == b); }
+};
+
 // One face, owning a copy of the file's bytes (the file is not read again
 // and may change or go after open) and its own FreeType and HarfBuzz state.
 //
@@ -74,18 +95,31 @@ class CURVETEXT_API Font {
   // valid until the next set_variations.
   const std::vector<Variation>& variations() const;
 
+  // Makes outlines, advances and glyph extents synthetic bold and/or slanted
+  // (FontSynthesis); {} undoes it. Needs exclusive use, as set_variations.
+  // Changes cache_key(). Throws Error(InvalidArgument) for a value out of
+  // range or not finite, Error(FontInvalid) for a colour face (COLR layers or
+  // bitmaps are drawn as designed: a synthetic colour glyph is refused, not
+  // half drawn); the font is then unchanged.
+  void set_synthesis(const FontSynthesis& synthesis);
+  const FontSynthesis& synthesis() const;
+  // The emboldening strength in font units (FontSynthesis::embolden_em).
+  double synthetic_strength() const;
+
   const std::string& path() const;  // as given to open
   int face_index() const;
   std::string family_name() const;  // the face's family name; empty when it has none
-  // A key that differs between faces and between variation settings; used by
-  // the glyph cache. Equal for two Fonts opened from the same path and face
-  // at the same (clamped) variations.
+  // A key that differs between faces, between variation settings and
+  // between syntheses; used by the glyph cache. Equal for two Fonts opened
+  // from the same path and face at the same (clamped) variations and
+  // synthesis.
   std::uint64_t cache_key() const;
 
   // At the current variations, in font units.
   FontMetrics metrics() const;
   unsigned glyph_count() const;  // glyph ids are 0 .. glyph_count() - 1
-  // Outline of a glyph in font units, unhinted, at the current variations.
+  // Outline of a glyph in font units, unhinted, at the current variations,
+  // emboldened and slanted by the synthesis (set_synthesis).
   // Empty outline for glyphs without contours (space). Throws Error(FontInvalid)
   // for glyph ids out of range or a glyph the font's data cannot give, and
   // for any glyph of a face whose glyphs are colour bitmaps only (see

@@ -40,10 +40,22 @@ class CURVETEXT_API FontCollection {
   // A font file (a path with '/' or an existing file; "file.ttc#2" picks a
   // face) or a fontconfig pattern ("Noto Sans", "DejaVu Serif:bold"), at the
   // given variations; the same face again for the same name and variations.
-  // Throws Error(InvalidArgument) for an empty name, Error(FontNotFound)
-  // when fontconfig has no match, and the font errors of Font::open /
-  // set_variations.
+  // A font file may ask for a style as a pattern does ("file.ttf:weight=bold",
+  // ":slant=italic", both): the face of the file's family that fontconfig has
+  // in that style, else the file's own face. A face lacking the weight or
+  // slant asked for comes synthesised (Font::set_synthesis; the rule is in
+  // docs/markup.md). Throws Error(InvalidArgument) for an empty name,
+  // Error(FontNotFound) when fontconfig has no match or a style cannot be
+  // read, and the font errors of Font::open / set_variations.
   std::shared_ptr<const Font> resolve(const std::string& name, const std::vector<Variation>& variations = {});
+  // `face` in `weight` (OpenType, 1 to 1000; 0: as it is) and italic where
+  // it lacks them, by the rule in docs/markup.md: `face` itself when it has
+  // them or is a colour face, else a copy of it at its variations made
+  // synthetic bold and/or slanted (Font::set_synthesis), kept like the faces
+  // resolve opens. The copy is opened from face->path(): a face opened from
+  // memory has no file to read again (Error(FontNotFound)); synthesise it
+  // with Font::set_synthesis instead. Throws the errors of Font::open.
+  std::shared_ptr<const Font> synthesised(const std::shared_ptr<const Font>& face, double weight, bool italic);
   // The constructor's default font (opened once). Throws the errors of
   // default_font_path (default_font.hpp) and Font::open.
   std::shared_ptr<const Font> default_font();
@@ -77,15 +89,26 @@ class CURVETEXT_API FontCollection {
   Stats stats() const { return stats_; }
 
  private:
+  // Where fontconfig's match for a pattern lies, and the style it asked for
+  // (OpenType weight, 0: none; italic or oblique). index -1: no face of the
+  // family the pattern was checked against.
+  struct Match {
+    std::string file;
+    int index = -1;
+    double weight = 0.0;
+    bool slanted = false;
+  };
   std::shared_ptr<const Font> open_file(const std::string& path, int index, const std::vector<Variation>& variations,
-                                        bool strict);
+                                        bool strict, const FontSynthesis& synthesis = {});
+  std::shared_ptr<const Font> resolve_styled_file(const std::string& file, const std::string& style,
+                                                  const std::vector<Variation>& variations);
   std::shared_ptr<const Font> find_fallback(char32_t c, const std::string& language,
                                             const std::vector<Variation>& variations, bool color_only);
   std::string default_path_;
-  std::map<std::string, std::shared_ptr<const Font>> by_key_;      // path#index|variations -> face
-  std::map<std::string, std::pair<std::string, int>> by_pattern_;  // fontconfig pattern -> file, index
-  std::map<std::string, std::shared_ptr<const Font>> fallback_;    // codepoint|lang|variations -> face or null
-  std::vector<std::shared_ptr<const Font>> fallback_faces_;        // order of first use
+  std::map<std::string, std::shared_ptr<const Font>> by_key_;    // path#index|variations -> face
+  std::map<std::string, Match> by_pattern_;                      // fontconfig pattern -> match
+  std::map<std::string, std::shared_ptr<const Font>> fallback_;  // codepoint|lang|variations -> face or null
+  std::vector<std::shared_ptr<const Font>> fallback_faces_;      // order of first use
   struct Coverage {
     std::vector<std::uint64_t> known, has;  // BMP bit sets
   };

@@ -28,14 +28,16 @@ struct MarkupText {
 };
 
 // Reads `markup` with `base` as the style outside every element (its first
-// font, or DejaVu Sans when it has none, is the family that <b> and <i> ask
-// fontconfig to embolden or slant).
+// font, or DejaVu Sans when it has none, is the family, or the font file,
+// that <b> and <i> ask for in bold or italic: "Family:weight=bold",
+// "file.ttf:weight=bold"; FontCollection::resolve finds that face or
+// synthesises it).
 // Throws Error(InvalidText) "markup, byte N: ..." naming the byte offset of
 // the problem in `markup`: invalid UTF-8, a malformed, unknown or unclosed
 // element, an unknown attribute or entity, a bad value; also for markup over
 // tolerance::kMaxTextBytes, elements nested deeper than
 // tolerance::kMaxMarkupDepth, or more than tolerance::kMaxSpans spans.
-// Opens font files only to learn a family name for <b> and <i>.
+// Opens no files.
 CURVETEXT_API MarkupText parse_markup(std::string_view markup, const TextStyle& base);
 
 }  // namespace curvetext

@@ -52,7 +52,8 @@ struct ShapeOptions {
   std::string script;     // ISO 15924; empty: guessed
 };
 
-// Shapes one line of UTF-8 with HarfBuzz at the font's current variations.
+// Shapes one line of UTF-8 with HarfBuzz at the font's current variations
+// and synthesis (wider advances, slanted offsets: FontSynthesis).
 // May be called from several threads at once, on the same font too. Throws
 // Error(InvalidText) for invalid UTF-8 or a text over INT_MAX bytes,
 // Error(InvalidArgument) for a bad direction, script or language.

@@ -139,6 +139,17 @@ inline constexpr double kMaxCoverageGamma = 4.0;
 inline constexpr int kMinLodLog2 = 3;   // 8 px/em and below share one mesh
 inline constexpr int kMaxLodLog2 = 14;  // 16,384 px/em
 
+// --- Synthetic bold and slant (Font::set_synthesis, docs/markup.md) ------------
+// What a face lacking the weight or slant asked for gets, as fontconfig's
+// 90-synthetic.conf and Pango do: outlines grown by 1/24 em (FreeType's
+// FT_GlyphSlot_Embolden strength) and sheared by x += 0.2 y (em / em).
+inline constexpr double kSyntheticEmboldenEm = 1.0 / 24.0;
+inline constexpr double kSyntheticSlant = 0.2;
+// Largest synthesis a Font accepts: growth in em, |shear| (dimensionless).
+// Beyond them glyphs smear into their neighbours or lie nearly flat.
+inline constexpr double kMaxSyntheticEmboldenEm = 0.25;
+inline constexpr double kMaxSyntheticSlant = 1.0;
+
 // --- Input limits (bad input gets an error, not a hang) -----------------------
 inline constexpr double kMaxPixelsPerEm = 20000.0;
 inline constexpr double kMaxImageSidePx = 16384.0;
