@@ -20,6 +20,7 @@
 #include "curvetext/mesh.hpp"
 #include "curvetext/outline.hpp"
 #include "tessellate/predicates.hpp"
+#include "tessellate/rings.hpp"
 #include "tessellate/triangulate.hpp"
 #include "support/expect_error.hpp"
 
@@ -1318,7 +1319,7 @@ TEST(EarClip, StopsAtItsWorkBudget) {
   EXPECT_FALSE(triangles.empty());
   const std::vector<Vec2> star = crossing_star(4001);
   triangles.clear();
-  const std::size_t budget = tolerance::kEarClipVisitsPerVertex * star.size() + tolerance::kEarClipVisitsBase;
+  const std::size_t budget = detail::ear_clip_budget(star.size());
   testing::expect_error([&] { (void)detail::ear_clip(star, triangles, budget); }, ErrorCode::Geometry, "ear clipping");
 }
 

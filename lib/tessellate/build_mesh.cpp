@@ -694,6 +694,10 @@ bool crossing_parameters(const Vec2* p, int np, double wp, const Vec2* q, int nq
 constexpr std::size_t kAllPairsLimit = 64;
 static_assert(kAllPairsLimit <= 64, "the all-pairs test reads one 64-bit block per piece");
 
+std::size_t ear_clip_budget(std::size_t vertices) {
+  return vertices * (vertices + tolerance::kEarClipVisitsPerVertex) + tolerance::kEarClipVisitsBase;
+}
+
 std::size_t mesh_work_budget(std::size_t pieces) {
   return tolerance::kMeshWorkPerPiece * pieces + tolerance::kMeshWorkBase;
 }
@@ -1646,8 +1650,7 @@ bool build_mesh_once(const Outline& outline, const MeshOptions& options, double 
       // handed to the ear clipper has one filled sector per corner.
       for (PolygonLoops& polygon : relink_touching_loops(std::move(outer), std::move(holes))) {
         const std::vector<Vec2> loop = bridge_holes(std::move(polygon.outer), std::move(polygon.holes));
-        ear_clip(loop, triangle_points,
-                 tolerance::kEarClipVisitsPerVertex * loop.size() + tolerance::kEarClipVisitsBase);
+        ear_clip(loop, triangle_points, ear_clip_budget(loop.size()));
       }
     }
     mesh.triangles.reserve(triangle_points.size());

@@ -263,6 +263,8 @@ void refine_contacts(std::vector<std::vector<FlatEdge>>& contours, double fine_l
 
 // Nonzero area by the slab sweep; `crossing` is set when two edges meet other
 // than as consecutive pieces of one contour (then only this method is right).
+// Without a crossing the sweep is skipped (its work is the number of edges
+// times the edges a slab crosses, quadratic for a comb) and NaN returned.
 double swept_nonzero_area(const Outline& outline, bool& crossing) {
   const Box cb = outline.control_box();
   const Vec2 diag = cb.max - cb.min;
@@ -332,6 +334,7 @@ double swept_nonzero_area(const Outline& outline, bool& crossing) {
       }
     }
   }
+  if (!crossing) return std::numeric_limits<double>::quiet_NaN();
   std::sort(ys.begin(), ys.end());
   ys.erase(std::unique(ys.begin(), ys.end()), ys.end());
   std::vector<std::size_t> by_min(edges.size());
@@ -530,7 +533,21 @@ MeshCheck check_mesh_of(const Mesh& mesh, const Outline& quadratic_outline) {
     for (int k = 0; k < 3; ++k) boxes[i].add(mesh.points[faces[i].v[k]]);
     order[i] = i;
   }
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return boxes[a].min.x < boxes[b].min.x; });
+  // The scans below run along the axis where the boxes overlap less: the one
+  // whose summed box extents are the smaller share of the mesh's extent (a
+  // comb's fan triangles span its width, its teeth not its height).
+  Box all;
+  double sum_x = 0.0, sum_y = 0.0;
+  for (const Box& b : boxes) {
+    all.add(b.min);
+    all.add(b.max);
+    sum_x += b.max.x - b.min.x;
+    sum_y += b.max.y - b.min.y;
+  }
+  const bool along_y = sum_y * (all.max.x - all.min.x) < sum_x * (all.max.y - all.min.y);
+  auto lo = [&](std::size_t k) { return along_y ? boxes[k].min.y : boxes[k].min.x; };
+  auto hi = [&](std::size_t k) { return along_y ? boxes[k].max.y : boxes[k].max.x; };
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return lo(a) < lo(b); });
   std::vector<char> curve_overlaps(faces.size(), 0);
   auto interiors_intersect = [&](const Face& f, const Face& g) {
     Vec2 p[3], q[3];
@@ -550,21 +567,33 @@ MeshCheck check_mesh_of(const Mesh& mesh, const Outline& quadratic_outline) {
     };
     return !separated(p, q) && !separated(q, p);
   };
-  for (std::size_t oi = 0; oi < order.size(); ++oi) {
-    const std::size_t i = order[oi];
-    for (std::size_t oj = oi + 1; oj < order.size() && boxes[order[oj]].min.x <= boxes[i].max.x; ++oj) {
-      const std::size_t j = order[oj];
-      if (!faces[i].curved && !faces[j].curved) continue;
-      if (!detail::boxes_overlap(boxes[i], boxes[j])) continue;
-      if (!interiors_intersect(faces[i], faces[j])) continue;
-      for (std::size_t k : {i, j}) {
-        if (faces[k].curved && !curve_overlaps[k]) {
-          curve_overlaps[k] = 1;
-          ++check.hull_overlaps;
-          add_problem(check, "curve " + std::to_string(faces[k].source) + " overlaps another face");
-        }
+  auto test_pair = [&](std::size_t i, std::size_t j) {
+    if (!detail::boxes_overlap(boxes[i], boxes[j]) || !interiors_intersect(faces[i], faces[j])) return;
+    for (std::size_t k : {i, j}) {
+      if (faces[k].curved && !curve_overlaps[k]) {
+        curve_overlaps[k] = 1;
+        ++check.hull_overlaps;
+        add_problem(check, "curve " + std::to_string(faces[k].source) + " overlaps another face");
       }
     }
+  };
+  // Only pairs with a curved face are tested, so the scans start from curved
+  // faces: each one forward over all faces whose boxes start within its
+  // range, and each straight face over the curved faces whose boxes start
+  // within its own (a long straight face, such as a fan's, meets few curves;
+  // scanning all faces from it would make a comb's check quadratic).
+  std::vector<std::size_t> curved_order;
+  for (const std::size_t i : order)
+    if (faces[i].curved) curved_order.push_back(i);
+  for (std::size_t oi = 0; oi < order.size(); ++oi) {
+    const std::size_t i = order[oi];
+    if (faces[i].curved) {
+      for (std::size_t oj = oi + 1; oj < order.size() && lo(order[oj]) <= hi(i); ++oj) test_pair(i, order[oj]);
+      continue;
+    }
+    auto c = std::lower_bound(curved_order.begin(), curved_order.end(), lo(i),
+                              [&](std::size_t k, double v) { return lo(k) < v; });
+    for (; c != curved_order.end() && lo(*c) <= hi(i); ++c) test_pair(*c, i);
   }
   return check;
 }

@@ -85,6 +85,10 @@ bool hulls_overlap(const Vec2* p, int np, const Vec2* q, int nq);
 bool separate_hulls(std::vector<Ring>& rings, bool* crossing = nullptr, bool split_at_crossings = false,
                     std::size_t max_pieces = SIZE_MAX);
 
+// Ear clipping's budget of vertex visits for a polygon of `vertices`
+// (tolerance::kEarClipVisitsPerVertex).
+std::size_t ear_clip_budget(std::size_t vertices);
+
 // The work budget of one build from its cleaned rings' piece count
 // (tolerance::kMeshWorkPerPiece, kMeshWorkBase).
 std::size_t mesh_work_budget(std::size_t pieces);

@@ -62,10 +62,11 @@ inline constexpr std::size_t kMeshWorkBase = 4096;
 // per (kMeshWorkPerPiece) unit of that budget, summed over its passes: a path
 // that runs over itself n times has n^2 / 2 such pairs (dimensionless).
 inline constexpr std::size_t kMeshPairTestsPerPiece = 1024;
-// Ear clipping (the fallback where the sweep gives up) may look at most this
-// many vertices per vertex of the polygon, plus kEarClipVisitsBase, over all
-// its ear tests (dimensionless): an O(n^2) clip of a few thousand vertices
-// fits; the O(n^3) of a large loop with few ears stops with Error(Geometry).
+// Ear clipping (the fallback where the sweep gives up) may look at most at
+// n^2 + kEarClipVisitsPerVertex * n + kEarClipVisitsBase vertices over all its
+// ear tests, n the polygon's vertices (dimensionless): each test looks at up
+// to every vertex, so a clip that finds its ears as it goes fits, while a
+// loop whose ears keep failing (about n^2.5 to n^3) stops with Error(Geometry).
 inline constexpr std::size_t kEarClipVisitsPerVertex = 4096;
 inline constexpr std::size_t kEarClipVisitsBase = std::size_t{1} << 24;
 
