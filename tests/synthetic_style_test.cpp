@@ -322,6 +322,26 @@ TEST(SyntheticStyle, RealBoldAndObliqueFacesAreNotSynthesised) {
   EXPECT_EQ(fonts.resolve("DejaVu Math TeX Gyre:bold")->synthesis(), kBold);
 }
 
+// A variable family's bold is a named instance (fontconfig gives Inter's as
+// face index 7 << 16): the face at that instance's axis values, neither
+// refused as an out-of-range face index nor synthesised.
+TEST(SyntheticStyle, NamedInstancesOfVariableFamilies) {
+  FontCollection fonts;
+  const std::shared_ptr<const Font> bold = fonts.resolve("Inter:bold");
+  EXPECT_EQ(bold->synthesis(), FontSynthesis{});
+  bool heavy = false;
+  for (const Variation& v : bold->variations()) heavy = heavy || (v.tag == "wght" && v.value == 700.0f);
+  EXPECT_TRUE(heavy);
+  // Asked-for axis values win over the instance's.
+  const std::shared_ptr<const Font> light = fonts.resolve("Inter:bold", {{"wght", 300.0f}});
+  for (const Variation& v : light->variations())
+    if (v.tag == "wght") EXPECT_EQ(v.value, 300.0f);
+  const ParagraphStyle style = style_of("Inter");
+  const MarkupText m = parse_markup("HI <b>HI</b>", style.default_style);
+  const Paragraph p = Paragraph::layout(fonts, m.text, m.spans, style);
+  EXPECT_GT(run_at(p, 3).glyphs.at(0).advance, run_at(p, 0).glyphs.at(0).advance);
+}
+
 // Bold text falling back to a face whose family has no bold face covering
 // the character (U+1D11E MUSICAL SYMBOL G CLEF: FreeSerif, whose Bold lacks
 // it, or Noto Music, Regular only) stays bold: that face, synthesised.

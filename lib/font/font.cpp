@@ -347,6 +347,28 @@ std::unique_ptr<FontAccess::Impl> open_face(FontBytes bytes, const std::string& 
 
 }  // namespace
 
+std::vector<Variation> named_instance_variations(const Font& font, int instance) {
+  const FontAccess::Impl& im = FontAccess::impl(font);
+  std::lock_guard<std::mutex> lock(im.ft_mutex);
+  FT_MM_Var* mm = nullptr;
+  if (!FT_HAS_MULTIPLE_MASTERS(im.ft_face) || FT_Get_MM_Var(im.ft_face, &mm) != 0)
+    throw Error(ErrorCode::FontInvalid,
+                "named instance " + std::to_string(instance) + " of a face without variations: " + im.path);
+  std::vector<Variation> values;
+  if (instance >= 1 && static_cast<FT_UInt>(instance) <= mm->num_namedstyles) {
+    const FT_Var_Named_Style& style = mm->namedstyle[instance - 1];
+    for (FT_UInt i = 0; i < mm->num_axis; ++i)
+      values.push_back({tag_to_string(static_cast<std::uint32_t>(mm->axis[i].tag)),
+                        static_cast<float>(static_cast<double>(style.coords[i]) / 65536.0)});
+  }
+  const FT_UInt count = mm->num_namedstyles;
+  FT_Done_MM_Var(im.library_owner.get(), mm);
+  if (values.empty())
+    throw Error(ErrorCode::FontInvalid, "named instance " + std::to_string(instance) + " out of range (the face has " +
+                                            std::to_string(count) + "): " + im.path);
+  return values;
+}
+
 Font Font::open(const std::string& path, int face_index) { return Font(open_face(read_file(path), path, face_index)); }
 
 Font Font::open_memory(std::span<const std::uint8_t> data, const std::string& name, int face_index) {

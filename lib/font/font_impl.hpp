@@ -122,4 +122,9 @@ struct FontAccess {
   static Impl& impl(const Font& font) { return *font.impl_; }
 };
 
+// The axis values of named instance `instance` (1-based, as fontconfig and
+// FreeType number them in the upper 16 bits of a face index) of a variable
+// face. Throws Error(FontInvalid) when the face has no such instance.
+std::vector<Variation> named_instance_variations(const Font& font, int instance);
+
 }  // namespace curvetext

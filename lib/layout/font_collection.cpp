@@ -5,6 +5,7 @@
 
 #include <fontconfig/fontconfig.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <mutex>
 #include <optional>
@@ -12,6 +13,7 @@
 #include "curvetext/default_font.hpp"
 #include "curvetext/error.hpp"
 #include "curvetext/tolerances.hpp"
+#include "font/font_impl.hpp"
 #include "font/harfbuzz_font.hpp"
 
 namespace curvetext {
@@ -118,11 +120,22 @@ std::shared_ptr<const Font> FontCollection::open_file(const std::string& path, i
   if (synthesis != FontSynthesis{})
     key += "|synthetic " + std::to_string(synthesis.embolden_em) + " " + std::to_string(synthesis.slant);
   if (auto it = by_key_.find(key); it != by_key_.end()) return it->second;
-  auto font = std::make_shared<Font>(Font::open(path, index));
+  // fontconfig names a variable font's named instance (Inter Bold) in the
+  // index's upper 16 bits: the face at that instance's axis values, under
+  // the ones asked for.
+  auto font = std::make_shared<Font>(Font::open(path, index & 0xffff));
   ++stats_.faces;
-  if (!variations.empty()) {
+  std::vector<Variation> values = variations;
+  if (index >> 16 != 0) {
+    values = named_instance_variations(*font, index >> 16);
+    for (const Variation& v : variations) {
+      auto same = std::find_if(values.begin(), values.end(), [&](const Variation& w) { return w.tag == v.tag; });
+      if (same != values.end()) *same = v;
+    }
+  }
+  if (!values.empty()) {
     try {
-      font->set_variations(variations);
+      font->set_variations(values);
     } catch (const Error&) {
       // A fallback face without the span's axes is still the right face.
       if (strict) throw;
