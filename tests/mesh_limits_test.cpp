@@ -205,6 +205,22 @@ TEST(MeshLimits, RetracedPathIsBuiltOrRefusedInBoundedTime) {
   testing::expect_error([&] { (void)build_mesh(retraced(8192)); }, ErrorCode::Geometry, "pair tests");
 }
 
+// Hull separation halves a nearly straight arc until its last piece's
+// control point lies exactly on the piece's chord: that piece is a line, not
+// a curved triangle of zero area (a fuzz finding, from the outline below and
+// from an SVG path with coordinates of 1e-200 read as 0).
+TEST(MeshLimits, FlatPiecesOfSplitConicsAreLines) {
+  Outline o;
+  o.move_to({0.0625, -1});
+  o.conic_to({0, 0}, {0, -1}, 2.875);
+  o.conic_to({0, 3.843069862341508e-09}, {15.9375, -32}, 1.0);
+  o.line_to({46, 0});
+  o.close();
+  const MeshCheck check = build_and_check(o, 0.25);
+  EXPECT_TRUE(check.ok());
+  EXPECT_EQ(check.degenerate, 0u);
+}
+
 TEST(MeshLimits, CoordinatesBeyondTheLimitAreRefused) {
   // 1e160: the outline's area (and orient2d's products) overflow to infinity.
   for (const double big : {2 * tolerance::kMaxMeshCoordinate, 1e160}) {

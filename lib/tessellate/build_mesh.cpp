@@ -1509,7 +1509,10 @@ bool build_mesh_once(const Outline& outline, const MeshOptions& options, double 
         const std::uint32_t ia = next_ia, ib = k + 1 < n ? index(end) : first_index;
         next_ia = ib;
         loop_vertices.push_back(ia);
-        if (!p.conic) {
+        // A conic split into a piece whose control point lies exactly on its
+        // chord's line (the tail of a nearly straight arc) is that chord: a
+        // curved triangle of zero area would break the mesh's invariants.
+        if (!p.conic || orient2d(start, end, p.control) == 0) {
           mesh.boundary_lines.push_back({ia, ib});
           continue;
         }
