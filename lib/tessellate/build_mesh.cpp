@@ -1035,6 +1035,10 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
         thread_local std::vector<std::uint64_t> fresh_words;
         fresh_words.assign((count + 63) / 64, 0);
         for (const std::uint32_t i : fresh_refs) fresh_words[i / 64] |= std::uint64_t{1} << (i % 64);
+        // (Every fresh piece's box against every box: counted against the
+        // pair budget, as a contour drawn twice keeps many pieces fresh.)
+        pairs_tested += fresh_refs.size() * count;
+        if (pairs_tested > pair_budget) work_budget_exceeded("hull separation (pair tests)", pairs_tested, pair_budget);
         for (const std::uint32_t i : fresh_refs) {
           for (std::size_t base = 0; base < count; base += 64) {
             const std::uint64_t others = after(i, base) | (before(i, base) & ~fresh_words[base / 64]);
@@ -1089,11 +1093,17 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
           // side, and then in both when their b ranges meet. (Pieces with the
           // same end points have overlapping boxes.)
           const double upper = s_max_a[i], low_b = s_min_b[i], high_b = s_max_b[i];
-          std::size_t found = 0;
-          for (std::size_t j = i + 1; j < count && s_min_a[j] <= upper; ++j) {
+          std::size_t found = 0, j = i + 1;
+          for (; j < count && s_min_a[j] <= upper; ++j) {
             candidate[found] = keys[j].ref;
             found += static_cast<std::size_t>((s_min_b[j] <= high_b) & (low_b <= s_max_b[j]));
           }
+          // The boxes scanned count against the pair budget too (those tested
+          // are counted by test_pair): pieces stacked on each other (a
+          // contour drawn twice) make every pass's scan quadratic.
+          pairs_tested += j - i - 1 - found;
+          if (pairs_tested > pair_budget)
+            work_budget_exceeded("hull separation (pair tests)", pairs_tested, pair_budget);
           for (std::size_t f = 0; f < found; ++f) test_pair(unsorted[keys[i].ref], unsorted[candidate[f]]);
         }
       }
