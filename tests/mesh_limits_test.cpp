@@ -221,6 +221,21 @@ TEST(MeshLimits, FlatPiecesOfSplitConicsAreLines) {
   EXPECT_EQ(check.degenerate, 0u);
 }
 
+// A hairpin conic (weight 14) whose second leg lies along the line that
+// closes the contour: halving it rounds the child's control point a hair
+// across that line, and hull separation must test the child against its ring
+// neighbour again (a fuzz finding: curve 3 overlapped another face).
+TEST(MeshLimits, HairpinConicClosedAlongItsLeg) {
+  Outline o;
+  o.move_to({0, 0});
+  o.conic_to({0, -9}, {36, 0}, 8);
+  o.conic_to({0, 0}, {11.75, -0.00024412572383880615}, 14.0);
+  o.close();
+  const MeshCheck check = build_and_check(o, 0.25);
+  EXPECT_TRUE(check.ok());
+  EXPECT_EQ(check.hull_overlaps, 0u);
+}
+
 TEST(MeshLimits, CoordinatesBeyondTheLimitAreRefused) {
   // 1e160: the outline's area (and orient2d's products) overflow to infinity.
   for (const double big : {2 * tolerance::kMaxMeshCoordinate, 1e160}) {

@@ -1022,6 +1022,18 @@ bool separate_hulls(std::vector<Ring>& rings, bool* crossing, bool split_at_cros
           for (std::size_t cp = child_first[p]; cp < child_first[p + 1]; ++cp)
             for (std::size_t cq = child_first[q]; cq < child_first[q + 1]; ++cq) test_pair(unsorted[cp], unsorted[cq]);
         }
+        // A child's hull lies in its parent's only in exact arithmetic: its
+        // rounded control point can cross a line that its parent's leg lay
+        // along (a hairpin conic closed by that line), a ring neighbour the
+        // parent only touched. Fresh pieces are tested against their ring
+        // neighbours again.
+        for (std::size_t r = 0; r < rings.size(); ++r) {
+          const std::size_t first = mark_base[r], end = mark_base[r + 1];
+          for (std::size_t k = first; k + 1 < end || (k + 1 == end && end - first > 2); ++k) {
+            const std::size_t next = k + 1 < end ? k + 1 : first;
+            if (rings[r][k - first].fresh || rings[r][next - first].fresh) test_pair(unsorted[k], unsorted[next]);
+          }
+        }
       } else if (!test_all) {
         // (After a split at a crossing, or after aligning tangent legs in a
         // pass that tests only fresh pieces.) Each fresh piece against every
