@@ -54,7 +54,7 @@ namespace {
 bool nearly_flat(Vec2 a, Vec2 control, Vec2 b, double weight) {
   const Vec2 chord = b - a;
   const double len2 = dot(chord, chord);
-  const double shoulder = std::fmin(1.0, 2.0 * weight / (1.0 + weight));
+  const double shoulder = weight >= 1.0 ? 1.0 : 2.0 * weight / (1.0 + weight);
   return std::fabs(cross(control - a, chord)) * shoulder <= tolerance::kConicFlatnessRelative * len2 ||
          orient2d(a, control, b) == 0;
 }
@@ -1534,14 +1534,15 @@ bool build_mesh_once(const Outline& outline, const MeshOptions& options, double 
         // A conic split into a piece whose control point lies exactly on its
         // chord's line (the tail of a nearly straight arc) is that chord: a
         // curved triangle of zero area would break the mesh's invariants.
-        if (!p.conic || orient2d(start, end, p.control) == 0) {
+        const int side = p.conic ? orient2d(start, end, p.control) : 0;
+        if (side == 0) {
           mesh.boundary_lines.push_back({ia, ib});
           continue;
         }
         // Filled side is on the left: a control point on the right of the
         // chord bulges out (convex, the polygon keeps the chord), on the left
         // it bulges in (concave, the polygon goes through the control point).
-        const bool convex = orient2d(start, end, p.control) <= 0;
+        const bool convex = side < 0;
         const std::uint32_t ic = index(p.control);
         mesh.curves.push_back({ia, ic, ib, p.weight, convex});
         if (!convex) loop_vertices.push_back(ic);
