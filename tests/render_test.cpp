@@ -22,7 +22,7 @@
 #include "curvetext/mesh.hpp"
 #include "curvetext/renderer.hpp"
 #include "curvetext/text_image.hpp"
-#include "curvetext/tolerances.hpp"
+#include "core/tolerances.hpp"
 #include "support/coverage.hpp"
 #include "support/fonts.hpp"
 #include "support/gpu.hpp"

@@ -22,7 +22,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "curvetext/tolerances.hpp"
+#include "core/tolerances.hpp"
 #include "gpu/vertex_format.hpp"
 
 namespace curvetext::gpu {

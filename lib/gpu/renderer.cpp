@@ -16,7 +16,7 @@
 #include "curvetext/renderer.hpp"
 
 #include "curvetext/error.hpp"
-#include "curvetext/tolerances.hpp"
+#include "core/tolerances.hpp"
 #include "gpu/batch_impl.hpp"
 #include "gpu/gl_state.hpp"
 #include "gpu/gl_util.hpp"
