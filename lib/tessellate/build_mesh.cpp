@@ -31,7 +31,7 @@
 #include "curvetext/curves.hpp"
 #include "curvetext/error.hpp"
 #include "curvetext/mesh.hpp"
-#include "curvetext/tolerances.hpp"
+#include "core/tolerances.hpp"
 #include "tessellate/columns.hpp"
 #include "tessellate/positions.hpp"
 #include "tessellate/predicates.hpp"

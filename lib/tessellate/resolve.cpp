@@ -31,7 +31,7 @@
 #include <vector>
 
 #include "curvetext/curves.hpp"
-#include "curvetext/tolerances.hpp"
+#include "core/tolerances.hpp"
 #include "tessellate/columns.hpp"
 #include "tessellate/positions.hpp"
 #include "tessellate/rings.hpp"
