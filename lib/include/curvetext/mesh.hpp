@@ -51,7 +51,7 @@ struct MeshOptions {
 // positive and finite, or a coordinate beyond tolerance::kMaxMeshCoordinate;
 // coordinates below tolerance::kFlushCoordinate* are read as 0. Never hangs:
 // hull separation and crossing resolution have a work budget proportional to
-// the input (tolerance::kMeshWorkPerPiece), past which they throw
+// the input (docs/limits.md), past which they throw
 // Error(Geometry), and the other stages are bounded by what those leave. No
 // other exception leaves it (running out of memory is Error(Geometry) too).
 // A mesh that does not come from the self-checking sweep is checked with
