@@ -1,4 +1,4 @@
-// Glyph preparation, side by side with the incumbent in one run (DESIGN.md
+// Glyph preparation, side by side with the incumbent in one run (docs/design.md
 // section 7): curvetext loads a glyph's outline and builds its GPU-ready mesh
 // (size independent, once per glyph); an atlas renderer loads the glyph with
 // FreeType and renders a 32 px AA bitmap (once per glyph *and size*).

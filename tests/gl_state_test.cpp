@@ -1,4 +1,4 @@
-// The library is a guest in the application's GL context (DESIGN.md section
+// The library is a guest in the application's GL context (docs/design.md section
 // 5): in every context kind and every antialiasing mode, a draw leaves the
 // application's GL state as it found it, draws into the application's
 // framebuffer within its viewport and scissor, and does not take an error the

@@ -1,7 +1,7 @@
 // Laid-out paragraphs drawn through the renderer (render_paragraph_image:
 // glyph meshes, GLES2 curve shader on llvmpipe) against the exact area
 // coverage of the union of the same glyph outlines placed where the layout
-// says (DESIGN.md section 6). This checks what the other layout tests cannot:
+// says (docs/design.md section 6). This checks what the other layout tests cannot:
 // that every line, run, font and alignment shift reaches the pixels. Failing
 // cases write result, reference and diff images to build/test-output.
 #include <GLES2/gl2.h>

@@ -1,4 +1,4 @@
-// The application's GL state around curvetext's calls (DESIGN.md section 5):
+// The application's GL state around curvetext's calls (docs/design.md section 5):
 // everything a draw may change is read first and put back afterwards, also
 // when the call throws, as Dear ImGui's GL backends do. Private to the library.
 #pragma once

@@ -7,7 +7,7 @@
 // exact area of the pixel box inside the triangle (and, for a curved
 // triangle, on the filled side of its arc) and adds it into a coverage
 // buffer. The mesh tiles the nonzero union of the outline exactly (area
-// identity, watertightness, separated hulls: DESIGN.md section 4), so the
+// identity, watertightness, separated hulls: docs/design.md section 4), so the
 // sums are the pixels' coverage, whatever the triangles' shapes and however
 // many meet in a pixel.
 //

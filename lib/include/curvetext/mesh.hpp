@@ -66,7 +66,7 @@ CURVETEXT_API void build_mesh(const Outline& outline, const MeshOptions& options
 // the area of its filled side (chord side for convex, outer side otherwise).
 CURVETEXT_API double mesh_area(const Mesh& mesh);
 
-// The invariants of DESIGN.md section 4, checked on a built mesh.
+// The invariants of docs/design.md section 4, checked on a built mesh.
 struct MeshCheck {
   double area_mesh = 0.0;
   double area_outline = 0.0;          // nonzero area of the quadratic outline

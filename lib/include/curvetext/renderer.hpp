@@ -1,5 +1,5 @@
 // Drawing meshes and text with the GLES2 curve shader (paper section 4, with
-// the exact conic test of DESIGN.md section 3) into the caller's current GL
+// the exact conic test of docs/design.md section 3) into the caller's current GL
 // context. The library does not own windows; see headless.hpp for a context
 // without one.
 #pragma once
@@ -30,7 +30,7 @@ enum class AntiAliasing {
   Auto,    // per size, what bench/quality_bench measures best (text_image.hpp)
 };
 enum class CurveMode {
-  Exact,  // F = tau1^2 - 4 w^2 tau0 tau2 (DESIGN.md section 3), exact for every weight
+  Exact,  // F = tau1^2 - 4 w^2 tau0 tau2 (docs/design.md section 3), exact for every weight
   Paper,  // the paper's equation 2: exact only for weight 1
 };
 

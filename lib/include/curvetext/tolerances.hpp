@@ -13,7 +13,7 @@ namespace curvetext::tolerance {
 
 // --- Curves -----------------------------------------------------------------
 // Largest distance, in device pixels, allowed between a cubic and the
-// quadratics that replace it (DESIGN.md section 3: 1/16 px at every scale).
+// quadratics that replace it (docs/design.md section 3: 1/16 px at every scale).
 inline constexpr double kCubicApproximationPx = 1.0 / 16.0;
 // Largest number of quadratics one cubic may become in cubic_to_quadratics
 // (curves.hpp; guards against absurd scales; at this count the bound is still
