@@ -90,8 +90,8 @@ struct Placement {
   // geometry in front of the text hides it, and its depth_offset the plane's
   // depth change over one pixel (glPolygonOffset's factor 1) plus
   // kOnPlaneDepthOffset: drawn after the plane with GL_LESS, the text shows.
-  // (On a decal the application pulled forward with glPolygonOffset, add its
-  // units to depth_offset.)
+  // (On a decal the application pulls further forward with glPolygonOffset,
+  // add as much, in normalized device z, to depth_offset.)
   static Placement on_plane(const float mvp[16], double viewport_width, double viewport_height,
                             double units_per_outline_unit, double x, double y) {
     Placement p(units_per_outline_unit, x, -y, Transform::plane_to_viewport(mvp, viewport_width, viewport_height));
