@@ -91,17 +91,15 @@ std::size_t emit(const std::array<Vec2, 3>& p, int side, float w, std::uint32_t 
 
 }  // namespace
 
-void pack_mesh(const Mesh& mesh, PackedMesh& out) {
+void pack_mesh(const Mesh& mesh, PackedMesh& out, PackScratch& scratch) {
   // Written into scratch with room for the most a triangle can grow into
   // (6 points, 4 fan triangles), then appended at once: `out` gets exactly
   // its vertices and indices, with no zero-filling or growth on the way.
-  thread_local std::vector<Vertex> vertex_scratch;
-  thread_local std::vector<std::uint32_t> index_scratch;
   const std::size_t triangles = mesh.triangles.size() + mesh.curves.size();
-  if (vertex_scratch.size() < 6 * triangles) vertex_scratch.resize(6 * triangles);
-  if (index_scratch.size() < 12 * triangles) index_scratch.resize(12 * triangles);
-  Vertex* const vertices = vertex_scratch.data();
-  std::uint32_t* const indices = index_scratch.data();
+  if (scratch.vertices.size() < 6 * triangles) scratch.vertices.resize(6 * triangles);
+  if (scratch.indices.size() < 12 * triangles) scratch.indices.resize(12 * triangles);
+  Vertex* const vertices = scratch.vertices.data();
+  std::uint32_t* const indices = scratch.indices.data();
   const auto base = static_cast<std::uint32_t>(out.vertices.size());
   std::size_t nv = 0, ni = 0;
   auto add = [&](const std::array<Vec2, 3>& p, int side, float w) {
