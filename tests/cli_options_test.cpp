@@ -183,19 +183,27 @@ TEST(CliSvg, PathsHaveTheGlyphAreaAtTheLayoutPositions) {
 
 using Strings = std::vector<std::string>;
 
+Strings args_of(std::string_view line) { return parse_job(line).arguments; }
+
 TEST(CliJobs, LineToArguments) {
-  EXPECT_EQ(job_arguments(R"({"text": "Hi", "size": 24, "markup": true, "debug": false, "output": "a.png"})"),
+  EXPECT_EQ(args_of(R"({"text": "Hi", "size": 24, "markup": true, "debug": false, "output": "a.png"})"),
             (Strings{"--text", "Hi", "--size", "24", "--markup", "-o", "a.png"}));
   // Arrays repeat the option in order; numbers stay as written.
-  EXPECT_EQ(job_arguments(R"( {"font":["A","B"],"rotate":-1.5e1,"scale":[2, 0.5]} )"),
+  EXPECT_EQ(args_of(R"( {"font":["A","B"],"rotate":-1.5e1,"scale":[2, 0.5]} )"),
             (Strings{"--font", "A", "--font", "B", "--rotate", "-1.5e1", "--scale", "2", "--scale", "0.5"}));
-  EXPECT_EQ(job_arguments("{}"), Strings{});
-  EXPECT_EQ(job_arguments(R"({"font": []})"), Strings{});
+  EXPECT_EQ(args_of("{}"), Strings{});
+  EXPECT_EQ(args_of(R"({"font": []})"), Strings{});
   // Escapes, a surrogate pair among them, decoded to UTF-8.
-  EXPECT_EQ(job_arguments(R"({"text": "a\"b\\c\/\n\t\u00e9\u4e2d\ud83d\ude00"})"),
+  EXPECT_EQ(args_of(R"({"text": "a\"b\\c\/\n\t\u00e9\u4e2d\ud83d\ude00"})"),
             (Strings{"--text", "a\"b\\c/\n\t\xc3\xa9\xe4\xb8\xad\xf0\x9f\x98\x80"}));
   // "-" is only refused where it means a standard stream.
-  EXPECT_EQ(job_arguments(R"({"align": "-"})"), (Strings{"--align", "-"}));
+  EXPECT_EQ(args_of(R"({"align": "-"})"), (Strings{"--align", "-"}));
+}
+
+TEST(CliJobs, OutputIsTheOutputKeys) {
+  EXPECT_EQ(parse_job(R"({"text": "-o", "output": "x.png"})").output, "x.png");
+  EXPECT_EQ(parse_job(R"({"output": ["a.png", "b.png"]})").output, "b.png");  // the last -o wins
+  EXPECT_EQ(parse_job(R"({"text": "a"})").output, "");
 }
 
 TEST(CliJobs, BadLinesNameTheColumn) {
@@ -229,7 +237,7 @@ TEST(CliJobs, BadLinesNameTheColumn) {
   };
   for (const auto& [line, part] : cases) {
     try {
-      job_arguments(line);
+      parse_job(line);
       ADD_FAILURE() << "no error for " << line;
     } catch (const Error& e) {
       EXPECT_EQ(e.code(), ErrorCode::InvalidArgument) << line;

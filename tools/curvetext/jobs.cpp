@@ -17,7 +17,7 @@ class JobParser {
  public:
   explicit JobParser(std::string_view line) : s_(line) {}
 
-  std::vector<std::string> parse() {
+  Job parse() {
     skip_space();
     expect('{');
     skip_space();
@@ -30,7 +30,7 @@ class JobParser {
     }
     skip_space();
     if (i_ != s_.size()) fail("text after the job's object");
-    return std::move(args_);
+    return std::move(job_);
   }
 
  private:
@@ -96,14 +96,15 @@ class JobParser {
         i_ = column;
         fail("\"" + key + "\": \"-\" (standard input or output) is not available to a job");
       }
-      args_.push_back(option);
-      args_.push_back(std::move(value));
+      if (key == "output") job_.output = value;
+      job_.arguments.push_back(option);
+      job_.arguments.push_back(std::move(value));
     } else if (c == '-' || (c >= '0' && c <= '9')) {
-      args_.push_back(option);
-      args_.push_back(number());
+      job_.arguments.push_back(option);
+      job_.arguments.push_back(number());
     } else if (!in_array && s_.substr(i_, 4) == "true") {
       i_ += 4;
-      args_.push_back(option);
+      job_.arguments.push_back(option);
     } else if (!in_array && s_.substr(i_, 5) == "false") {
       i_ += 5;
     } else if (c == '{' || c == '[') {
@@ -232,7 +233,7 @@ class JobParser {
 
   std::string_view s_;
   std::size_t i_ = 0;
-  std::vector<std::string> args_;
+  Job job_;
   std::set<std::string> keys_;
 };
 
@@ -275,21 +276,14 @@ bool read_line(std::FILE* in, std::string& line, bool& too_long) {
 
 bool blank(const std::string& line) { return line.find_first_not_of(" \t\r") == std::string::npos; }
 
-// The job's output (its -o), for the report.
-std::string output_of(const std::vector<std::string>& args) {
-  for (std::size_t k = 0; k + 1 < args.size(); ++k)
-    if (args[k] == "-o") return args[k + 1];
-  return {};
-}
-
 // Runs one job; its error message, empty when it succeeded.
 std::string run_one(const std::string& line, bool too_long,
                     const std::function<void(const std::vector<std::string>&)>& run, std::string& output) {
   try {
     if (too_long) throw Error(ErrorCode::InvalidArgument, "longer than " + std::to_string(kMaxJobLineBytes) + " bytes");
-    const std::vector<std::string> args = job_arguments(line);
-    output = output_of(args);
-    run(args);
+    const Job job = parse_job(line);
+    output = job.output;
+    run(job.arguments);
     return {};
   } catch (const UsageError& e) {
     const std::string unknown = "unknown option --";
@@ -302,7 +296,7 @@ std::string run_one(const std::string& line, bool too_long,
 
 }  // namespace
 
-std::vector<std::string> job_arguments(std::string_view line) { return JobParser(line).parse(); }
+Job parse_job(std::string_view line) { return JobParser(line).parse(); }
 
 std::optional<std::string> jobs_source(const std::vector<std::string>& args) {
   if (args.empty()) return std::nullopt;

@@ -18,16 +18,21 @@ namespace curvetext::cli {
 inline constexpr std::size_t kMaxJobLineBytes = std::size_t{8} << 20;
 inline constexpr std::size_t kMaxJobs = 100000;
 
-// The arguments a job line stands for: each key is an option without its
-// dashes ("output" is -o), a string or number its value, true a flag (false
-// leaves it out), an array the option repeated in order:
+// A job line: the arguments it stands for, and its output (for the report).
+// Each key is an option without its dashes ("output" is -o), a string or
+// number its value, true a flag (false leaves it out), an array the option
+// repeated in order:
 //   {"text": "Hi", "size": 24, "markup": true, "font": ["A", "B"], "output": "a.png"}
 //   -> --text Hi --size 24 --markup --font A --font B -o a.png
 // Throws Error(InvalidArgument) naming the column for anything else: not one
-// JSON object, null or a nested object, a key given twice, "jobs", or "-" (standard
-// input or output, which the job list and the report use) as text, text-file,
-// input or output.
-std::vector<std::string> job_arguments(std::string_view line);
+// JSON object, null or a nested object, a key given twice, "jobs", or "-"
+// (standard input or output, which the job list and the report use) as text,
+// text-file, input or output.
+struct Job {
+  std::vector<std::string> arguments;
+  std::string output;
+};
+Job parse_job(std::string_view line);
 
 // The FILE of `--jobs FILE` ("-": standard input) when `args` starts with
 // it; nullopt when it does not. Throws UsageError (kJobsAlone) when other
