@@ -12,9 +12,10 @@
 
 namespace curvetext::cli {
 
-// A job line longer than this is refused (its text at the text limit, 4 MiB,
-// fits twice over, escapes included), and a list of more jobs than this stops
-// there: memory stays bounded whatever is piped in.
+// A job line longer than this is refused (twice the text limit, 4 MiB: room
+// for a text at the limit in UTF-8, or with its 3-byte characters written as
+// \u escapes), and a list of more jobs than this stops there: memory stays
+// bounded whatever is piped in.
 inline constexpr std::size_t kMaxJobLineBytes = std::size_t{8} << 20;
 inline constexpr std::size_t kMaxJobs = 100000;
 
