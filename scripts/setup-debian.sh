@@ -23,8 +23,9 @@ packages=(
   # fuzzing (scripts/fuzz.sh): clang 14 with its libFuzzer and sanitizer runtimes, and
   # hb-subset, which cuts the font target's seeds from installed fonts
   clang libclang-rt-14-dev libharfbuzz-bin
-  # the incumbent layout engine the benchmarks compare with
-  libpango1.0-dev
+  # the incumbent layout engine the benchmarks compare with, and its pango-view
+  # (bench/batch_render_bench.sh)
+  libpango1.0-dev pango1.0-tools
   # fonts: the default font (DejaVu Sans) and the test corpus
   fonts-dejavu-core fonts-dejavu-extra fonts-noto-core fonts-noto-cjk fonts-urw-base35
   fonts-inter-variable

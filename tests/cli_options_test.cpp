@@ -1,7 +1,7 @@
 // The CLI's option values (tools/curvetext/option_values.hpp), its argument
 // walker and output formats (cli.hpp), the paragraph options
-// (layout_options.hpp) and SVG output (svg_output.hpp): what each accepts and
-// the errors it gives. The CLI's own behaviour is tests/cli/cli_test.sh.
+// (layout_options.hpp), SVG output (svg_output.hpp) and job lines (jobs.hpp):
+// what each accepts and the errors it gives. The CLI's own behaviour is tests/cli/cli_test.sh.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,6 +15,7 @@
 #include "curvetext/renderer.hpp"
 #include "curvetext/tolerances.hpp"
 #include "cli.hpp"
+#include "jobs.hpp"
 #include "curvetext/layout.hpp"
 #include "curvetext/paragraph_image.hpp"
 #include "curvetext/shapes.hpp"
@@ -178,6 +179,92 @@ TEST(CliSvg, PathsHaveTheGlyphAreaAtTheLayoutPositions) {
   EXPECT_NEAR(max_x, 10.0 + ink.x + ink.width, 0.01);
   EXPECT_NE(svg.find("width=\"" + std::to_string(paragraph_image_size(p, {}).width - 12) + "\""), std::string::npos)
       << svg.substr(0, 200);
+}
+
+using Strings = std::vector<std::string>;
+
+Strings args_of(std::string_view line) { return parse_job(line).arguments; }
+
+TEST(CliJobs, LineToArguments) {
+  EXPECT_EQ(args_of(R"({"text": "Hi", "size": 24, "markup": true, "debug": false, "output": "a.png"})"),
+            (Strings{"--text", "Hi", "--size", "24", "--markup", "-o", "a.png"}));
+  // Arrays repeat the option in order; numbers stay as written.
+  EXPECT_EQ(args_of(R"( {"font":["A","B"],"rotate":-1.5e1,"scale":[2, 0.5]} )"),
+            (Strings{"--font", "A", "--font", "B", "--rotate", "-1.5e1", "--scale", "2", "--scale", "0.5"}));
+  EXPECT_EQ(args_of("{}"), Strings{});
+  EXPECT_EQ(args_of(R"({"font": []})"), Strings{});
+  // Escapes, a surrogate pair among them, decoded to UTF-8.
+  EXPECT_EQ(args_of(R"({"text": "a\"b\\c\/\n\t\u00e9\u4e2d\ud83d\ude00"})"),
+            (Strings{"--text", "a\"b\\c/\n\t\xc3\xa9\xe4\xb8\xad\xf0\x9f\x98\x80"}));
+  // "-" is only refused where it means a standard stream.
+  EXPECT_EQ(args_of(R"({"align": "-"})"), (Strings{"--align", "-"}));
+}
+
+TEST(CliJobs, OutputIsTheOutputKeys) {
+  EXPECT_EQ(parse_job(R"({"text": "-o", "output": "x.png"})").output, "x.png");
+  EXPECT_EQ(parse_job(R"({"output": ["a.png", "b.png"]})").output, "b.png");  // the last -o wins
+  EXPECT_EQ(parse_job(R"({"text": "a"})").output, "");
+}
+
+TEST(CliJobs, BadLinesNameTheColumn) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"", "column 1: expected '{'"},
+      {"[1]", "column 1: expected '{'"},
+      {R"({"text": "a")", "column 13: expected ',' or '}'"},
+      {R"({"text": "a"} x)", "column 15: text after"},
+      {R"({"text": "a)", "column 12: string not closed"},
+      {R"({text: 1})", "column 2: expected a key"},
+      {R"({"Size": 1})", "key \"Size\" is not an option name"},
+      {R"({"--size": 1})", "is not an option name"},
+      {R"({"size": 1, "size": 2})", "given twice"},
+      {R"({"jobs": "x"})", "cannot name more jobs"},
+      {R"({"size": null})", "expected a string, a number, true or false"},
+      {R"({"size": {"a": 1}})", "nested objects"},
+      {R"({"font": [["a"]]})", "nested arrays"},
+      {R"({"markup": [true]})", "expected a string, a number"},
+      {R"({"size": 01})", "bad number"},
+      {R"({"size": 1.})", "bad number"},
+      {R"({"size": -})", "bad number"},
+      {R"({"text": "\x"})", "bad escape \\x"},
+      {R"({"text": "\u12"})", "four hex digits"},
+      {R"({"text": "\ud83d"})", "high surrogate alone"},
+      {R"({"text": "\ude00"})", "low surrogate alone"},
+      {"{\"text\": \"a\tb\"}", "control character"},
+      {R"({"output": "-"})", "\"output\": \"-\" (standard input or output)"},
+      {R"({"text": "-"})", "not available to a job"},
+      {R"({"text-file": "-"})", "not available to a job"},
+      {R"({"input": "-"})", "not available to a job"},
+  };
+  for (const auto& [line, part] : cases) {
+    try {
+      parse_job(line);
+      ADD_FAILURE() << "no error for " << line;
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ErrorCode::InvalidArgument) << line;
+      EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << line << ": " << e.what();
+    }
+  }
+}
+
+TEST(CliJobs, JobsComeAlone) {
+  EXPECT_EQ(jobs_source({"--jobs", "list.jsonl"}), std::optional<std::string>("list.jsonl"));
+  EXPECT_EQ(jobs_source({"--jobs=-"}), std::optional<std::string>("-"));
+  EXPECT_EQ(jobs_source({"--text", "--jobs"}), std::nullopt);  // the text "--jobs"
+  EXPECT_EQ(jobs_source({}), std::nullopt);
+  for (const Strings& args : {Strings{"--jobs", "a", "--size", "3"}, Strings{"--jobs=a", "b"}}) {
+    try {
+      jobs_source(args);
+      ADD_FAILURE() << "no error";
+    } catch (const UsageError& e) {
+      EXPECT_NE(e.message.find("takes no other options"), std::string::npos) << e.message;
+    }
+  }
+  try {
+    jobs_source({"--jobs"});
+    ADD_FAILURE() << "no error";
+  } catch (const UsageError& e) {
+    EXPECT_NE(e.message.find("needs a value"), std::string::npos) << e.message;
+  }
 }
 
 }  // namespace

@@ -1,14 +1,19 @@
 // PNG files: write_png keeps every pixel exactly while storing the fewest
-// channels that hold them, and reports I/O errors as Error(Io).
+// channels that hold them, and reports I/O errors as Error(Io); encode_png
+// and decode_png do the same in memory.
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
+#include <vector>
 
 #include "curvetext/error.hpp"
 #include "curvetext/image.hpp"
+#include "support/expect_error.hpp"
 
 namespace curvetext {
 namespace {
@@ -44,14 +49,28 @@ Image sample(Edit edit) {
   return image;
 }
 
+std::vector<std::uint8_t> file_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void expect_same_pixels(const Image& back, const Image& image, const std::string& name) {
+  EXPECT_EQ(back.width, image.width) << name;
+  EXPECT_EQ(back.height, image.height) << name;
+  EXPECT_TRUE(back.rgba == image.rgba) << name << ": pixels changed";
+}
+
+// Through a file and through memory: the same bytes, the same pixels back.
 void expect_round_trip(const Image& image, int colour_type, const std::string& name) {
   const std::string path = temp_path(name + ".png");
   write_png(image, path);
   EXPECT_EQ(png_colour_type(path), colour_type) << name;
-  const Image back = read_png(path);
-  EXPECT_EQ(back.width, image.width) << name;
-  EXPECT_EQ(back.height, image.height) << name;
-  EXPECT_TRUE(back.rgba == image.rgba) << name << ": pixels changed";
+  expect_same_pixels(read_png(path), image, name);
+  const std::vector<std::uint8_t> bytes = encode_png(image);
+  EXPECT_TRUE(bytes == file_bytes(path)) << name << ": encode_png differs from the file write_png wrote";
+  ASSERT_GT(bytes.size(), 26u);
+  EXPECT_EQ(bytes[25], colour_type) << name;
+  expect_same_pixels(decode_png(bytes.data(), bytes.size()), image, name);
   std::filesystem::remove(path);
 }
 
@@ -111,6 +130,23 @@ TEST(Png, EmptyImageIsInvalidArgument) {
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ErrorCode::InvalidArgument);
   }
+}
+
+TEST(Png, EncodeEmptyImageIsInvalidArgument) {
+  testing::expect_error([] { encode_png(Image{}); }, ErrorCode::InvalidArgument, "in memory");
+  Image bad(4, 4);
+  bad.rgba.pop_back();
+  testing::expect_error([&] { encode_png(bad); }, ErrorCode::InvalidArgument, "bad size");
+}
+
+TEST(Png, DecodeOfOtherBytesIsIoError) {
+  const std::vector<std::uint8_t> text = {'n', 'o', 't', ' ', 'a', ' ', 'p', 'n', 'g'};
+  testing::expect_error([&] { decode_png(text.data(), text.size()); }, ErrorCode::Io, "in memory");
+  testing::expect_error([] { decode_png(nullptr, 0); }, ErrorCode::Io, "in memory");
+  // A PNG cut short: its header reads, its pixels do not.
+  std::vector<std::uint8_t> bytes = encode_png(sample([](std::uint8_t* p, int x, int) { p[1] = 3 * x; }));
+  bytes.resize(bytes.size() / 2);
+  testing::expect_error([&] { decode_png(bytes.data(), bytes.size()); }, ErrorCode::Io, "in memory");
 }
 
 }  // namespace

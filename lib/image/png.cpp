@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -91,16 +92,39 @@ void on_png_error(png_structp png, png_const_charp message) {
 
 void on_png_warning(png_structp, png_const_charp) {}
 
+// Where the encoder's bytes go: a file, or else a byte vector.
+struct PngSink {
+  std::FILE* file = nullptr;
+  std::vector<std::uint8_t>* bytes = nullptr;
+};
+
+void append_bytes(png_structp png, png_bytep data, png_size_t size) {
+  auto* bytes = static_cast<std::vector<std::uint8_t>*>(png_get_io_ptr(png));
+  bool grown = true;
+  try {
+    bytes->insert(bytes->end(), data, data + size);
+  } catch (const std::bad_alloc&) {
+    grown = false;
+  }
+  // png_error longjmps: outside the handler, so no exception is left live.
+  if (!grown) png_error(png, "out of memory");
+}
+
+void flush_nothing(png_structp) {}
+
 // Rows unfiltered, deflated for speed: on rendered text (long runs of
 // background, short antialiased edges) zlib's level 1 is smaller than its
 // default with adaptive filters and 3-5 times faster; for grey, run-length
 // matches alone are as small and faster still (colour repeats every 3 or 4
 // bytes, which they miss). False on a libpng error (the message is in the
 // error pointer's WriteErrors).
-bool encode_png(png_structp png, png_infop info, std::FILE* file, int width, int height, int channels,
-                const std::uint8_t* pixels) {
+bool encode_rows(png_structp png, png_infop info, PngSink sink, int width, int height, int channels,
+                 const std::uint8_t* pixels) {
   if (setjmp(png_jmpbuf(png))) return false;
-  png_init_io(png, file);
+  if (sink.file != nullptr)
+    png_init_io(png, sink.file);
+  else
+    png_set_write_fn(png, sink.bytes, append_bytes, flush_nothing);
   png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8, color_type(channels),
                PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
@@ -132,26 +156,57 @@ struct PngWriter {
   ~PngWriter() { png_destroy_write_struct(&png, &info); }
 };
 
+// Encodes `image` into `sink`; `name` (the path, or "a PNG in memory") heads
+// the errors.
+void encode(const Image& image, PngSink sink, const std::string& name) {
+  const int channels = channels_needed(image);
+  const std::vector<std::uint8_t> packed = channels == 4 ? std::vector<std::uint8_t>() : pack_channels(image, channels);
+  PngWriter writer;
+  if (writer.info == nullptr) throw Error(ErrorCode::Io, "cannot write " + name + ": out of memory");
+  if (!encode_rows(writer.png, writer.info, sink, image.width, image.height, channels,
+                   channels == 4 ? image.rgba.data() : packed.data())) {
+    throw Error(ErrorCode::Io, "cannot write " + name + ": " + writer.errors.message);
+  }
+}
+
+void check_size(const Image& image, const std::string& name) {
+  if (image.width <= 0 || image.height <= 0 ||
+      image.rgba.size() != static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 4) {
+    throw Error(ErrorCode::InvalidArgument, "cannot write " + name + ": image has no pixels or a bad size");
+  }
+}
+
+// Finishes a read begun on `png` into RGBA8; `name` heads the errors.
+Image finish_read(PngImage& png, const std::string& name) {
+  png.image.format = PNG_FORMAT_RGBA;
+  if (png.image.width > 1u << 16 || png.image.height > 1u << 16) {
+    throw Error(ErrorCode::Io, "cannot read " + name + ": image too large");
+  }
+  Image out(static_cast<int>(png.image.width), static_cast<int>(png.image.height));
+  if (!png_image_finish_read(&png.image, nullptr, out.rgba.data(), static_cast<png_int_32>(out.width) * 4, nullptr)) {
+    throw Error(ErrorCode::Io, "cannot read " + name + ": " + png.image.message);
+  }
+  return out;
+}
+
 }  // namespace
 
 void write_png(const Image& image, const std::string& path) {
-  if (image.width <= 0 || image.height <= 0 ||
-      image.rgba.size() != static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 4) {
-    throw Error(ErrorCode::InvalidArgument, "cannot write " + path + ": image has no pixels or a bad size");
-  }
-  const int channels = channels_needed(image);
-  const std::vector<std::uint8_t> packed = channels == 4 ? std::vector<std::uint8_t>() : pack_channels(image, channels);
+  check_size(image, path);
   // Open the file ourselves so the error names the system's reason.
   FilePtr file(std::fopen(path.c_str(), "wb"));
   if (!file) throw Error(ErrorCode::Io, "cannot write " + path + ": " + std::strerror(errno));
-  PngWriter writer;
-  if (writer.info == nullptr) throw Error(ErrorCode::Io, "cannot write " + path + ": out of memory");
-  if (!encode_png(writer.png, writer.info, file.get(), image.width, image.height, channels,
-                  channels == 4 ? image.rgba.data() : packed.data())) {
-    throw Error(ErrorCode::Io, "cannot write " + path + ": " + writer.errors.message);
-  }
+  encode(image, PngSink{file.get(), nullptr}, path);
   std::FILE* f = file.release();
   if (std::fclose(f) != 0) throw Error(ErrorCode::Io, "cannot write " + path + ": close failed (disk full?)");
+}
+
+std::vector<std::uint8_t> encode_png(const Image& image) {
+  const std::string name = "a PNG in memory";
+  check_size(image, name);
+  std::vector<std::uint8_t> bytes;
+  encode(image, PngSink{nullptr, &bytes}, name);
+  return bytes;
 }
 
 Image read_png(const std::string& path) {
@@ -159,15 +214,16 @@ Image read_png(const std::string& path) {
   if (!png_image_begin_read_from_file(&png.image, path.c_str())) {
     throw Error(ErrorCode::Io, "cannot read " + path + ": " + png.image.message);
   }
-  png.image.format = PNG_FORMAT_RGBA;
-  if (png.image.width > 1u << 16 || png.image.height > 1u << 16) {
-    throw Error(ErrorCode::Io, "cannot read " + path + ": image too large");
+  return finish_read(png, path);
+}
+
+Image decode_png(const std::uint8_t* data, std::size_t size) {
+  PngImage png;
+  if (data == nullptr || !png_image_begin_read_from_memory(&png.image, data, size)) {
+    throw Error(ErrorCode::Io,
+                std::string("cannot read a PNG in memory: ") + (data == nullptr ? "no data" : png.image.message));
   }
-  Image out(static_cast<int>(png.image.width), static_cast<int>(png.image.height));
-  if (!png_image_finish_read(&png.image, nullptr, out.rgba.data(), static_cast<png_int_32>(out.width) * 4, nullptr)) {
-    throw Error(ErrorCode::Io, "cannot read " + path + ": " + png.image.message);
-  }
-  return out;
+  return finish_read(png, "a PNG in memory");
 }
 
 }  // namespace curvetext

@@ -396,6 +396,79 @@ assert width("/ls.json") - base in (12, 15), (base, width("/ls.json"))
 assert abs(width("/ws.json") - base - 7) < 1e-3, (base, width("/ws.json"))
 PY
 then ok "layout: JSON by default, --letter-spacing, --word-spacing"; else bad "layout JSON/spacing: $(cat "$tmp/stderr")"; fi
+# --- many images from one process: --jobs ---------------------------------------
+# Each job's image equals the one its options give alone, byte for byte, with
+# fallback, markup, a family name, a transform and SVG among them; a bad job is
+# reported with its line and the others are still done.
+mkdir -p "$tmp/batch"
+cat >"$tmp/batch/jobs.jsonl" <<JOBS
+{"text": "Hamburg Qg", "size": 24, "output": "$tmp/batch/a.png"}
+{"text": "Caf\u00e9 \u4e2d\u6587 \u0627\u0644\u0639\u0631\u0628\u064a\u0629", "size": 20, "fg": "#204080", "output": "$tmp/batch/b.png"}
+
+{"text": "<b>Bold</b> <i>it</i> <u>u</u>", "markup": true, "font": ["DejaVu Serif", "Noto Sans"], "output": "$tmp/batch/c.png"}
+{"text": "x", "sizee": 3, "output": "$tmp/batch/bad1.png"}
+{"text": "Turned", "rotate": 30, "scale": "1.5,1", "aa": "vbaa", "debug": false, "output": "$tmp/batch/d.png"}
+{"text": "x" "output": "$tmp/batch/bad2.png"}
+{"text-file": "$tmp/text.txt", "width": 60, "align": "center", "output": "$tmp/batch/e.svg"}
+JOBS
+single_args=(
+  "a.png|--text|Hamburg Qg|--size|24"
+  "b.png|--text|Café 中文 العربية|--size|20|--fg|#204080"
+  "c.png|--text|<b>Bold</b> <i>it</i> <u>u</u>|--markup|--font|DejaVu Serif|--font|Noto Sans"
+  "d.png|--text|Turned|--rotate|30|--scale|1.5,1|--aa|vbaa"
+  "e.svg|--text-file|$tmp/text.txt|--width|60|--align|center"
+)
+timeout 120 "$CURVETEXT" render --jobs "$tmp/batch/jobs.jsonl" >"$tmp/batch/report" 2>"$tmp/batch/stderr"
+rc=$?
+same=0
+for spec in "${single_args[@]}"; do
+  IFS='|' read -r -a parts <<<"$spec"
+  timeout 120 "$CURVETEXT" render "${parts[@]:1}" -o "$tmp/batch/single-${parts[0]}" 2>>"$tmp/batch/stderr-single" &&
+    cmp -s "$tmp/batch/single-${parts[0]}" "$tmp/batch/${parts[0]}" && same=$((same + 1))
+done
+if [ "$rc" -eq 1 ] && [ "$same" -eq 5 ] && [ ! -e "$tmp/batch/bad1.png" ] && [ ! -e "$tmp/batch/bad2.png" ] &&
+   [ "$(wc -l <"$tmp/batch/report")" -eq 7 ] &&
+   grep -qF '{"line":5,"error":"unknown key \"sizee\""}' "$tmp/batch/report" &&
+   grep -qF "{\"line\":4,\"output\":\"$tmp/batch/c.png\"}" "$tmp/batch/report" &&
+   grep -qF "jobs.jsonl:7: column 14: expected ',' or '}'" "$tmp/batch/stderr" &&
+   grep -qF "2 of 7 jobs failed" "$tmp/batch/stderr"; then
+  ok "render --jobs: 5 images equal to single renders, 2 bad lines reported by number"
+else
+  bad "render --jobs: exit $rc, $same of 5 equal; report: $(cat "$tmp/batch/report"); stderr: $(cat "$tmp/batch/stderr" "$tmp/batch/stderr-single" 2>/dev/null)"
+fi
+# From standard input, and shape too; every job done: exit 0.
+if printf '{"input": "%s", "output": "%s"}\n{"input": "%s", "size": "100x50", "aa": "none", "output": "%s"}\n' \
+     "$shapes/pentagram-evenodd.json" "$tmp/batch/star.png" "$shapes/ellipse-arc.svg" "$tmp/batch/ellipse.png" |
+   timeout 120 "$CURVETEXT" shape --jobs - >"$tmp/batch/report" 2>"$tmp/batch/stderr" &&
+   cmp -s "$tmp/batch/star.png" "$tmp/star.png" && cmp -s "$tmp/batch/ellipse.png" "$tmp/ellipse.png" &&
+   [ "$(wc -l <"$tmp/batch/report")" -eq 2 ] && [ ! -s "$tmp/batch/stderr" ]; then
+  ok "shape --jobs -: images equal to single renders"
+else
+  bad "shape --jobs -: $(cat "$tmp/batch/report" "$tmp/batch/stderr")"
+fi
+expect_error "render --jobs with other options" 2 "takes no other options" -- render --jobs "$tmp/batch/jobs.jsonl" --size 3
+expect_error "render --jobs after other options" 2 "takes no other options" -- render --size 3 --jobs "$tmp/batch/jobs.jsonl"
+expect_error "render --jobs: no such file" 1 "cannot read the job list" -- render --jobs "$tmp/batch/none.jsonl"
+# A line over the limit (8 MiB) and a list of over 100,000 jobs: refused, bounded.
+python3 -c "import sys; sys.stdout.write('{\"text\": \"' + 'a' * (9 << 20) + '\"}\n{\"text\": \"after\", \"output\": \"' + sys.argv[1] + '\"}\n')" \
+  "$tmp/batch/after.png" >"$tmp/batch/long.jsonl"
+timeout 60 "$CURVETEXT" render --jobs "$tmp/batch/long.jsonl" >"$tmp/batch/report" 2>"$tmp/batch/stderr"
+rc=$?
+if [ "$rc" -eq 1 ] && grep -qF "long.jsonl:1: longer than 8388608 bytes" "$tmp/batch/stderr" && [ -s "$tmp/batch/after.png" ]; then
+  ok "render --jobs: an overlong line refused, the next job done"
+else
+  bad "render --jobs overlong line: exit $rc, $(head -c 300 "$tmp/batch/stderr")"
+fi
+python3 -c "import sys; sys.stdout.write('{}\n' * 100001)" >"$tmp/batch/many.jsonl"
+timeout 60 "$CURVETEXT" render --jobs - <"$tmp/batch/many.jsonl" >"$tmp/batch/report" 2>"$tmp/batch/stderr"
+rc=$?
+if [ "$rc" -eq 1 ] && grep -qF "standard input:100001: more than 100000 jobs" "$tmp/batch/stderr" &&
+   [ "$(wc -l <"$tmp/batch/report")" -eq 100000 ]; then
+  ok "render --jobs: a list of more than 100,000 jobs stops there"
+else
+  bad "render --jobs too many: exit $rc, $(tail -n 2 "$tmp/batch/stderr")"
+fi
+
 # Every option a command parses is listed in --help and in docs/cli.md.
 "$CURVETEXT" --help >"$tmp/help.txt"
 missing=""

@@ -6,10 +6,7 @@
 #include <cctype>
 #include <charconv>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <memory>
 
 #include "curvetext/default_font.hpp"
@@ -104,7 +101,7 @@ OutputFormat output_format(const std::string& path, const std::optional<std::str
               "cannot write '" + path + "': the output must end in .png or .svg (or give --format png|svg)");
 }
 
-void write_output(const std::string& bytes, const std::string& path) {
+void write_output(std::string_view bytes, const std::string& path) {
   const bool to_stdout = path == "-";
   std::FILE* out = to_stdout ? stdout : std::fopen(path.c_str(), "wb");
   if (!out) throw Error(ErrorCode::Io, "cannot write " + path);
@@ -116,21 +113,8 @@ void write_output(const std::string& bytes, const std::string& path) {
 void write_png_output(const Image& image, const std::string& path) {
   if (path != "-") return write_png(image, path);
   if (isatty(STDOUT_FILENO)) throw Error(ErrorCode::Io, "standard output is a terminal: not writing a PNG there");
-  // write_png takes a path: the PNG goes through a private temporary file.
-  const char* dir = std::getenv("TMPDIR");
-  std::string name = std::string(dir && *dir ? dir : "/tmp") + "/curvetext-XXXXXX";
-  const int fd = mkstemp(name.data());
-  if (fd < 0) throw Error(ErrorCode::Io, "cannot create a temporary file for standard output in " + name);
-  close(fd);
-  struct Remove {
-    const std::string& name;
-    ~Remove() { std::remove(name.c_str()); }
-  } remove{name};
-  write_png(image, name);
-  std::ifstream in(name, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (!in.good() && !in.eof()) throw Error(ErrorCode::Io, "cannot read back " + name);
-  write_output(bytes, "-");
+  const std::vector<std::uint8_t> bytes = encode_png(image);
+  write_output(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), "-");
 }
 
 namespace {

@@ -69,8 +69,9 @@ OutputFormat output_format(const std::string& path, const std::optional<std::str
 
 // Writes the bytes to `path`, or to standard output for "-". Throws Error(Io)
 // naming the path.
-void write_output(const std::string& bytes, const std::string& path);
-// write_png, or the PNG's bytes to standard output for "-".
+void write_output(std::string_view bytes, const std::string& path);
+// write_png, or encode_png's bytes to standard output for "-" (refused when
+// it is a terminal).
 void write_png_output(const Image& image, const std::string& path);
 
 // Options that pick a face: --font FILE, --face-index N, --variations LIST.

@@ -49,6 +49,10 @@ constexpr const char* kUsage =
     "  --rotate DEG, --scale SX[,SY], --skew AX[,AY], --perspective DEG[,DIST],\n"
     "  --transform a,b,c,d,e,f[,g,h,i]  about the image centre, in the order given;\n"
     "                           the image grows to fit              (default: none)\n"
+    "       curvetext render --jobs FILE|-   many images in one process: FILE holds one job per\n"
+    "                        line, a JSON object of the options above (\"output\" for -o):\n"
+    "                        {\"text\": \"Hi\", \"size\": 24, \"markup\": true, \"output\": \"hi.png\"};\n"
+    "                        each job reported on stdout as {\"line\":N,\"output\"|\"error\":...}\n"
     "       curvetext layout (--text UTF8 | --text-file FILE) [the text, font and paragraph\n"
     "                        options of render] [--json]: the layout as JSON (the only output)\n"
     "       curvetext check  [--font FILE] [--face-index N] [--variations ...] [--size PX (64)]\n"
@@ -58,6 +62,7 @@ constexpr const char* kUsage =
     "       curvetext shape  --input FILE(.json|.svg) -o OUT.png [--size WxH (from the file, else 512\n"
     "                        on the longer side)] [--scale PX_PER_UNIT (fit)] [--fg COLOR (each shape's)]\n"
     "                        [--bg COLOR] [the PNG-only options of render] (--scale is pixels per unit)\n"
+    "       curvetext shape  --jobs FILE|-   shape's options per job line, as render --jobs\n"
     "       curvetext --help | --version\n"
     "Every option also takes the form --option=VALUE.\n"
     "COLOR is #rgb, #rrggbb, #rrggbbaa or black, white, red, green, blue, transparent.\n";

@@ -1,11 +1,13 @@
 // curvetext render: text to a PNG or SVG. Every render is a paragraph
 // (bidi, script itemisation, font fallback through fontconfig); without
-// --width it has no wrapping, one line per paragraph.
+// --width it has no wrapping, one line per paragraph. With --jobs, many
+// renders in one process (jobs.hpp).
 #include "cli.hpp"
 #include "curvetext/error.hpp"
 #include "curvetext/image.hpp"
 #include "curvetext/paragraph_image.hpp"
 #include "gl_session.hpp"
+#include "jobs.hpp"
 #include "layout_options.hpp"
 #include "style_options.hpp"
 #include "svg_output.hpp"
@@ -27,9 +29,11 @@ void write_png_image(const Paragraph& p, const StyleCli& style, ParagraphImageOp
   write_png_output(render_paragraph_image(gl.renderer, gl.cache, p, options), output);
 }
 
-}  // namespace
-
-int run_render(const std::vector<std::string>& arguments) {
+// One render, from the command line or a job. Each has a font collection of
+// its own, so fallback does not depend on the jobs before it (a collection
+// tries the faces it handed out first); the GL context and the glyph cache
+// (keyed by font content) are shared.
+void render(const std::vector<std::string>& arguments) {
   FontChoice font_choice;
   TextCli input;
   LayoutCli paragraph;
@@ -52,6 +56,8 @@ int run_render(const std::vector<std::string>& arguments) {
       options.margin_px = parse_number(a, args.value());
     else if (a == "--fg")  // colours text outside markup colour spans
       paragraph.style.default_style.color = parse_color(args.value());
+    else if (a == "--jobs")
+      throw UsageError{kJobsAlone};
     else
       throw UsageError{"unknown option " + a};
   }
@@ -69,6 +75,13 @@ int run_render(const std::vector<std::string>& arguments) {
     write_output(paragraph_svg(p, options.margin_px, options.background), *output);
   else
     write_png_image(p, style, options, *output);
+}
+
+}  // namespace
+
+int run_render(const std::vector<std::string>& arguments) {
+  if (const std::optional<std::string> jobs = jobs_source(arguments)) return run_jobs(*jobs, render);
+  render(arguments);
   return 0;
 }
 

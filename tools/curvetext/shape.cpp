@@ -1,8 +1,10 @@
-// curvetext shape: a shape document (NURBS JSON or SVG) to a PNG.
+// curvetext shape: a shape document (NURBS JSON or SVG) to a PNG; with
+// --jobs, many in one process (jobs.hpp).
 #include <cmath>
 
 #include "cli.hpp"
 #include "gl_session.hpp"
+#include "jobs.hpp"
 #include "curvetext/error.hpp"
 #include "curvetext/image.hpp"
 #include "curvetext/shape_image.hpp"
@@ -23,9 +25,7 @@ void parse_size(const std::string& text, int& width, int& height) {
     throw Error(ErrorCode::InvalidArgument, "--size " + text + ": sides must be at least 1 px");
 }
 
-}  // namespace
-
-int run_shape(const std::vector<std::string>& arguments) {
+void shape(const std::vector<std::string>& arguments) {
   std::optional<std::string> input, output;
   std::optional<Color> foreground;
   ShapeImageOptions options;
@@ -47,6 +47,8 @@ int run_shape(const std::vector<std::string>& arguments) {
         throw Error(ErrorCode::InvalidArgument, "--scale must be a positive number of pixels per unit");
     } else if (a == "--fg")
       foreground = parse_color(args.value());
+    else if (a == "--jobs")
+      throw UsageError{kJobsAlone};
     else
       throw UsageError{"unknown option " + a};
   }
@@ -67,6 +69,13 @@ int run_shape(const std::vector<std::string>& arguments) {
   }
   const ShapeImageLayout layout = layout_shape_image(doc, options);
   write_png_output(render_shape_image(gl_session().renderer, doc, layout, options), *output);
+}
+
+}  // namespace
+
+int run_shape(const std::vector<std::string>& arguments) {
+  if (const std::optional<std::string> jobs = jobs_source(arguments)) return run_jobs(*jobs, shape);
+  shape(arguments);
   return 0;
 }
 

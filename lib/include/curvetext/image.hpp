@@ -1,6 +1,7 @@
 // RGBA images (8 bits per channel, row 0 at the top) and PNG files.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -27,8 +28,15 @@ struct Image {
 // Error(InvalidArgument) for an image without pixels or whose size does not
 // match its data.
 CURVETEXT_API void write_png(const Image& image, const std::string& path);
+// write_png to memory: the same PNG file's bytes, for a caller that sends
+// them on (standard output, a socket, an archive) without a file. Throws
+// Error(InvalidArgument) as write_png does, Error(Io) on a libpng error.
+CURVETEXT_API std::vector<std::uint8_t> encode_png(const Image& image);
 // Any PNG, converted to 8-bit straight-alpha RGBA. Throws Error(Io) when
 // the file cannot be read or is not a PNG.
 CURVETEXT_API Image read_png(const std::string& path);
+// read_png from memory: the PNG file's `size` bytes at `data`. Throws
+// Error(Io) when they are not a PNG.
+CURVETEXT_API Image decode_png(const std::uint8_t* data, std::size_t size);
 
 }  // namespace curvetext
