@@ -13,10 +13,6 @@
 #include "curvetext/error.hpp"
 #include "curvetext/tolerances.hpp"
 
-#ifndef CURVETEXT_BUILD_FONT_DIR
-#define CURVETEXT_BUILD_FONT_DIR ""
-#endif
-
 namespace curvetext::cli {
 
 double parse_number(std::string_view option, std::string_view text) {
@@ -161,7 +157,7 @@ void check_font_family(const std::string& pattern) {
 
 std::string default_font() {
   try {
-    return default_font_path(CURVETEXT_BUILD_FONT_DIR);
+    return default_font_path();
   } catch (const Error& e) {
     if (e.code() != ErrorCode::FontNotFound) throw;
     throw Error(e.code(), std::string(e.what()) + "; on the command line: --font FILE");

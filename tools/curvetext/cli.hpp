@@ -34,7 +34,7 @@ bool is_font_file(const std::string& name);
 // serif, monospace, ...), so a misspelt family is refused, not replaced.
 void check_font_family(const std::string& pattern);
 
-// default_font_path() (the build tree's copy first), its error naming the
+// default_font_path() (found relative to the program), its error naming the
 // CLI's way to pass a font.
 std::string default_font();
 
