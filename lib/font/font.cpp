@@ -481,6 +481,17 @@ std::string Font::family_name() const {
 
 std::uint64_t Font::cache_key() const { return impl_->cache_key; }
 
+namespace {
+
+// An OpenType metric of `font` in font units (its scale), or `fallback`
+// where the face lacks the table.
+double ot_metric(hb_font_t* font, hb_ot_metrics_tag_t tag, double fallback) {
+  hb_position_t value = 0;
+  return hb_ot_metrics_get_position(font, tag, &value) ? static_cast<double>(value) : fallback;
+}
+
+}  // namespace
+
 FontMetrics Font::metrics() const {
   FontMetrics m;
   m.units_per_em = impl_->units_per_em;
@@ -491,6 +502,14 @@ FontMetrics Font::metrics() const {
   m.ascender = extents.ascender;
   m.descender = extents.descender;
   m.line_gap = extents.line_gap;
+  // Read through the font that draws (a synthesised face's sub-font), as
+  // its glyphs are.
+  hb_font_t* drawn = harfbuzz_font(*this);
+  const double em = m.units_per_em;
+  m.underline_position = ot_metric(drawn, HB_OT_METRICS_TAG_UNDERLINE_OFFSET, -0.1 * em);
+  m.underline_thickness = ot_metric(drawn, HB_OT_METRICS_TAG_UNDERLINE_SIZE, em * 0.05);
+  m.strikeout_position = ot_metric(drawn, HB_OT_METRICS_TAG_STRIKEOUT_OFFSET, 0.3 * em);
+  m.strikeout_thickness = ot_metric(drawn, HB_OT_METRICS_TAG_STRIKEOUT_SIZE, em * 0.05);
   return m;
 }
 
