@@ -19,6 +19,7 @@
 
 #include "curvetext/error.hpp"
 #include "curvetext/tolerances.hpp"
+#include "font/face_queries.hpp"
 #include "font/font_impl.hpp"
 #include "font/option_lists.hpp"
 #include "font/synthesis.hpp"
@@ -347,7 +348,7 @@ std::unique_ptr<FontAccess::Impl> open_face(FontBytes bytes, const std::string& 
 
 }  // namespace
 
-std::vector<Variation> named_instance_variations(const Font& font, int instance) {
+std::vector<Variation> detail::named_instance_variations(const Font& font, int instance) {
   const FontAccess::Impl& im = FontAccess::impl(font);
   std::lock_guard<std::mutex> lock(im.ft_mutex);
   FT_MM_Var* mm = nullptr;

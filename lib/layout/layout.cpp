@@ -10,13 +10,14 @@
 #include <deque>
 #include <limits>
 #include <map>
-#include <new>
+#include <span>
 #include <string>
 
 #include "curvetext/error.hpp"
 #include "curvetext/line_break.hpp"
 #include "curvetext/tolerances.hpp"
-#include "font/harfbuzz_font.hpp"
+#include "font/face_queries.hpp"
+#include "font/shaper.hpp"
 #include "font/utf8.hpp"
 #include "layout/cluster_limit.hpp"
 #include "layout/emoji.hpp"
@@ -119,12 +120,12 @@ struct Metrics {
 // The weight and italic a face is drawn in: its own, or bold and slanted
 // where synthesised.
 float drawn_weight(const Font& font) {
-  const float weight = hb_style_get_value(harfbuzz_font(font), HB_STYLE_TAG_WEIGHT);
+  const float weight = detail::style_value(font, HB_STYLE_TAG_WEIGHT);
   return font.synthesis().embolden_em > 0.0 ? std::max(weight, 700.0f) : weight;
 }
 
 bool drawn_italic(const Font& font) {
-  return hb_style_get_value(harfbuzz_font(font), HB_STYLE_TAG_ITALIC) > 0 || font.synthesis().slant != 0.0;
+  return detail::style_value(font, HB_STYLE_TAG_ITALIC) > 0 || font.synthesis().slant != 0.0;
 }
 
 Metrics font_metrics(const Font& font, double size_px) {
@@ -159,6 +160,8 @@ struct ParagraphBuilder {
   std::vector<std::size_t> item_of;
   std::vector<double> advance;  // px per code point in logical order (incl. spacing)
   double y = 0.0;
+  // Scratch: one HarfBuzz buffer for every run shaped in this layout.
+  mutable detail::Shaper shaper;
 
   ParagraphBuilder(FontCollection& f, const ParagraphStyle& s, Paragraph& o) : fonts(f), pstyle(s), out(o) {}
 
@@ -221,68 +224,48 @@ struct ParagraphBuilder {
     return r;
   }
 
-  // Shapes paragraph code points [a, b) as one run.
-  // One HarfBuzz buffer per thread, reset for each call: creating one per
-  // item allocated its glyph arrays again every time (about 4% of laying out
-  // a Hebrew paragraph). Its contents are copied out before the next call.
-  static hb_buffer_t* scratch_buffer() {
-    thread_local detail::HbBufferPtr buffer(hb_buffer_create());
-    hb_buffer_reset(buffer.get());
-    return buffer.get();
-  }
-
+  // Shapes paragraph code points [a, b) as one run; the whole paragraph is
+  // context (Arabic joining across items), clusters are paragraph code point
+  // indices.
   std::vector<Glyph> shape(std::size_t a, std::size_t b, std::uint8_t level, hb_script_t script, const Font& font,
                            std::size_t style_index) const {
     const ResolvedStyle& r = *resolved[style_index];
-    hb_buffer_t* buf = scratch_buffer();
-    hb_buffer_set_direction(buf, level % 2 ? HB_DIRECTION_RTL : HB_DIRECTION_LTR);
-    hb_buffer_set_script(buf, script);
-    if (r.language != HB_LANGUAGE_INVALID) hb_buffer_set_language(buf, r.language);
-    unsigned flags = HB_BUFFER_FLAG_DEFAULT;
-    if (a == 0) flags |= HB_BUFFER_FLAG_BOT;
-    if (b == para.size()) flags |= HB_BUFFER_FLAG_EOT;
-    hb_buffer_set_flags(buf, static_cast<hb_buffer_flags_t>(flags));
-    // The whole paragraph is context (Arabic joining across items), clusters
-    // are paragraph code point indices.
-    hb_buffer_add_utf32(buf, reinterpret_cast<const std::uint32_t*>(shaped_text.data()),
-                        static_cast<int>(shaped_text.size()), static_cast<unsigned>(a), static_cast<int>(b - a));
-    hb_shape(harfbuzz_font(font), buf, r.features.data(), static_cast<unsigned>(r.features.size()));
-    if (!hb_buffer_allocation_successful(buf)) throw std::bad_alloc();
-    unsigned n = 0;
-    const hb_glyph_info_t* info = hb_buffer_get_glyph_infos(buf, &n);
-    const hb_glyph_position_t* pos = hb_buffer_get_glyph_positions(buf, &n);
-    const double s = style(style_index).size_px / font.metrics().units_per_em;
-    const double slant = font.synthesis().slant;  // raised marks follow a synthetic slant
-    std::vector<Glyph> glyphs(n);
-    for (unsigned i = 0; i < n; ++i) {
-      glyphs[i].id = info[i].codepoint;
-      glyphs[i].cluster = info[i].cluster;
-      glyphs[i].advance = pos[i].x_advance * s;
-      glyphs[i].x_offset = (pos[i].x_offset + slant * pos[i].y_offset) * s;
-      glyphs[i].y_offset = pos[i].y_offset * s;
-      glyphs[i].unsafe = (hb_glyph_info_get_glyph_flags(&info[i]) & HB_GLYPH_FLAG_UNSAFE_TO_BREAK) != 0;
-    }
-    return glyphs;
+    detail::ShapeSettings settings;
+    settings.direction = level % 2 ? HB_DIRECTION_RTL : HB_DIRECTION_LTR;
+    settings.script = script;
+    settings.language = r.language;
+    settings.features = r.features;
+    settings.beginning_of_text = a == 0;
+    settings.end_of_text = b == para.size();
+    return to_pixels(shaper.shape(font, shaped_text, a, b - a, settings), font, style_index);
   }
 
   // Glyphs for a single character string (ellipsis, hyphen) in `font`.
   std::vector<Glyph> shape_string(const std::u32string& s, const Font& font, std::size_t style_index,
                                   std::uint8_t level) const {
-    hb_buffer_t* buf = scratch_buffer();
-    hb_buffer_add_utf32(buf, reinterpret_cast<const std::uint32_t*>(s.data()), static_cast<int>(s.size()), 0,
-                        static_cast<int>(s.size()));
-    hb_buffer_set_direction(buf, level % 2 ? HB_DIRECTION_RTL : HB_DIRECTION_LTR);
-    hb_buffer_guess_segment_properties(buf);
-    hb_shape(harfbuzz_font(font), buf, nullptr, 0);
-    unsigned n = 0;
-    const hb_glyph_info_t* info = hb_buffer_get_glyph_infos(buf, &n);
-    const hb_glyph_position_t* pos = hb_buffer_get_glyph_positions(buf, &n);
-    const double sc = style(style_index).size_px / font.metrics().units_per_em;
-    std::vector<Glyph> glyphs(n);
-    for (unsigned i = 0; i < n; ++i)
-      glyphs[i] = {info[i].codepoint,     0,
-                   pos[i].x_advance * sc, (pos[i].x_offset + font.synthesis().slant * pos[i].y_offset) * sc,
-                   pos[i].y_offset * sc,  false};
+    detail::ShapeSettings settings;
+    settings.direction = level % 2 ? HB_DIRECTION_RTL : HB_DIRECTION_LTR;
+    settings.guess_unset = true;
+    std::vector<Glyph> glyphs = to_pixels(shaper.shape(font, s, 0, s.size(), settings), font, style_index);
+    for (Glyph& g : glyphs) {
+      g.cluster = 0;
+      g.unsafe = false;
+    }
+    return glyphs;
+  }
+
+  std::vector<Glyph> to_pixels(std::span<const detail::UnitGlyph> units, const Font& font,
+                               std::size_t style_index) const {
+    const double s = style(style_index).size_px / font.metrics().units_per_em;
+    std::vector<Glyph> glyphs(units.size());
+    for (std::size_t i = 0; i < units.size(); ++i) {
+      glyphs[i].id = units[i].id;
+      glyphs[i].cluster = units[i].cluster;
+      glyphs[i].advance = units[i].x_advance * s;
+      glyphs[i].x_offset = units[i].x_offset * s;
+      glyphs[i].y_offset = units[i].y_offset * s;
+      glyphs[i].unsafe = units[i].unsafe_to_break;
+    }
     return glyphs;
   }
 
@@ -444,7 +427,7 @@ struct ParagraphBuilder {
     const Font& f = *resolved[style_index]->chain.front();
     const std::uint32_t g = f.glyph_for_codepoint(U' ');
     const double s = style(style_index).size_px / f.metrics().units_per_em;
-    return g ? hb_font_get_glyph_h_advance(harfbuzz_font(f), g) * s : style(style_index).size_px / 3.0;
+    return g ? detail::glyph_h_advance(f, g) * s : style(style_index).size_px / 3.0;
   }
 
   // Pen advance of a tab at pen position x (from the line start).
@@ -1210,7 +1193,7 @@ Rect Paragraph::ink_bounds() const {
       const double s = r.size_px / r.font->metrics().units_per_em;
       for (const PositionedGlyph& g : r.glyphs) {
         hb_glyph_extents_t e{};
-        if (!hb_font_get_glyph_extents(harfbuzz_font(*r.font), g.id, &e) || e.width == 0 || e.height == 0) continue;
+        if (!detail::glyph_extents(*r.font, g.id, e) || e.width == 0 || e.height == 0) continue;
         const double gx0 = g.x + e.x_bearing * s, gx1 = gx0 + e.width * s;
         const double gy0 = g.y - e.y_bearing * s, gy1 = gy0 - e.height * s;
         x0 = std::min({x0, gx0, gx1});
