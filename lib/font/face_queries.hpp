@@ -1,7 +1,8 @@
-// Private: what the stages after font/ (layout, composition) ask of a face
-// beyond Font's public API, read through the HarfBuzz font that shapes and
-// draws it (a synthesised face's sub-font). Shaping itself is in
-// font/shaper.hpp; FreeType and the Font's state stay inside font/.
+// Private interface of font/ for the stages after it: what layout and
+// composition ask of a face beyond Font's public API, read through the
+// HarfBuzz font that shapes and draws it (a synthesised face's sub-font).
+// Shaping itself is in font/shaper.hpp; FreeType and the Font's state stay
+// inside font/.
 #pragma once
 
 #include <hb.h>

@@ -1,8 +1,8 @@
-// Private: font/'s one way of shaping text, for font/ itself (shape_line) and
-// for the stages after it (paragraph layout). HarfBuzz's glyph output is read
-// here only: glyphs come back in font units (HarfBuzz runs at a scale of
-// units_per_em, so nothing is rounded), with a synthetic slant applied to the
-// offsets, and the caller scales them.
+// Private interface of font/ for the stages after it: font/'s one way of
+// shaping text, for font/ itself (shape_line) and for paragraph layout.
+// HarfBuzz's glyph output is read here only: glyphs come back in font units
+// (HarfBuzz runs at a scale of units_per_em, so nothing is rounded), with a
+// synthetic slant applied to the offsets, and the caller scales them.
 #pragma once
 
 #include <hb.h>
