@@ -21,7 +21,9 @@
 #include "font/default_font_lookup.hpp"
 #include "font/font_impl.hpp"
 
+#include FT_MULTIPLE_MASTERS_H
 #include FT_OUTLINE_H
+#include FT_TRUETYPE_TABLES_H
 
 namespace ct = curvetext;
 namespace fs = std::filesystem;
@@ -223,6 +225,55 @@ TEST(Font, CffOutlinesHaveCubics) {
   expect_well_formed(o);
   EXPECT_EQ(font.metrics().ascender, ct::FontAccess::impl(font).ft_face->ascender);
   EXPECT_EQ(font.metrics().descender, ct::FontAccess::impl(font).ft_face->descender);
+}
+
+// Underline and strikeout metrics are the post and OS/2 tables' values, read
+// here with a FreeType face of our own (not the Font's), at the default
+// instance and, for a variable font, at another one (MVAR applied by
+// FreeType on its side).
+TEST(Font, DecorationMetricsMatchPostAndOs2) {
+  FT_Library library = nullptr;
+  ASSERT_EQ(FT_Init_FreeType(&library), 0);
+  struct Case {
+    std::string path;
+    std::vector<ct::Variation> variations;
+  };
+  const std::vector<Case> cases = {
+      {kDejaVu, {}}, {kNoto, {}}, {kNimbus, {}}, {kInter, {}}, {kInter, {{"wght", 900.0f}}}, {kCff2, {}}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.path + (c.variations.empty() ? "" : " wght=900"));
+    ct::Font font = ct::Font::open(c.path);
+    if (!c.variations.empty()) font.set_variations(c.variations);
+    const ct::FontMetrics m = font.metrics();
+    FT_Face face = nullptr;
+    ASSERT_EQ(FT_New_Face(library, c.path.c_str(), 0, &face), 0);
+    if (!c.variations.empty()) {
+      FT_MM_Var* mm = nullptr;
+      ASSERT_EQ(FT_Get_MM_Var(face, &mm), 0);
+      std::vector<FT_Fixed> coords(mm->num_axis);
+      for (FT_UInt i = 0; i < mm->num_axis; ++i)
+        coords[i] = mm->axis[i].tag == FT_MAKE_TAG('w', 'g', 'h', 't') ? 900 * 65536 : mm->axis[i].def;
+      FT_Done_MM_Var(library, mm);
+      ASSERT_EQ(FT_Set_Var_Design_Coordinates(face, static_cast<FT_UInt>(coords.size()), coords.data()), 0);
+    }
+    const auto* post = static_cast<const TT_Postscript*>(FT_Get_Sfnt_Table(face, FT_SFNT_POST));
+    const auto* os2 = static_cast<const TT_OS2*>(FT_Get_Sfnt_Table(face, FT_SFNT_OS2));
+    ASSERT_NE(post, nullptr);
+    ASSERT_NE(os2, nullptr);
+    EXPECT_EQ(m.underline_position, post->underlinePosition);
+    EXPECT_EQ(m.underline_thickness, post->underlineThickness);
+    EXPECT_EQ(m.strikeout_position, os2->yStrikeoutPosition);
+    EXPECT_EQ(m.strikeout_thickness, os2->yStrikeoutSize);
+    // Below the baseline, above it, and some thickness: the tables were read
+    // (the test font's post table leaves the underline at zero).
+    if (c.path != kCff2) {
+      EXPECT_LT(m.underline_position, 0.0);
+      EXPECT_GT(m.strikeout_position, 0.0);
+      EXPECT_GT(m.underline_thickness, 0.0);
+    }
+    FT_Done_Face(face);
+  }
+  FT_Done_FreeType(library);
 }
 
 TEST(Font, Cff2StaticKeepsFractionalCoordinates) {

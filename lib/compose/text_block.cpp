@@ -2,8 +2,6 @@
 
 #include "curvetext/text_block.hpp"
 
-#include <hb-ot.h>
-
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -12,7 +10,6 @@
 #include "curvetext/image_style.hpp"
 #include "curvetext/mesh.hpp"
 #include "compose/color_layers.hpp"
-#include "font/harfbuzz_font.hpp"
 
 namespace curvetext {
 
@@ -41,18 +38,13 @@ struct GroupInProgress {
   }
 };
 
-// A bar from the font's post / OS/2 metrics, as thick as it says (at least a
-// pixel), in layout pixels with y up.
-void add_bar(Outline& bars, const LayoutLine& line, const GlyphRun& run, hb_ot_metrics_tag_t offset_tag,
-             hb_ot_metrics_tag_t size_tag, double fallback_offset) {
-  hb_font_t* hb = harfbuzz_font(*run.font);
+// A bar at `position` (font units, y up from the baseline), as thick as
+// `thickness` (font units) but at least a pixel: FontMetrics' underline or
+// strikeout, in layout pixels with y up.
+void add_bar(Outline& bars, const LayoutLine& line, const GlyphRun& run, double position, double thickness) {
   const double scale = run.size_px / run.font->metrics().units_per_em;
-  hb_position_t offset = 0, thickness = 0;
-  const double off =
-      hb_ot_metrics_get_position(hb, offset_tag, &offset) ? offset * scale : fallback_offset * run.size_px;
-  double t = hb_ot_metrics_get_position(hb, size_tag, &thickness) ? thickness * scale
-                                                                  : run.font->metrics().units_per_em * 0.05 * scale;
-  t = std::max(t, 1.0);
+  const double off = position * scale;
+  const double t = std::max(thickness * scale, 1.0);
   const double top = line.baseline - off - t / 2.0;
   // Within the line's content: spaces at a line's end are not decorated.
   const double x0 = std::max(run.x, line.x), x1 = std::min(run.x + run.width, line.x + line.width);
@@ -137,10 +129,11 @@ TextBlock TextBlock::from_paragraph(GlyphCache& cache, const Paragraph& paragrap
       }
       const double scale = run.size_px / run.font->metrics().units_per_em;
       for (const PositionedGlyph& g : run.glyphs) group.glyphs.push_back(PlacedGlyph{g.id, g.x / scale, -g.y / scale});
-      if (style.underline)
-        add_bar(group.bars, line, run, HB_OT_METRICS_TAG_UNDERLINE_OFFSET, HB_OT_METRICS_TAG_UNDERLINE_SIZE, -0.1);
-      if (style.strikethrough)
-        add_bar(group.bars, line, run, HB_OT_METRICS_TAG_STRIKEOUT_OFFSET, HB_OT_METRICS_TAG_STRIKEOUT_SIZE, 0.3);
+      if (style.underline || style.strikethrough) {
+        const FontMetrics m = run.font->metrics();
+        if (style.underline) add_bar(group.bars, line, run, m.underline_position, m.underline_thickness);
+        if (style.strikethrough) add_bar(group.bars, line, run, m.strikeout_position, m.strikeout_thickness);
+      }
     }
   }
   finish();

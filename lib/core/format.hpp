@@ -1,4 +1,4 @@
-// Private: numbers in error messages.
+// Private interface of core/ for every stage: numbers in error messages.
 #pragma once
 
 #include <cstdio>

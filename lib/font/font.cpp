@@ -19,6 +19,7 @@
 
 #include "curvetext/error.hpp"
 #include "curvetext/tolerances.hpp"
+#include "font/face_queries.hpp"
 #include "font/font_impl.hpp"
 #include "font/option_lists.hpp"
 #include "font/synthesis.hpp"
@@ -347,7 +348,7 @@ std::unique_ptr<FontAccess::Impl> open_face(FontBytes bytes, const std::string& 
 
 }  // namespace
 
-std::vector<Variation> named_instance_variations(const Font& font, int instance) {
+std::vector<Variation> detail::named_instance_variations(const Font& font, int instance) {
   const FontAccess::Impl& im = FontAccess::impl(font);
   std::lock_guard<std::mutex> lock(im.ft_mutex);
   FT_MM_Var* mm = nullptr;
@@ -481,6 +482,17 @@ std::string Font::family_name() const {
 
 std::uint64_t Font::cache_key() const { return impl_->cache_key; }
 
+namespace {
+
+// An OpenType metric of `font` in font units (its scale), or `fallback`
+// where the face lacks the table.
+double ot_metric(hb_font_t* font, hb_ot_metrics_tag_t tag, double fallback) {
+  hb_position_t value = 0;
+  return hb_ot_metrics_get_position(font, tag, &value) ? static_cast<double>(value) : fallback;
+}
+
+}  // namespace
+
 FontMetrics Font::metrics() const {
   FontMetrics m;
   m.units_per_em = impl_->units_per_em;
@@ -491,6 +503,14 @@ FontMetrics Font::metrics() const {
   m.ascender = extents.ascender;
   m.descender = extents.descender;
   m.line_gap = extents.line_gap;
+  // Read through the font that draws (a synthesised face's sub-font), as
+  // its glyphs are.
+  hb_font_t* drawn = harfbuzz_font(*this);
+  const double em = m.units_per_em;
+  m.underline_position = ot_metric(drawn, HB_OT_METRICS_TAG_UNDERLINE_OFFSET, -0.1 * em);
+  m.underline_thickness = ot_metric(drawn, HB_OT_METRICS_TAG_UNDERLINE_SIZE, em * 0.05);
+  m.strikeout_position = ot_metric(drawn, HB_OT_METRICS_TAG_STRIKEOUT_OFFSET, 0.3 * em);
+  m.strikeout_thickness = ot_metric(drawn, HB_OT_METRICS_TAG_STRIKEOUT_SIZE, em * 0.05);
   return m;
 }
 

@@ -116,15 +116,11 @@ struct Font::Impl {
 };
 
 // Reaches a Font's state (a friend of Font): font/ itself and the tests'
-// FreeType reference rendering. Other stages use font/harfbuzz_font.hpp.
+// FreeType reference rendering. Other stages use font/shaper.hpp and
+// font/face_queries.hpp.
 struct FontAccess {
   using Impl = Font::Impl;
   static Impl& impl(const Font& font) { return *font.impl_; }
 };
-
-// The axis values of named instance `instance` (1-based, as fontconfig and
-// FreeType number them in the upper 16 bits of a face index) of a variable
-// face. Throws Error(FontInvalid) when the face has no such instance.
-std::vector<Variation> named_instance_variations(const Font& font, int instance);
 
 }  // namespace curvetext

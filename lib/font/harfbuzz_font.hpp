@@ -1,7 +1,7 @@
-// Private: what the stages after font/ (layout, composition) use of a Font
-// beyond its public API: the HarfBuzz font it shapes with, and owning handles
-// for HarfBuzz objects. Narrower than font_impl.hpp on purpose: no FreeType,
-// and none of the Font's state.
+// Private to font/ (and the tests, which shape and measure with HarfBuzz as
+// an independent reference): the HarfBuzz font a Font shapes with, and owning
+// handles for HarfBuzz objects. The stages after font/ use font/shaper.hpp and
+// font/face_queries.hpp instead.
 #pragma once
 
 #include <hb.h>

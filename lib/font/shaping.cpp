@@ -4,13 +4,12 @@
 #include <algorithm>
 #include <cctype>
 #include <climits>
-#include <new>
 #include <string>
 
 #include "curvetext/error.hpp"
 #include "curvetext/shaping.hpp"
-#include "font/harfbuzz_font.hpp"
 #include "font/option_lists.hpp"
+#include "font/shaper.hpp"
 
 namespace curvetext {
 
@@ -65,17 +64,19 @@ ShapedLine shape_line(const Font& font, std::string_view utf8, const ShapeOption
   for (const Feature& f : options.features)
     features.push_back({feature_tag(f.tag), f.value, HB_FEATURE_GLOBAL_START, HB_FEATURE_GLOBAL_END});
 
-  detail::HbBufferPtr buffer(hb_buffer_create());
-  hb_buffer_t* buf = buffer.get();
-  if (!hb_buffer_allocation_successful(buf)) throw std::bad_alloc();
-
+  detail::ShapeSettings settings;
+  settings.features = features;
+  // The line is the whole text HarfBuzz will see: both ends are text
+  // boundaries for joining scripts and contextual rules.
+  settings.beginning_of_text = settings.end_of_text = true;
+  settings.guess_unset = true;
   if (!options.direction.empty()) {
     const std::string d = lower(trim(options.direction));
     // hb_direction_from_string accepts any word starting with l/r/t/b; we
     // only take the four documented names so typos are caught.
     if (d != "ltr" && d != "rtl" && d != "ttb" && d != "btt")
       throw Error(ErrorCode::InvalidArgument, "bad text direction '" + options.direction + "' (ltr, rtl, ttb or btt)");
-    hb_buffer_set_direction(buf, hb_direction_from_string(d.data(), static_cast<int>(d.size())));
+    settings.direction = hb_direction_from_string(d.data(), static_cast<int>(d.size()));
   }
   if (!options.script.empty()) {
     const std::string_view s = trim(options.script);
@@ -83,40 +84,27 @@ ShapedLine shape_line(const Font& font, std::string_view utf8, const ShapeOption
                       return std::isalpha(static_cast<unsigned char>(c)) != 0;
                     });
     if (!ok) throw Error(ErrorCode::InvalidArgument, "bad ISO 15924 script code '" + options.script + "' (e.g. Latn)");
-    hb_buffer_set_script(buf, hb_script_from_string(s.data(), static_cast<int>(s.size())));
+    settings.script = hb_script_from_string(s.data(), static_cast<int>(s.size()));
   }
   if (!options.language.empty()) {
     const std::string_view l = trim(options.language);
-    hb_language_t language = hb_language_from_string(l.data(), static_cast<int>(l.size()));
-    if (language == HB_LANGUAGE_INVALID)
+    settings.language = hb_language_from_string(l.data(), static_cast<int>(l.size()));
+    if (settings.language == HB_LANGUAGE_INVALID)
       throw Error(ErrorCode::InvalidArgument, "bad BCP 47 language tag '" + options.language + "'");
-    hb_buffer_set_language(buf, language);
   }
-  // The line is the whole text HarfBuzz will see: mark both ends so joining
-  // scripts and contextual rules treat them as text boundaries.
-  hb_buffer_set_flags(buf, static_cast<hb_buffer_flags_t>(HB_BUFFER_FLAG_BOT | HB_BUFFER_FLAG_EOT));
-  // Clusters start as the byte offset of each character (item_offset 0).
-  const char* data = utf8.empty() ? "" : utf8.data();
-  hb_buffer_add_utf8(buf, data, static_cast<int>(utf8.size()), 0, static_cast<int>(utf8.size()));
-  hb_buffer_guess_segment_properties(buf);  // fills only what was not set above
 
-  hb_shape(harfbuzz_font(font), buf, features.data(), static_cast<unsigned int>(features.size()));
-  if (!hb_buffer_allocation_successful(buf)) throw std::bad_alloc();
-
-  unsigned int count = 0;
-  const hb_glyph_info_t* infos = hb_buffer_get_glyph_infos(buf, &count);
-  const hb_glyph_position_t* positions = hb_buffer_get_glyph_positions(buf, &count);
-  const double slant = font.synthesis().slant;  // raised marks follow a synthetic slant
+  detail::Shaper shaper;
   ShapedLine line;
-  line.glyphs.reserve(count);
-  for (unsigned int i = 0; i < count; ++i) {
+  const std::span<const detail::UnitGlyph> glyphs = shaper.shape(font, utf8, settings);
+  line.glyphs.reserve(glyphs.size());
+  for (const detail::UnitGlyph& u : glyphs) {
     ShapedGlyph g;
-    g.glyph_id = infos[i].codepoint;
-    g.cluster = infos[i].cluster;
-    g.x_offset = positions[i].x_offset + slant * positions[i].y_offset;
-    g.y_offset = positions[i].y_offset;
-    g.x_advance = positions[i].x_advance;
-    g.y_advance = positions[i].y_advance;
+    g.glyph_id = u.id;
+    g.cluster = u.cluster;
+    g.x_offset = u.x_offset;
+    g.y_offset = u.y_offset;
+    g.x_advance = u.x_advance;
+    g.y_advance = u.y_advance;
     line.advance += g.x_advance;
     line.glyphs.push_back(g);
   }

@@ -1,5 +1,6 @@
-// Private: strict UTF-8 decoding (RFC 3629), shared by validation and by any
-// stage that needs code points (layout, line breaking).
+// Private interface of font/ for the stages after it: strict UTF-8 decoding
+// (RFC 3629), shared by validation and by any stage that needs code points
+// (layout, line breaking).
 #pragma once
 
 #include <cstddef>

@@ -1,7 +1,8 @@
-// Private: the limit on grapheme cluster length (tolerance::kMaxClusterCodePoints)
-// shared by paragraph layout and single-line text images. Shaping a cluster
-// costs the square of its length (HarfBuzz attaches each mark by looking
-// back over the marks before it), so long ones are refused before shaping.
+// Private interface of layout/ for the stages after it: the limit on grapheme
+// cluster length (tolerance::kMaxClusterCodePoints) shared by paragraph layout
+// and single-line text images (compose/). Shaping a cluster costs the square
+// of its length (HarfBuzz attaches each mark by looking back over the marks
+// before it), so long ones are refused before shaping.
 #pragma once
 
 #include <cstddef>

@@ -23,8 +23,11 @@ struct ThBrkDeleter {
   void operator()(ThBrk* b) const { th_brk_delete(b); }
 };
 
-// One breaker per thread (libthai does not promise that one may be shared);
-// null when the dictionary cannot be loaded, and then nothing is added.
+// One breaker per thread (libthai does not promise that one may be shared),
+// kept for the thread's life: it holds the loaded dictionary, not scratch,
+// and th_brk_new takes tens of milliseconds to load it, more than laying out
+// a paragraph. Null when the dictionary cannot be loaded, and then nothing is
+// added.
 ThBrk* breaker() {
   thread_local std::unique_ptr<ThBrk, ThBrkDeleter> brk(th_brk_new(nullptr));
   return brk.get();

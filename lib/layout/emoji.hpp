@@ -1,5 +1,5 @@
 // Private: which grapheme clusters ask for emoji presentation (Unicode
-// Technical Standard #51), for the font choice in layout.cpp.
+// Technical Standard #51), for the font choice in itemize.cpp.
 #pragma once
 
 #include <string_view>

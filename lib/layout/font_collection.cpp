@@ -13,8 +13,7 @@
 #include "curvetext/default_font.hpp"
 #include "curvetext/error.hpp"
 #include "curvetext/tolerances.hpp"
-#include "font/font_impl.hpp"
-#include "font/harfbuzz_font.hpp"
+#include "font/face_queries.hpp"
 
 namespace curvetext {
 
@@ -91,11 +90,8 @@ PatternMatch match_pattern(FcPattern* pattern, const std::string& family);
 }  // namespace
 
 bool has_outlines(const Font& font) {
-  hb_face_t* face = hb_font_get_face(harfbuzz_font(font));
-  for (hb_tag_t table : {HB_TAG('g', 'l', 'y', 'f'), HB_TAG('C', 'F', 'F', ' '), HB_TAG('C', 'F', 'F', '2')}) {
-    const detail::HbBlobPtr blob(hb_face_reference_table(face, table));
-    if (hb_blob_get_length(blob.get()) > 0) return true;
-  }
+  for (hb_tag_t table : {HB_TAG('g', 'l', 'y', 'f'), HB_TAG('C', 'F', 'F', ' '), HB_TAG('C', 'F', 'F', '2')})
+    if (detail::has_table(font, table)) return true;
   return false;
 }
 
@@ -127,7 +123,7 @@ std::shared_ptr<const Font> FontCollection::open_file(const std::string& path, i
   ++stats_.faces;
   std::vector<Variation> values = variations;
   if (index >> 16 != 0) {
-    values = named_instance_variations(*font, index >> 16);
+    values = detail::named_instance_variations(*font, index >> 16);
     for (const Variation& v : variations) {
       auto same = std::find_if(values.begin(), values.end(), [&](const Variation& w) { return w.tag == v.tag; });
       if (same != values.end()) *same = v;
@@ -201,12 +197,11 @@ std::shared_ptr<const Font> FontCollection::resolve_styled_file(const std::strin
 std::shared_ptr<const Font> FontCollection::synthesised(const std::shared_ptr<const Font>& face, double weight,
                                                         bool italic) {
   if (face->color_format() != ColorFormat::None) return face;
-  hb_font_t* hb = harfbuzz_font(*face);
   FontSynthesis synthesis = face->synthesis();
-  if (weight >= 600.0 && hb_style_get_value(hb, HB_STYLE_TAG_WEIGHT) < weight - 150.0)
+  if (weight >= 600.0 && detail::style_value(*face, HB_STYLE_TAG_WEIGHT) < weight - 150.0)
     synthesis.embolden_em = tolerance::kSyntheticEmboldenEm;
-  if (italic && hb_style_get_value(hb, HB_STYLE_TAG_ITALIC) == 0.0f &&
-      hb_style_get_value(hb, HB_STYLE_TAG_SLANT_RATIO) == 0.0f)
+  if (italic && detail::style_value(*face, HB_STYLE_TAG_ITALIC) == 0.0f &&
+      detail::style_value(*face, HB_STYLE_TAG_SLANT_RATIO) == 0.0f)
     synthesis.slant = tolerance::kSyntheticSlant;
   if (synthesis == face->synthesis()) return face;
   return open_file(face->path(), face->face_index(), face->variations(), true, synthesis);

@@ -198,127 +198,151 @@ Hangul hangul(char32_t c) {
   return Hangul::None;
 }
 
-}  // namespace
+// UAX #14 over one text: the rules LB4-LB31 as a pass over the characters,
+// with the state after each character (on the sequence after LB9/LB10, where
+// a base and the marks it carries count as the base) in members.
+class LineBreaker {
+ public:
+  LineBreaker(std::u32string_view text, std::string_view language) : text_(text), n_(text.size()), props_(n_) {
+    for (std::size_t i = 0; i < n_; ++i) props_[i] = properties(text[i]);
+    if (!language.empty()) apply_tailoring(text, language, props_);
+  }
 
-std::vector<BreakAction> line_breaks(std::u32string_view text, std::string_view language) {
-  const std::size_t n = text.size();
-  std::vector<BreakAction> result(n, BreakAction::None);
-  if (n == 0) return result;
-  std::vector<std::uint8_t> props(n);
-  for (std::size_t i = 0; i < n; ++i) props[i] = properties(text[i]);
-  if (!language.empty()) apply_tailoring(text, language, props);
-  const auto cls = [&](std::size_t i) { return static_cast<Lb>(props[i] & kClassMask); };
+  std::vector<BreakAction> run();
+
+ private:
+  Lb cls(std::size_t i) const { return static_cast<Lb>(props_[i] & kClassMask); }
   // The class of the first character at or after j that is not CM or ZWJ (a
   // look-ahead for LB25 and LB28a, where LB9 lets marks sit in between).
-  const auto next_base = [&](std::size_t j) {
-    while (j < n && (cls(j) == Lb::CM || cls(j) == Lb::ZWJ)) ++j;
-    return j < n ? cls(j) : Lb::BK;
-  };
-  const auto is_aksara = [&](Lb c, char32_t ch) { return c == Lb::AK || c == Lb::AS || ch == 0x25CC; };
+  Lb next_base(std::size_t j) const {
+    while (j < n_ && (cls(j) == Lb::CM || cls(j) == Lb::ZWJ)) ++j;
+    return j < n_ ? cls(j) : Lb::BK;
+  }
+  static bool is_aksara(Lb c, char32_t ch) { return c == Lb::AK || c == Lb::AS || ch == 0x25CC; }
+  BreakAction action_before(std::size_t i, Lb cb, Lb sp_base, bool& absorbed) const;
+  BreakAction pair_action(Lb a, Lb b, std::size_t i, Lb sp_base) const;
+  void advance(std::size_t i, Lb cb);
 
-  // State after character i-1, all on the sequence after LB9/LB10 (a base
-  // and the marks it carries count as the base):
-  Lb eff = cls(0);                                    // effective class
-  if (eff == Lb::CM || eff == Lb::ZWJ) eff = Lb::AL;  // LB10
-  std::uint8_t a_props = props[0];
-  char32_t a_char = text[0];
+  std::u32string_view text_;
+  std::size_t n_;
+  std::vector<std::uint8_t> props_;
+  // State after character i-1:
+  Lb eff = Lb::BK;  // effective class
+  std::uint8_t a_props = 0;
+  char32_t a_char = 0;
   Lb a_prev = Lb::BK;  // the effective class before eff (sot reads as BK: matches no rule)
   char32_t a_prev_char = 0;
   Lb before_spaces = Lb::BK;  // when eff is SP: the effective class before the spaces
-  std::size_t ri_run = eff == Lb::RI ? 1 : 0;
+  std::size_t ri_run = 0;
   // LB25 (tailored as in UAX #14 example 7): eff ends NU (NU|SY|IS)*, or that followed by CL/CP.
-  bool numeric = eff == Lb::NU, numeric_close = false;
+  bool numeric = false, numeric_close = false;
+};
 
-  // LB11-LB31 between effective classes a and b (b at index i).
-  const auto pair_action = [&](Lb a, Lb b, std::size_t i, Lb sp_base) {
-    constexpr BreakAction no = BreakAction::None, yes = BreakAction::Allowed;
-    if (a == Lb::WJ || b == Lb::WJ) return no;                                               // LB11
-    if (a == Lb::GL) return no;                                                              // LB12
-    if (b == Lb::GL && a != Lb::SP && a != Lb::BA && a != Lb::HY) return no;                 // LB12a
-    if (b == Lb::CL || b == Lb::CP || b == Lb::EX || b == Lb::IS || b == Lb::SY) return no;  // LB13
-    if (sp_base == Lb::OP) return no;                                                        // LB14
-    if (b == Lb::OP && sp_base == Lb::QU) return no;                                         // LB15
-    if (b == Lb::NS && (sp_base == Lb::CL || sp_base == Lb::CP)) return no;                  // LB16
-    if (b == Lb::B2 && sp_base == Lb::B2) return no;                                         // LB17
-    if (a == Lb::SP) return yes;                                                             // LB18
-    if (a == Lb::QU || b == Lb::QU) return no;                                               // LB19
-    if (a == Lb::CB || b == Lb::CB) return yes;                                              // LB20
-    if (b == Lb::BA || b == Lb::HY || b == Lb::NS || a == Lb::BB) return no;                 // LB21
-    if ((a == Lb::HY || a == Lb::BA) && a_prev == Lb::HL) return no;                         // LB21a
-    if (a == Lb::SY && b == Lb::HL) return no;                                               // LB21b
-    if (b == Lb::IN) return no;                                                              // LB22
-    const bool a_letter = a == Lb::AL || a == Lb::HL, b_letter = b == Lb::AL || b == Lb::HL;
-    if ((a_letter && b == Lb::NU) || (a == Lb::NU && b_letter)) return no;  // LB23
-    const bool b_ideo = b == Lb::ID || b == Lb::EB || b == Lb::EM;
-    if ((a == Lb::PR && b_ideo) || ((a == Lb::ID || a == Lb::EB || a == Lb::EM) && b == Lb::PO)) return no;  // LB23a
-    const bool a_prpo = a == Lb::PR || a == Lb::PO, b_prpo = b == Lb::PR || b == Lb::PO;
-    if ((a_prpo && b_letter) || (a_letter && b_prpo)) return no;                                             // LB24
-    if (a_prpo && (b == Lb::NU || ((b == Lb::OP || b == Lb::HY) && next_base(i + 1) == Lb::NU))) return no;  // LB25
-    if ((a == Lb::OP || a == Lb::HY) && b == Lb::NU) return no;
-    if (numeric && (b == Lb::NU || b == Lb::SY || b == Lb::IS || b == Lb::CL || b == Lb::CP)) return no;
-    if ((numeric || numeric_close) && b_prpo) return no;
-    if ((a == Lb::JL && (b == Lb::JL || b == Lb::JV || b == Lb::H2 || b == Lb::H3)) ||  // LB26
-        ((a == Lb::JV || a == Lb::H2) && (b == Lb::JV || b == Lb::JT)) || ((a == Lb::JT || a == Lb::H3) && b == Lb::JT))
-      return no;
-    const bool a_korean = a == Lb::JL || a == Lb::JV || a == Lb::JT || a == Lb::H2 || a == Lb::H3;
-    const bool b_korean = b == Lb::JL || b == Lb::JV || b == Lb::JT || b == Lb::H2 || b == Lb::H3;
-    if ((a_korean && b == Lb::PO) || (a == Lb::PR && b_korean)) return no;         // LB27
-    if (a_letter && b_letter) return no;                                           // LB28
-    const bool a_aksara = is_aksara(a, a_char), b_aksara = is_aksara(b, text[i]);  // LB28a
-    if (a == Lb::AP && b_aksara) return no;
-    if (a_aksara && (b == Lb::VF || b == Lb::VI)) return no;
-    if (a == Lb::VI && is_aksara(a_prev, a_prev_char) && (b == Lb::AK || text[i] == 0x25CC)) return no;
-    if (a_aksara && b_aksara && next_base(i + 1) == Lb::VF) return no;
-    if (a == Lb::IS && b_letter) return no;                                          // LB29
-    if ((a_letter || a == Lb::NU) && b == Lb::OP && !(props[i] & kWide)) return no;  // LB30
-    if (a == Lb::CP && !(a_props & kWide) && (b_letter || b == Lb::NU)) return no;
-    if (a == Lb::RI && b == Lb::RI && ri_run % 2 == 1) return no;                        // LB30a
-    if (b == Lb::EM && (a == Lb::EB || (a_props & kPictographicUnassigned))) return no;  // LB30b
-    return yes;                                                                          // LB31
-  };
-
-  for (std::size_t i = 1; i < n; ++i) {
-    const Lb raw_a = cls(i - 1);
+std::vector<BreakAction> LineBreaker::run() {
+  std::vector<BreakAction> result(n_, BreakAction::None);
+  if (n_ == 0) return result;
+  eff = cls(0);
+  if (eff == Lb::CM || eff == Lb::ZWJ) eff = Lb::AL;  // LB10
+  a_props = props_[0];
+  a_char = text_[0];
+  ri_run = eff == Lb::RI ? 1 : 0;
+  numeric = eff == Lb::NU;
+  for (std::size_t i = 1; i < n_; ++i) {
     Lb cb = cls(i);
-    BreakAction action;
     bool absorbed = false;
     const Lb sp_base = eff == Lb::SP ? before_spaces : eff;
-    if (raw_a == Lb::BK)
-      action = BreakAction::Mandatory;  // LB4
-    else if (raw_a == Lb::CR && cb == Lb::LF)
-      action = BreakAction::None;  // LB5
-    else if (raw_a == Lb::CR || raw_a == Lb::LF || raw_a == Lb::NL)
-      action = BreakAction::Mandatory;
-    else if (cb == Lb::BK || cb == Lb::CR || cb == Lb::LF || cb == Lb::NL)
-      action = BreakAction::None;  // LB6
-    else if (cb == Lb::SP || cb == Lb::ZW)
-      action = BreakAction::None;  // LB7
-    else if (sp_base == Lb::ZW)
-      action = BreakAction::Allowed;  // LB8
-    else if (raw_a == Lb::ZWJ)
-      action = BreakAction::None;  // LB8a
-    else if ((cb == Lb::CM || cb == Lb::ZWJ) && eff != Lb::SP) {
-      action = BreakAction::None;  // LB9 (eff is never BK, CR, LF, NL or ZW here)
-      absorbed = true;
-    } else {
-      action = pair_action(eff, cb == Lb::CM || cb == Lb::ZWJ ? Lb::AL : cb, i, sp_base);  // LB10
-    }
-    result[i - 1] = action;
+    result[i - 1] = action_before(i, cb, sp_base, absorbed);
     if (absorbed) continue;
     if (cb == Lb::CM || cb == Lb::ZWJ) cb = Lb::AL;  // LB10
-    // ... and the state after character i.
-    if (cb == Lb::SP && eff != Lb::SP) before_spaces = eff;
-    numeric_close = numeric && (cb == Lb::CL || cb == Lb::CP);
-    numeric = cb == Lb::NU || (numeric && (cb == Lb::SY || cb == Lb::IS));
-    ri_run = cb == Lb::RI ? ri_run + 1 : 0;
-    a_prev = eff;
-    a_prev_char = a_char;
-    eff = cb;
-    a_props = props[i];
-    a_char = text[i];
+    advance(i, cb);
   }
-  result[n - 1] = BreakAction::Mandatory;  // LB3
+  result[n_ - 1] = BreakAction::Mandatory;  // LB3
   return result;
+}
+
+// LB4-LB10 before character i (class cb); `absorbed`: LB9 attaches it to
+// the base before it.
+BreakAction LineBreaker::action_before(std::size_t i, Lb cb, Lb sp_base, bool& absorbed) const {
+  const Lb raw_a = cls(i - 1);
+  if (raw_a == Lb::BK) return BreakAction::Mandatory;             // LB4
+  if (raw_a == Lb::CR && cb == Lb::LF) return BreakAction::None;  // LB5
+  if (raw_a == Lb::CR || raw_a == Lb::LF || raw_a == Lb::NL) return BreakAction::Mandatory;
+  if (cb == Lb::BK || cb == Lb::CR || cb == Lb::LF || cb == Lb::NL) return BreakAction::None;  // LB6
+  if (cb == Lb::SP || cb == Lb::ZW) return BreakAction::None;                                  // LB7
+  if (sp_base == Lb::ZW) return BreakAction::Allowed;                                          // LB8
+  if (raw_a == Lb::ZWJ) return BreakAction::None;                                              // LB8a
+  if ((cb == Lb::CM || cb == Lb::ZWJ) && eff != Lb::SP) {
+    absorbed = true;
+    return BreakAction::None;  // LB9 (eff is never BK, CR, LF, NL or ZW here)
+  }
+  return pair_action(eff, cb == Lb::CM || cb == Lb::ZWJ ? Lb::AL : cb, i, sp_base);  // LB10
+}
+
+// LB11-LB31 between effective classes a and b (b at index i).
+BreakAction LineBreaker::pair_action(Lb a, Lb b, std::size_t i, Lb sp_base) const {
+  constexpr BreakAction no = BreakAction::None, yes = BreakAction::Allowed;
+  if (a == Lb::WJ || b == Lb::WJ) return no;                                               // LB11
+  if (a == Lb::GL) return no;                                                              // LB12
+  if (b == Lb::GL && a != Lb::SP && a != Lb::BA && a != Lb::HY) return no;                 // LB12a
+  if (b == Lb::CL || b == Lb::CP || b == Lb::EX || b == Lb::IS || b == Lb::SY) return no;  // LB13
+  if (sp_base == Lb::OP) return no;                                                        // LB14
+  if (b == Lb::OP && sp_base == Lb::QU) return no;                                         // LB15
+  if (b == Lb::NS && (sp_base == Lb::CL || sp_base == Lb::CP)) return no;                  // LB16
+  if (b == Lb::B2 && sp_base == Lb::B2) return no;                                         // LB17
+  if (a == Lb::SP) return yes;                                                             // LB18
+  if (a == Lb::QU || b == Lb::QU) return no;                                               // LB19
+  if (a == Lb::CB || b == Lb::CB) return yes;                                              // LB20
+  if (b == Lb::BA || b == Lb::HY || b == Lb::NS || a == Lb::BB) return no;                 // LB21
+  if ((a == Lb::HY || a == Lb::BA) && a_prev == Lb::HL) return no;                         // LB21a
+  if (a == Lb::SY && b == Lb::HL) return no;                                               // LB21b
+  if (b == Lb::IN) return no;                                                              // LB22
+  const bool a_letter = a == Lb::AL || a == Lb::HL, b_letter = b == Lb::AL || b == Lb::HL;
+  if ((a_letter && b == Lb::NU) || (a == Lb::NU && b_letter)) return no;  // LB23
+  const bool b_ideo = b == Lb::ID || b == Lb::EB || b == Lb::EM;
+  if ((a == Lb::PR && b_ideo) || ((a == Lb::ID || a == Lb::EB || a == Lb::EM) && b == Lb::PO)) return no;  // LB23a
+  const bool a_prpo = a == Lb::PR || a == Lb::PO, b_prpo = b == Lb::PR || b == Lb::PO;
+  if ((a_prpo && b_letter) || (a_letter && b_prpo)) return no;                                             // LB24
+  if (a_prpo && (b == Lb::NU || ((b == Lb::OP || b == Lb::HY) && next_base(i + 1) == Lb::NU))) return no;  // LB25
+  if ((a == Lb::OP || a == Lb::HY) && b == Lb::NU) return no;
+  if (numeric && (b == Lb::NU || b == Lb::SY || b == Lb::IS || b == Lb::CL || b == Lb::CP)) return no;
+  if ((numeric || numeric_close) && b_prpo) return no;
+  if ((a == Lb::JL && (b == Lb::JL || b == Lb::JV || b == Lb::H2 || b == Lb::H3)) ||  // LB26
+      ((a == Lb::JV || a == Lb::H2) && (b == Lb::JV || b == Lb::JT)) || ((a == Lb::JT || a == Lb::H3) && b == Lb::JT))
+    return no;
+  const bool a_korean = a == Lb::JL || a == Lb::JV || a == Lb::JT || a == Lb::H2 || a == Lb::H3;
+  const bool b_korean = b == Lb::JL || b == Lb::JV || b == Lb::JT || b == Lb::H2 || b == Lb::H3;
+  if ((a_korean && b == Lb::PO) || (a == Lb::PR && b_korean)) return no;          // LB27
+  if (a_letter && b_letter) return no;                                            // LB28
+  const bool a_aksara = is_aksara(a, a_char), b_aksara = is_aksara(b, text_[i]);  // LB28a
+  if (a == Lb::AP && b_aksara) return no;
+  if (a_aksara && (b == Lb::VF || b == Lb::VI)) return no;
+  if (a == Lb::VI && is_aksara(a_prev, a_prev_char) && (b == Lb::AK || text_[i] == 0x25CC)) return no;
+  if (a_aksara && b_aksara && next_base(i + 1) == Lb::VF) return no;
+  if (a == Lb::IS && b_letter) return no;                                           // LB29
+  if ((a_letter || a == Lb::NU) && b == Lb::OP && !(props_[i] & kWide)) return no;  // LB30
+  if (a == Lb::CP && !(a_props & kWide) && (b_letter || b == Lb::NU)) return no;
+  if (a == Lb::RI && b == Lb::RI && ri_run % 2 == 1) return no;                        // LB30a
+  if (b == Lb::EM && (a == Lb::EB || (a_props & kPictographicUnassigned))) return no;  // LB30b
+  return yes;                                                                          // LB31
+}
+
+// The state after character i, of effective class cb.
+void LineBreaker::advance(std::size_t i, Lb cb) {
+  if (cb == Lb::SP && eff != Lb::SP) before_spaces = eff;
+  numeric_close = numeric && (cb == Lb::CL || cb == Lb::CP);
+  numeric = cb == Lb::NU || (numeric && (cb == Lb::SY || cb == Lb::IS));
+  ri_run = cb == Lb::RI ? ri_run + 1 : 0;
+  a_prev = eff;
+  a_prev_char = a_char;
+  eff = cb;
+  a_props = props_[i];
+  a_char = text_[i];
+}
+
+}  // namespace
+
+std::vector<BreakAction> line_breaks(std::u32string_view text, std::string_view language) {
+  return LineBreaker(text, language).run();
 }
 
 std::vector<bool> grapheme_starts(std::u32string_view text) {

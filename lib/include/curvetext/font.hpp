@@ -33,6 +33,16 @@ struct FontMetrics {
   double ascender = 0.0;
   double descender = 0.0;  // negative below the baseline
   double line_gap = 0.0;
+  // Decoration bars, in font units at the current variation (MVAR applied),
+  // positions y up from the baseline (negative below it); the bar is drawn
+  // centred on its position. Underline: the post table's underlinePosition
+  // and underlineThickness; strikeout: OS/2's yStrikeoutPosition and
+  // yStrikeoutSize. A face without the table gets -0.1 em (underline) or
+  // 0.3 em (strikeout) and a thickness of 0.05 em.
+  double underline_position = 0.0;
+  double underline_thickness = 0.0;
+  double strikeout_position = 0.0;
+  double strikeout_thickness = 0.0;
 };
 
 // Synthetic bold and slant for a face that lacks the weight or slant asked

@@ -1,7 +1,7 @@
 // Paragraph layout: UTF-8 text with styled spans -> lines of positioned glyph
 // runs, line metrics, bounds, carets, hit testing and selection rectangles.
 //
-// Pipeline (lib/layout/layout.cpp): paragraphs split at paragraph separators;
+// Pipeline (lib/layout/, one file per stage: paragraph_builder.hpp): paragraphs split at paragraph separators;
 // per paragraph the bidi levels (bidi.hpp), script runs (HarfBuzz's Unicode
 // data; Common and Inherited characters join their neighbours), a font per
 // grapheme cluster (font_collection.hpp: the span's fonts, then fontconfig),
@@ -204,7 +204,7 @@ class CURVETEXT_API Paragraph {
   CaretPosition move_word_visually(CaretPosition from, int direction) const;
 
  private:
-  friend struct ParagraphBuilder;  // lib/layout/layout.cpp
+  friend struct ParagraphBuilder;  // lib/layout/paragraph_builder.hpp
   // A grapheme cluster's box on a line, for carets, hit testing and selection.
   struct ClusterBox {
     std::size_t start = 0, end = 0;  // UTF-8 range of the grapheme
