@@ -30,7 +30,7 @@ class ActiveIntervals {
   void overlapping(std::uint32_t lo, std::uint32_t hi, Visit&& visit) const {
     for (std::size_t node = lo + leaves_; node >= 1; node /= 2)
       for (std::uint32_t e = covers_[node]; e != kNone; e = pool_[e].next) visit(pool_[e].box);
-    if (lo < hi) starting_in(1, 0, leaves_ - 1, lo + 1, hi, visit);
+    if (lo < hi) starting_in(1, 0, static_cast<std::uint32_t>(leaves_ - 1), lo + 1, hi, visit);
   }
 
  private:
