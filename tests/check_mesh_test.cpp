@@ -53,25 +53,60 @@ std::set<std::pair<std::size_t, std::size_t>> all_pairs(const std::vector<Box>& 
   return pairs;
 }
 
+// Both methods (the scan and the sweep), and the choice between them.
 TEST(CheckMesh, BoxPairSearchFindsEveryPairOnce) {
-  std::mt19937 random(7);
-  // Coordinates on a small grid, so that boxes share bounds and touch.
-  std::uniform_int_distribution<int> coordinate(0, 40), length(0, 12), coin(0, 3);
-  BoxPairSearch search;  // reused: its scratch must not leak between runs
-  for (int round = 0; round < 40; ++round) {
-    std::vector<Box> boxes(60 + round);
-    std::vector<char> keyed(boxes.size());
-    for (std::size_t i = 0; i < boxes.size(); ++i) {
-      const Vec2 p{static_cast<double>(coordinate(random)), static_cast<double>(coordinate(random))};
-      boxes[i].add(p);
-      // Long boxes along both axes, flat ones, points.
-      const int shape = coin(random);
-      boxes[i].add(p + Vec2{shape == 1 ? 30.0 : length(random), shape == 2 ? 30.0 : length(random)});
-      keyed[i] = round % 2 == 0 || coin(random) == 0;
+  for (const auto method : {BoxPairSearch::Method::Auto, BoxPairSearch::Method::Scan, BoxPairSearch::Method::Sweep}) {
+    std::mt19937 random(7);
+    // Coordinates on a small grid, so that boxes share bounds and touch.
+    std::uniform_int_distribution<int> coordinate(0, 40), length(0, 12), coin(0, 3);
+    BoxPairSearch search;  // reused: its scratch must not leak between runs
+    search.set_method(method);
+    for (int round = 0; round < 40; ++round) {
+      std::vector<Box> boxes(60 + round);
+      std::vector<char> keyed(boxes.size());
+      for (std::size_t i = 0; i < boxes.size(); ++i) {
+        const Vec2 p{static_cast<double>(coordinate(random)), static_cast<double>(coordinate(random))};
+        boxes[i].add(p);
+        // Long boxes along both axes, flat ones, points.
+        const int shape = coin(random);
+        boxes[i].add(p + Vec2{shape == 1 ? 30.0 : length(random), shape == 2 ? 30.0 : length(random)});
+        keyed[i] = round % 2 == 0 || coin(random) == 0;
+      }
+      for (const BoxContact contact : {BoxContact::Touching, BoxContact::Interiors})
+        EXPECT_EQ(searched(search, boxes, contact, keyed), all_pairs(boxes, contact, keyed)) << round;
     }
-    for (const BoxContact contact : {BoxContact::Touching, BoxContact::Interiors})
-      EXPECT_EQ(searched(search, boxes, contact, keyed), all_pairs(boxes, contact, keyed)) << round;
   }
+}
+
+// The scan is taken only while the pairs it would meet are few per box: a
+// comb's teeth beside one box spanning them all is cheap, n boxes all
+// overlapping in x (a fan) is not, and there nothing is reported.
+TEST(CheckMesh, BoxPairScanOnlyWhereCheap) {
+  std::vector<Box> teeth, fan;
+  for (int i = 0; i < 4000; ++i) {
+    Box tooth, blade;
+    tooth.add({10.0 * i, 1});
+    tooth.add({10.0 * i + 4, 1000});
+    blade.add({0, i});
+    blade.add({40000.0 - i, i + 2.0});
+    teeth.push_back(tooth);
+    fan.push_back(blade);
+  }
+  Box base;
+  base.add({0, 0});
+  base.add({40000, 1});
+  teeth.push_back(base);
+  BoxPairSearch search;
+  std::size_t pairs = 0;
+  auto all = [](std::size_t) { return true; };
+  auto count = [&](std::size_t, std::size_t) { ++pairs; };
+  EXPECT_TRUE(search.scan_if_cheap(teeth, BoxContact::Touching, all, count));
+  EXPECT_EQ(pairs, 4000u);  // the base touches every tooth; teeth 6 apart do not touch
+  pairs = 0;
+  EXPECT_FALSE(search.scan_if_cheap(fan, BoxContact::Touching, all, count));
+  EXPECT_EQ(pairs, 0u);
+  search.run(fan, BoxContact::Touching, all, count);  // by the sweep: each blade meets its two neighbours on each side
+  EXPECT_EQ(pairs, 2u * 4000 - 3);
 }
 
 // Teeth standing on a fan's base touch it along one line: as open boxes, no pair.

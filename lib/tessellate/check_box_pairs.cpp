@@ -77,6 +77,29 @@ bool BoxPairSearch::counts(const Box& b) const {
   return b.min.x < b.max.x && b.min.y < b.max.y;
 }
 
+// Sorts the boxes along x and counts the pairs a forward scan would meet
+// (boxes starting within each box's x range); whether that is cheap.
+bool BoxPairSearch::prepare_scan(const std::vector<Box>& boxes) {
+  order_.clear();
+  for (std::size_t i = 0; i < boxes.size(); ++i)
+    if (counts(boxes[i])) order_.push_back({boxes[i].min.x, boxes[i].max.x, static_cast<std::uint32_t>(i)});
+  std::sort(order_.begin(), order_.end(), [](const Extent& a, const Extent& b) { return a.lo < b.lo; });
+  if (method_ == Method::Scan) return true;
+  const std::size_t budget = kScanPairsPerBox * order_.size() + kScanPairsConstant;
+  starts_.resize(order_.size());
+  for (std::size_t k = 0; k < order_.size(); ++k) starts_[k] = order_[k].lo;
+  const bool open = contact_ == BoxContact::Interiors;
+  std::size_t pairs = 0;
+  for (std::size_t k = 0; k < order_.size(); ++k) {
+    const auto from = starts_.begin() + static_cast<std::ptrdiff_t>(k + 1);
+    const auto end = open ? std::lower_bound(from, starts_.end(), order_[k].hi)
+                          : std::upper_bound(from, starts_.end(), order_[k].hi);
+    pairs += static_cast<std::size_t>(end - from);
+    if (pairs > budget) return false;
+  }
+  return true;
+}
+
 void BoxPairSearch::prepare_events(const std::vector<Box>& boxes) {
   events_.clear();
   events_.reserve(2 * boxes.size());

@@ -1,9 +1,13 @@
 // Overlapping pairs among many axis-aligned boxes, for check_mesh's searches
-// (hull overlaps, contact refinement, nested contours): a sweep over x whose
-// active boxes are kept in an interval structure over y, so that the work is
-// O((n + pairs) log n) whatever the boxes' shapes. Sorting along one axis and
-// scanning forward is quadratic when long boxes lie along both axes (a comb's
-// fan triangles span its width, its teeth its height).
+// (hull overlaps, contact refinement, nested contours, contacts between
+// edges): a sweep over x whose active boxes are kept in an interval structure
+// over y, so that the work is O((n + pairs) log n) whatever the boxes' shapes.
+// Sorting along x and scanning forward is quadratic when long boxes lie along
+// both axes (a comb's fan triangles span its width, its teeth its height),
+// but on most inputs (a glyph's pieces) it meets few boxes per box and costs
+// a fraction of the sweep: so the boxes are sorted along x first, the pairs
+// the scan would meet counted (binary search, O(n log n)), and the scan used
+// when they are at most kScanPairsPerBox per box (plus a constant).
 #pragma once
 
 #include <cstdint>
@@ -76,8 +80,44 @@ enum class BoxContact { Touching, Interiors };
 // scratch memory is kept for the next search.
 class BoxPairSearch {
  public:
+  // Which method run uses: Auto as above; the others for tests.
+  enum class Method { Auto, Scan, Sweep };
+  static constexpr std::size_t kScanPairsPerBox = 8, kScanPairsConstant = 1024;
+
+  void set_method(Method method) { method_ = method; }
+
   template <class Keyed, class Report>
   void run(const std::vector<Box>& boxes, BoxContact contact, Keyed&& keyed, Report&& report) {
+    if (!scan_if_cheap(boxes, contact, keyed, report)) sweep(boxes, contact, keyed, report);
+  }
+
+  // The same by the scan when that is cheap (as above); otherwise reports
+  // nothing and returns false. The pairs reported are then at most
+  // kScanPairsPerBox * n + kScanPairsConstant.
+  template <class Keyed, class Report>
+  bool scan_if_cheap(const std::vector<Box>& boxes, BoxContact contact, Keyed&& keyed, Report&& report) {
+    contact_ = contact;
+    if (method_ == Method::Sweep || !prepare_scan(boxes)) return false;
+    const bool open = contact_ == BoxContact::Interiors;
+    for (std::size_t a = 0; a < order_.size(); ++a) {
+      const Extent& p = order_[a];
+      const bool p_keyed = static_cast<bool>(keyed(p.box));
+      for (std::size_t b = a + 1; b < order_.size(); ++b) {
+        const Extent& q = order_[b];
+        if (open ? q.lo >= p.hi : q.lo > p.hi) break;
+        if (!p_keyed && !keyed(q.box)) continue;
+        const Box &bp = boxes[p.box], &bq = boxes[q.box];
+        const bool meet =
+            open ? bq.min.y < bp.max.y && bp.min.y < bq.max.y : bq.min.y <= bp.max.y && bp.min.y <= bq.max.y;
+        if (meet) report(static_cast<std::size_t>(p.box), static_cast<std::size_t>(q.box));
+      }
+    }
+    return true;
+  }
+
+ private:
+  template <class Keyed, class Report>
+  void sweep(const std::vector<Box>& boxes, BoxContact contact, Keyed&& keyed, Report&& report) {
     contact_ = contact;
     prepare(boxes, [&](std::size_t i) { return static_cast<bool>(keyed(i)); });
     for (const Event& e : events_) {
@@ -95,7 +135,6 @@ class BoxPairSearch {
     }
   }
 
- private:
   struct Event {
     double x;
     std::uint32_t box;
@@ -110,7 +149,15 @@ class BoxPairSearch {
   void prepare_events(const std::vector<Box>& boxes);
 
   bool counts(const Box& b) const;
+  bool prepare_scan(const std::vector<Box>& boxes);
 
+  struct Extent {
+    double lo, hi;  // along x
+    std::uint32_t box;
+  };
+  Method method_ = Method::Auto;
+  std::vector<Extent> order_;  // the boxes that count, by lo
+  std::vector<double> starts_;
   BoxContact contact_ = BoxContact::Touching;
   std::vector<char> flags_;
   std::vector<Event> events_;

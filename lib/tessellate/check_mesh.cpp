@@ -33,6 +33,7 @@ using detail::orient2d;
 struct CheckScratch {
   detail::BoxPairSearch pairs;
   detail::AreaSweep sweep;
+  std::vector<Box> boxes;
 };
 
 double triangle_area(Vec2 a, Vec2 b, Vec2 c) { return 0.5 * cross(b - a, c - a); }
@@ -306,9 +307,43 @@ std::vector<std::vector<FlatEdge>> flattened(const Outline& outline, CheckScratc
   return contours;
 }
 
+// Whether two flattened edges meet other than as consecutive, non-collinear
+// pieces of one contour at their common end: what the sweep reports as
+// touching (anything it reports is such a contact), found by testing the
+// pairs of edges whose boxes meet. Unknown when those are too many for the
+// scan (see BoxPairSearch), or an edge is not finite: then the sweep decides.
+enum class Contact { None, Some, Unknown };
+
+Contact edge_contacts(const std::vector<detail::AreaSweep::Edge>& edges, const std::vector<std::size_t>& contour_size,
+                      CheckScratch& scratch) {
+  auto finite = [](Vec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); };
+  scratch.boxes.assign(edges.size(), Box{});
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    if (!finite(edges[i].a) || !finite(edges[i].b)) return Contact::Unknown;
+    scratch.boxes[i].add(edges[i].a);
+    scratch.boxes[i].add(edges[i].b);
+  }
+  bool found = false;
+  const bool scanned = scratch.pairs.scan_if_cheap(
+      scratch.boxes, detail::BoxContact::Touching, [](std::size_t) { return true; },
+      [&](std::size_t i, std::size_t j) {
+        const detail::AreaSweep::Edge &e = edges[i], &f = edges[j];
+        if (found || !detail::segments_intersect(e.a, e.b, f.a, f.b)) return;
+        bool consecutive = false;
+        if (e.contour == f.contour) {
+          const std::size_t lo = std::min(e.index, f.index), hi = std::max(e.index, f.index);
+          consecutive = hi == lo + 1 || (lo == 0 && hi + 1 == contour_size[e.contour]);
+        }
+        if (!consecutive || (orient2d(e.a, e.b, f.a) == 0 && orient2d(e.a, e.b, f.b) == 0)) found = true;
+      });
+  if (!scanned) return Contact::Unknown;
+  return found ? Contact::Some : Contact::None;
+}
+
 // Nonzero area by the sweep over the flattened outline; `crossing` is set
 // when two edges meet other than as consecutive pieces of one contour (then
-// only this method is right). Without a crossing NaN is returned.
+// only this method is right). Without a crossing NaN is returned (and the
+// sweep skipped where a scan of the edges' box pairs shows there is none).
 double swept_nonzero_area(const Outline& outline, bool& crossing, CheckScratch& scratch) {
   const std::vector<std::vector<FlatEdge>> contours = flattened(outline, scratch);
   std::vector<detail::AreaSweep::Edge> edges;
@@ -323,6 +358,8 @@ double swept_nonzero_area(const Outline& outline, bool& crossing, CheckScratch& 
     }
     contour_size.push_back(c.size());
   }
+  crossing = false;
+  if (edge_contacts(edges, contour_size, scratch) == Contact::None) return std::numeric_limits<double>::quiet_NaN();
   const double area = scratch.sweep.run(edges, contour_size, crossing);
   return crossing ? area : std::numeric_limits<double>::quiet_NaN();
 }
