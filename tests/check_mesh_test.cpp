@@ -80,15 +80,17 @@ TEST(CheckMesh, BoxPairSearchFindsEveryPairOnce) {
 
 // The scan is taken only while the pairs it would meet are few per box: a
 // comb's teeth beside one box spanning them all is cheap, n boxes all
-// overlapping in x (a fan) is not, and there nothing is reported.
+// overlapping in x (a fan) is not, and there nothing is reported; with no
+// box keyed there is nothing to search.
 TEST(CheckMesh, BoxPairScanOnlyWhereCheap) {
   std::vector<Box> teeth, fan;
   for (int i = 0; i < 4000; ++i) {
     Box tooth, blade;
     tooth.add({10.0 * i, 1});
     tooth.add({10.0 * i + 4, 1000});
-    blade.add({0, i});
-    blade.add({40000.0 - i, i + 2.0});
+    const double y = i;
+    blade.add({0, y});
+    blade.add({40000.0 - y, y + 2.0});
     teeth.push_back(tooth);
     fan.push_back(blade);
   }
@@ -107,6 +109,11 @@ TEST(CheckMesh, BoxPairScanOnlyWhereCheap) {
   EXPECT_EQ(pairs, 0u);
   search.run(fan, BoxContact::Touching, all, count);  // by the sweep: each blade meets its two neighbours on each side
   EXPECT_EQ(pairs, 2u * 4000 - 3);
+  // No box keyed (a mesh without curved faces): nothing to search, at no cost.
+  pairs = 0;
+  EXPECT_TRUE(search.scan_if_cheap(
+      fan, BoxContact::Touching, [](std::size_t) { return false; }, count));
+  EXPECT_EQ(pairs, 0u);
 }
 
 // Teeth standing on a fan's base touch it along one line: as open boxes, no pair.

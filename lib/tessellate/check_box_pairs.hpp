@@ -97,6 +97,9 @@ class BoxPairSearch {
   template <class Keyed, class Report>
   bool scan_if_cheap(const std::vector<Box>& boxes, BoxContact contact, Keyed&& keyed, Report&& report) {
     contact_ = contact;
+    bool any_keyed = false;  // none (a mesh without curved faces): no pair to search
+    for (std::size_t i = 0; i < boxes.size() && !any_keyed; ++i) any_keyed = static_cast<bool>(keyed(i));
+    if (!any_keyed) return true;
     if (method_ == Method::Sweep || !prepare_scan(boxes)) return false;
     const bool open = contact_ == BoxContact::Interiors;
     for (std::size_t a = 0; a < order_.size(); ++a) {
