@@ -271,5 +271,49 @@ TEST(CheckMesh, SweptAreaOfACombCrossedByABar) {
   EXPECT_TRUE(touching);
 }
 
+// Long spikes around a centre: the edges' boxes overlap in x by the
+// thousand, too many pairs for the scan, so whether contours touch is left
+// to the sweep. Alone the star touches nothing (the exact per-contour area);
+// with a ring crossing every spike the sweep's area is the reference. Both
+// must agree with the mesh.
+TEST(CheckMesh, ContactsOfManyLongEdgesAreLeftToTheSweep) {
+  const int spikes = 1000;
+  const double pi = 3.141592653589793;
+  Outline star;
+  double star_area = 0;
+  std::vector<Vec2> points;
+  for (int i = 0; i < 2 * spikes; ++i) {
+    const double a = pi * i / spikes, r = i % 2 == 0 ? 1000.0 : 10.0;
+    points.push_back({r * std::cos(a), r * std::sin(a)});
+  }
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (i == 0) {
+      star.move_to(points[i]);
+    } else {
+      star.line_to(points[i]);
+    }
+    star_area += 0.5 * cross(points[i], points[(i + 1) % points.size()]);
+  }
+  star.close();
+  const MeshCheck alone = check_mesh(build_mesh(star, {}), star);
+  EXPECT_TRUE(alone.ok()) << alone.problems.front();
+  EXPECT_NEAR(alone.area_outline, star_area, 1e-12 * star_area);
+
+  Outline crossed = star;
+  for (int i = 0; i < 64; ++i) {  // a ring of radius 500..510 (outer contour only), crossing every spike
+    const double a = 2 * pi * i / 64;
+    if (i == 0) {
+      crossed.move_to({510 * std::cos(a), 510 * std::sin(a)});
+    } else {
+      crossed.line_to({510 * std::cos(a), 510 * std::sin(a)});
+    }
+  }
+  crossed.close();
+  const MeshCheck both = check_mesh(build_mesh(crossed, {}), crossed);
+  EXPECT_TRUE(both.ok()) << both.problems.front();
+  EXPECT_GT(both.area_outline, star_area);  // the union: more than the star alone, less than the sum
+  EXPECT_LT(both.area_outline, star_area + 64 * 0.5 * 510 * 510 * std::sin(2 * pi / 64));
+}
+
 }  // namespace
 }  // namespace curvetext
