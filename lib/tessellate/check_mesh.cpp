@@ -1,7 +1,10 @@
-// mesh_area and check_mesh: the invariants of DESIGN.md section 4, measured on
-// a finished mesh. The outline's area is computed here from the outline alone
-// (Green's theorem per contour, nesting by exact winding numbers of curved
-// contours), not from anything the builder decided.
+// mesh_area and check_mesh: the invariants of docs/design.md section 4,
+// measured on a finished mesh. The outline's area is computed here from the
+// outline alone (Green's theorem per contour, nesting by exact winding numbers
+// of curved contours; or, when contours cross or touch, a sweep over the
+// flattened outline), not from anything the builder decided. Every search is
+// O((n + k) log n), k the pairs found: the box-pair searches of
+// check_box_pairs.hpp and the sweep of check_area_sweep.hpp.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -16,6 +19,8 @@
 #include "curvetext/error.hpp"
 #include "curvetext/mesh.hpp"
 #include "core/tolerances.hpp"
+#include "tessellate/check_area_sweep.hpp"
+#include "tessellate/check_box_pairs.hpp"
 #include "tessellate/predicates.hpp"
 #include "tessellate/rings.hpp"
 
@@ -23,6 +28,13 @@ namespace curvetext {
 namespace {
 
 using detail::orient2d;
+
+// check_mesh's working memory, reused across its searches.
+struct CheckScratch {
+  detail::BoxPairSearch pairs;
+  detail::AreaSweep sweep;
+  std::vector<Box> boxes;
+};
 
 double triangle_area(Vec2 a, Vec2 b, Vec2 c) { return 0.5 * cross(b - a, c - a); }
 
@@ -72,7 +84,23 @@ std::vector<Vec2> probe_points(const Contour& contour) {
   return probes;
 }
 
-double nonzero_outline_area(const Outline& outline) {
+// The winding of `contour` around the first of `probes` that is not on it
+// (0 when that probe is outside the contour's box).
+int winding_around(const Contour& contour, const Box& box, const std::vector<Vec2>& probes) {
+  for (const Vec2 p : probes) {
+    if (p.x < box.min.x || p.x > box.max.x || p.y < box.min.y || p.y > box.max.y) break;
+    bool on_curve = false;
+    const int w = contour_winding(contour, p, on_curve);
+    if (on_curve) continue;  // touching contours: ask another point
+    return w;
+  }
+  return 0;
+}
+
+// Contours that do not touch: each adds its area where the others' winding
+// around it changes from zero to nonzero. Only contours whose boxes overlap
+// can wind around each other.
+double nonzero_outline_area(const Outline& outline, CheckScratch& scratch) {
   const auto& contours = outline.contours();
   const std::size_t n = contours.size();
   std::vector<double> area(n);
@@ -85,23 +113,19 @@ double nonzero_outline_area(const Outline& outline) {
     box[i] = single.control_box();
     probes[i] = probe_points(contours[i]);
   }
+  std::vector<int> outside(n, 0);
+  scratch.pairs.run(
+      box, detail::BoxContact::Touching, [&](std::size_t i) { return area[i] != 0.0; },
+      [&](std::size_t i, std::size_t j) {
+        if (area[i] == 0.0 || area[j] == 0.0) return;
+        outside[i] += winding_around(contours[j], box[j], probes[i]);
+        outside[j] += winding_around(contours[i], box[i], probes[j]);
+      });
   double total = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     if (area[i] == 0.0) continue;
-    int outside = 0;
-    for (std::size_t j = 0; j < n; ++j) {
-      if (j == i || area[j] == 0.0) continue;
-      for (const Vec2 p : probes[i]) {
-        if (p.x < box[j].min.x || p.x > box[j].max.x || p.y < box[j].min.y || p.y > box[j].max.y) break;
-        bool on_curve = false;
-        const int w = contour_winding(contours[j], p, on_curve);
-        if (on_curve) continue;  // touching contours: ask another point
-        outside += w;
-        break;
-      }
-    }
-    const int inside = outside + (area[i] > 0 ? 1 : -1);
-    total += (static_cast<double>(inside != 0) - static_cast<double>(outside != 0)) * std::fabs(area[i]);
+    const int inside = outside[i] + (area[i] > 0 ? 1 : -1);
+    total += (static_cast<double>(inside != 0) - static_cast<double>(outside[i] != 0)) * std::fabs(area[i]);
   }
   return total;
 }
@@ -132,10 +156,9 @@ constexpr std::size_t kMaxFinePiecesPerPiece = 64;  // refinement budget, per co
 
 struct FlatEdge {
   Vec2 a, b;
-  double cap;                          // area between arc and chord, positive when bulging right
-  Box box;                             // of the chord
-  std::size_t contour = 0, index = 0;  // position in the flattened contour
-  Segment piece;                       // the conic piece (kind Line for lines)
+  double cap;     // area between arc and chord, positive when bulging right
+  Box box;        // of the chord
+  Segment piece;  // the conic piece (kind Line for lines)
   int depth = 0;
 };
 
@@ -191,59 +214,59 @@ bool chords_overlap(const FlatEdge& e, const FlatEdge& f) {
 }
 
 // One round of refinement: marks the conic pieces (caps above `fine_limit`)
-// whose hull overlaps another piece's hull, or whose chord overlaps another's. Returns the number marked.
+// whose hull overlaps another piece's hull, or whose chord overlaps
+// another's. Returns the number marked.
 std::size_t mark_contacts(const std::vector<std::vector<FlatEdge>>& contours, double fine_limit,
-                          std::vector<std::vector<char>>& marks) {
+                          std::vector<std::vector<char>>& marks, CheckScratch& scratch) {
   struct Ref {
-    Box box;
     std::size_t c, i;
   };
   std::vector<Ref> refs;
+  std::vector<Box> boxes;
   for (std::size_t c = 0; c < contours.size(); ++c) {
     marks[c].assign(contours[c].size(), 0);
     for (std::size_t i = 0; i < contours[c].size(); ++i) {
-      Ref r{contours[c][i].box, c, i};
-      if (contours[c][i].cap != 0.0) r.box.add(contours[c][i].piece.p[1]);
-      refs.push_back(r);
+      Box box = contours[c][i].box;
+      if (contours[c][i].cap != 0.0) box.add(contours[c][i].piece.p[1]);
+      refs.push_back({c, i});
+      boxes.push_back(box);
     }
   }
-  std::sort(refs.begin(), refs.end(), [](const Ref& x, const Ref& y) { return x.box.min.x < y.box.min.x; });
-  auto refinable = [&](const Ref& r) {
-    const FlatEdge& e = contours[r.c][r.i];
+  auto refinable = [&](std::size_t k) {
+    const FlatEdge& e = contours[refs[k].c][refs[k].i];
     return std::fabs(e.cap) > fine_limit && e.depth < kMaxFineDepth;
   };
   std::size_t marked = 0;
-  for (std::size_t x = 0; x < refs.size(); ++x) {
-    for (std::size_t y = x + 1; y < refs.size() && refs[y].box.min.x <= refs[x].box.max.x; ++y) {
-      const Ref& r = refs[x];
-      const Ref& q = refs[y];
-      if (!refinable(r) && !refinable(q)) continue;
-      if (!detail::boxes_overlap(r.box, q.box)) continue;
-      Vec2 hr[3], hq[3];
-      const int nr = hull_of(contours[r.c][r.i], hr), nq = hull_of(contours[q.c][q.i], hq);
-      if (!detail::hulls_overlap(hr, nr, hq, nq) && !chords_overlap(contours[r.c][r.i], contours[q.c][q.i])) continue;
-      for (const Ref* t : {&r, &q}) {
-        if (refinable(*t) && !marks[t->c][t->i]) {
-          marks[t->c][t->i] = 1;
-          ++marked;
-        }
+  scratch.pairs.run(boxes, detail::BoxContact::Touching, refinable, [&](std::size_t x, std::size_t y) {
+    const FlatEdge& e = contours[refs[x].c][refs[x].i];
+    const FlatEdge& f = contours[refs[y].c][refs[y].i];
+    Vec2 he[3], hf[3];
+    const int ne = hull_of(e, he), nf = hull_of(f, hf);
+    if (!detail::hulls_overlap(he, ne, hf, nf) && !chords_overlap(e, f)) return;
+    for (const std::size_t k : {x, y}) {
+      char& mark = marks[refs[k].c][refs[k].i];
+      if (refinable(k) && !mark) {
+        mark = 1;
+        ++marked;
       }
     }
-  }
+  });
   return marked;
 }
 
 // Halves the conic pieces in contact with other pieces until their caps are
 // below `fine_limit` or the budget of pieces is spent.
-void refine_contacts(std::vector<std::vector<FlatEdge>>& contours, double fine_limit, std::size_t budget) {
+void refine_contacts(std::vector<std::vector<FlatEdge>>& contours, double fine_limit, std::size_t budget,
+                     CheckScratch& scratch) {
   std::vector<std::vector<char>> marks(contours.size());
   std::size_t total = 0;
   for (const auto& c : contours) total += c.size();
   while (total < budget) {
-    const std::size_t marked = mark_contacts(contours, fine_limit, marks);
+    const std::size_t marked = mark_contacts(contours, fine_limit, marks, scratch);
     if (marked == 0 || total + marked > budget) return;
     total += marked;
     for (std::size_t c = 0; c < contours.size(); ++c) {
+      if (std::find(marks[c].begin(), marks[c].end(), 1) == marks[c].end()) continue;
       std::vector<FlatEdge> refined;
       refined.reserve(contours[c].size());
       for (std::size_t i = 0; i < contours[c].size(); ++i) {
@@ -261,11 +284,8 @@ void refine_contacts(std::vector<std::vector<FlatEdge>>& contours, double fine_l
   }
 }
 
-// Nonzero area by the slab sweep; `crossing` is set when two edges meet other
-// than as consecutive pieces of one contour (then only this method is right).
-// Without a crossing the sweep is skipped (its work is the number of edges
-// times the edges a slab crosses, quadratic for a comb) and NaN returned.
-double swept_nonzero_area(const Outline& outline, bool& crossing) {
+// The outline flattened into chords with caps, pieces in contact refined.
+std::vector<std::vector<FlatEdge>> flattened(const Outline& outline, CheckScratch& scratch) {
   const Box cb = outline.control_box();
   const Vec2 diag = cb.max - cb.min;
   const double cap_limit = kCapRelative * dot(diag, diag);
@@ -283,102 +303,65 @@ double swept_nonzero_area(const Outline& outline, bool& crossing) {
   }
   std::size_t coarse = 0;
   for (const auto& c : contours) coarse += c.size();
-  refine_contacts(contours, kCapFineRelative * dot(diag, diag), kMaxFinePiecesPerPiece * coarse + 4096);
-  std::vector<FlatEdge> edges;
-  std::vector<std::size_t> contour_size;
-  for (const auto& c : contours) {
-    for (std::size_t i = 0; i < c.size(); ++i) {
-      edges.push_back(c[i]);
-      edges.back().contour = contour_size.size();
-      edges.back().index = i;
-    }
-    contour_size.push_back(c.size());
+  refine_contacts(contours, kCapFineRelative * dot(diag, diag), kMaxFinePiecesPerPiece * coarse + 4096, scratch);
+  return contours;
+}
+
+// Whether two flattened edges meet other than as consecutive, non-collinear
+// pieces of one contour at their common end: what the sweep reports as
+// touching (anything it reports is such a contact), found by testing the
+// pairs of edges whose boxes meet. Unknown when those are too many for the
+// scan (see BoxPairSearch), or an edge is not finite: then the sweep decides.
+enum class Contact { None, Some, Unknown };
+
+Contact edge_contacts(const std::vector<detail::AreaSweep::Edge>& edges, const std::vector<std::size_t>& contour_size,
+                      CheckScratch& scratch) {
+  auto finite = [](Vec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); };
+  scratch.boxes.assign(edges.size(), Box{});
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    if (!finite(edges[i].a) || !finite(edges[i].b)) return Contact::Unknown;
+    scratch.boxes[i].add(edges[i].a);
+    scratch.boxes[i].add(edges[i].b);
   }
-  // Events: end points and crossing heights.
-  std::vector<double> ys;
-  for (const FlatEdge& e : edges) {
-    ys.push_back(e.a.y);
-    ys.push_back(e.b.y);
-  }
-  crossing = false;
-  {
-    std::vector<std::size_t> order(edges.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::sort(order.begin(), order.end(),
-              [&](std::size_t x, std::size_t y) { return edges[x].box.min.x < edges[y].box.min.x; });
-    for (std::size_t oi = 0; oi < order.size(); ++oi) {
-      const FlatEdge& e = edges[order[oi]];
-      for (std::size_t oj = oi + 1; oj < order.size() && edges[order[oj]].box.min.x <= e.box.max.x; ++oj) {
-        const FlatEdge& f = edges[order[oj]];
-        if (!detail::boxes_overlap(e.box, f.box)) continue;
-        if (detail::segments_cross_properly(e.a, e.b, f.a, f.b)) {
-          crossing = true;
-          const Vec2 r = e.b - e.a, q = f.b - f.a;
-          // (Nearly parallel edges can cross with a cross product that
-          // rounds to 0: then any height of the pair's common span serves.)
-          double t = cross(f.a - e.a, q) / cross(r, q);
-          t = std::isnan(t) ? 0.5 : std::clamp(t, 0.0, 1.0);
-          ys.push_back(e.a.y + r.y * t);
-          continue;
-        }
-        if (crossing || !detail::segments_intersect(e.a, e.b, f.a, f.b)) continue;
-        // Any contact other than consecutive pieces of one contour meeting at
-        // their common end: the per-contour method below cannot be trusted
-        // (a contour touching itself may have lobes of both orientations).
+  bool found = false;
+  const bool scanned = scratch.pairs.scan_if_cheap(
+      scratch.boxes, detail::BoxContact::Touching, [](std::size_t) { return true; },
+      [&](std::size_t i, std::size_t j) {
+        const detail::AreaSweep::Edge &e = edges[i], &f = edges[j];
+        if (found || !detail::segments_intersect(e.a, e.b, f.a, f.b)) return;
         bool consecutive = false;
         if (e.contour == f.contour) {
           const std::size_t lo = std::min(e.index, f.index), hi = std::max(e.index, f.index);
           consecutive = hi == lo + 1 || (lo == 0 && hi + 1 == contour_size[e.contour]);
         }
-        if (!consecutive || (orient2d(e.a, e.b, f.a) == 0 && orient2d(e.a, e.b, f.b) == 0)) crossing = true;
-      }
+        if (!consecutive || (orient2d(e.a, e.b, f.a) == 0 && orient2d(e.a, e.b, f.b) == 0)) found = true;
+      });
+  if (!scanned) return Contact::Unknown;
+  return found ? Contact::Some : Contact::None;
+}
+
+// Nonzero area by the sweep over the flattened outline; `crossing` is set
+// when two edges meet other than as consecutive pieces of one contour (then
+// only this method is right). Without a crossing NaN is returned (and the
+// sweep skipped where a scan of the edges' box pairs shows there is none).
+double swept_nonzero_area(const Outline& outline, bool& crossing, CheckScratch& scratch) {
+  const std::vector<std::vector<FlatEdge>> contours = flattened(outline, scratch);
+  std::vector<detail::AreaSweep::Edge> edges;
+  std::vector<std::size_t> contour_size;
+  std::size_t total = 0;
+  for (const auto& c : contours) total += c.size();
+  edges.reserve(total);
+  for (const auto& c : contours) {
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      edges.push_back(
+          {c[i].a, c[i].b, c[i].cap, static_cast<std::uint32_t>(contour_size.size()), static_cast<std::uint32_t>(i)});
     }
+    contour_size.push_back(c.size());
   }
-  if (!crossing) return std::numeric_limits<double>::quiet_NaN();
-  std::sort(ys.begin(), ys.end());
-  ys.erase(std::unique(ys.begin(), ys.end()), ys.end());
-  std::vector<std::size_t> by_min(edges.size());
-  for (std::size_t i = 0; i < by_min.size(); ++i) by_min[i] = i;
-  std::sort(by_min.begin(), by_min.end(),
-            [&](std::size_t x, std::size_t y) { return edges[x].box.min.y < edges[y].box.min.y; });
-  std::vector<std::size_t> active;
-  struct Hit {
-    double x;
-    int dir;
-    std::size_t edge;
-  };
-  std::vector<Hit> hits;
-  double area = 0.0, caps = 0.0;
-  std::size_t next = 0;
-  for (std::size_t k = 0; k + 1 < ys.size(); ++k) {
-    const double y0 = ys[k], y1 = ys[k + 1], ym = 0.5 * (y0 + y1), dy = y1 - y0;
-    while (next < by_min.size() && edges[by_min[next]].box.min.y <= y0) active.push_back(by_min[next++]);
-    active.erase(std::remove_if(active.begin(), active.end(), [&](std::size_t i) { return edges[i].box.max.y <= y0; }),
-                 active.end());
-    hits.clear();
-    for (const std::size_t i : active) {
-      const FlatEdge& e = edges[i];
-      if (e.box.max.y < y1) continue;
-      const double t = (ym - e.a.y) / (e.b.y - e.a.y);
-      hits.push_back({e.a.x + (e.b.x - e.a.x) * t, e.b.y > e.a.y ? 1 : -1, i});
-    }
-    std::sort(hits.begin(), hits.end(), [](const Hit& p, const Hit& q) { return p.x < q.x; });
-    int w = 0;
-    double width = 0.0;
-    for (std::size_t h = 0; h < hits.size(); ++h) {
-      const int before = w;
-      w += hits[h].dir;
-      if (w != 0 && h + 1 < hits.size()) width += hits[h + 1].x - hits[h].x;
-      const FlatEdge& e = edges[hits[h].edge];
-      if (e.cap == 0.0) continue;
-      // Left of an upward edge is the -x side (before it in the scan).
-      const int left = hits[h].dir > 0 ? before : w, right = hits[h].dir > 0 ? w : before;
-      const double share = dy / (e.box.max.y - e.box.min.y);
-      caps += e.cap * share * (static_cast<double>(left != 0) - static_cast<double>(right != 0));
-    }
-    area += width * dy;
-  }
-  return area + caps;
+  crossing = false;
+  if (edge_contacts(edges, contour_size, scratch) == Contact::None) return std::numeric_limits<double>::quiet_NaN();
+  const double area = scratch.sweep.run(edges, contour_size, crossing);
+  return crossing ? area : std::numeric_limits<double>::quiet_NaN();
 }
 
 struct Face {
@@ -418,16 +401,13 @@ double mesh_area(const Mesh& mesh) {
 
 namespace {
 
-MeshCheck check_mesh_of(const Mesh& mesh, const Outline& quadratic_outline) {
-  MeshCheck check;
-  const std::uint32_t npoints = static_cast<std::uint32_t>(mesh.points.size());
-  auto valid_index = [&](std::uint32_t i) { return i < npoints; };
-
-  // Faces, with index validation first so the rest can trust the indices.
-  std::vector<Face> faces;
+// The faces, with their indices validated first so that the rest can trust them.
+bool collect_faces(const Mesh& mesh, MeshCheck& check, std::vector<Face>& faces) {
+  const std::size_t npoints = mesh.points.size();
+  auto valid = [&](std::uint32_t i) { return i < npoints; };
   for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
     const auto& t = mesh.triangles[i];
-    if (!valid_index(t[0]) || !valid_index(t[1]) || !valid_index(t[2])) {
+    if (!valid(t[0]) || !valid(t[1]) || !valid(t[2])) {
       add_problem(check, "triangle " + std::to_string(i) + " has an out-of-range vertex index");
       check.watertight = false;
       continue;
@@ -436,7 +416,7 @@ MeshCheck check_mesh_of(const Mesh& mesh, const Outline& quadratic_outline) {
   }
   for (std::size_t i = 0; i < mesh.curves.size(); ++i) {
     const CurvedTriangle& c = mesh.curves[i];
-    if (!valid_index(c.p0) || !valid_index(c.control) || !valid_index(c.p2)) {
+    if (!valid(c.p0) || !valid(c.control) || !valid(c.p2)) {
       add_problem(check, "curve " + std::to_string(i) + " has an out-of-range vertex index");
       check.watertight = false;
       continue;
@@ -445,20 +425,22 @@ MeshCheck check_mesh_of(const Mesh& mesh, const Outline& quadratic_outline) {
     faces.push_back({ccw ? std::array{c.p0, c.control, c.p2} : std::array{c.p0, c.p2, c.control}, true, i});
   }
   for (const auto& b : mesh.boundary_lines) {
-    if (!valid_index(b[0]) || !valid_index(b[1])) {
+    if (!valid(b[0]) || !valid(b[1])) {
       add_problem(check, "boundary line with an out-of-range vertex index");
-      return check;
+      return false;
     }
   }
+  return true;
+}
 
-  // Area identity.
+void check_area(const Mesh& mesh, const Outline& outline, MeshCheck& check, CheckScratch& scratch) {
   check.area_mesh = mesh_area(mesh);
   // Contours that meet other than at vertices need the sweep; otherwise the
   // exact per-contour method (closed-form conic areas) is used.
   bool crossing = false;
-  const double swept = swept_nonzero_area(quadratic_outline, crossing);
-  check.area_outline = crossing ? swept : nonzero_outline_area(quadratic_outline);
-  const Box control_box = quadratic_outline.control_box();
+  const double swept = swept_nonzero_area(outline, crossing, scratch);
+  check.area_outline = crossing ? swept : nonzero_outline_area(outline, scratch);
+  const Box control_box = outline.control_box();
   const Vec2 diagonal = control_box.empty() ? Vec2{} : control_box.max - control_box.min;
   const double floor = tolerance::kAreaIdentityFloorOfBox * dot(diagonal, diagonal);
   check.area_rel_error = std::fabs(check.area_mesh - check.area_outline) /
@@ -469,8 +451,9 @@ MeshCheck check_mesh_of(const Mesh& mesh, const Outline& quadratic_outline) {
                   check.area_outline, check.area_rel_error);
     add_problem(check, buf);
   }
+}
 
-  // Degenerate faces.
+void check_degenerate(const Mesh& mesh, const std::vector<Face>& faces, MeshCheck& check) {
   for (const Face& f : faces) {
     const int o = orient2d(mesh.points[f.v[0]], mesh.points[f.v[1]], mesh.points[f.v[2]]);
     if (o <= 0) {
@@ -479,9 +462,11 @@ MeshCheck check_mesh_of(const Mesh& mesh, const Outline& quadratic_outline) {
                              (o == 0 ? " has zero area" : " is clockwise"));
     }
   }
+}
 
-  // Watertightness: undirected edge multiset of all faces against the
-  // expected outline boundary.
+// Watertightness: the undirected edge multiset of all faces against the
+// expected outline boundary.
+void check_watertight(const Mesh& mesh, const std::vector<Face>& faces, MeshCheck& check) {
   struct EdgeUse {
     int faces = 0;
     int direction = 0;  // +1 per use low->high, -1 per use high->low
@@ -525,76 +510,61 @@ MeshCheck check_mesh_of(const Mesh& mesh, const Outline& quadratic_outline) {
       add_problem(check, why + ": " + edge_name(mesh, key.first, key.second));
     }
   }
+}
 
-  // Hull overlaps: each curved triangle against every other face.
-  std::vector<Box> boxes(faces.size());
-  std::vector<std::size_t> order(faces.size());
-  for (std::size_t i = 0; i < faces.size(); ++i) {
-    for (int k = 0; k < 3; ++k) boxes[i].add(mesh.points[faces[i].v[k]]);
-    order[i] = i;
+// Whether the interiors of two faces (triangles, counter-clockwise) meet:
+// neither has an edge line with the whole other face on its outer side.
+bool interiors_intersect(const Mesh& mesh, const Face& f, const Face& g) {
+  Vec2 p[3], q[3];
+  for (int k = 0; k < 3; ++k) {
+    p[k] = mesh.points[f.v[k]];
+    q[k] = mesh.points[g.v[k]];
   }
-  // The scans below run along the axis where the boxes overlap less: the one
-  // whose summed box extents are the smaller share of the mesh's extent (a
-  // comb's fan triangles span its width, its teeth not its height).
-  Box all;
-  double sum_x = 0.0, sum_y = 0.0;
-  for (const Box& b : boxes) {
-    all.add(b.min);
-    all.add(b.max);
-    sum_x += b.max.x - b.min.x;
-    sum_y += b.max.y - b.min.y;
-  }
-  const bool along_y = sum_y * (all.max.x - all.min.x) < sum_x * (all.max.y - all.min.y);
-  auto lo = [&](std::size_t k) { return along_y ? boxes[k].min.y : boxes[k].min.x; };
-  auto hi = [&](std::size_t k) { return along_y ? boxes[k].max.y : boxes[k].max.x; };
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return lo(a) < lo(b); });
-  std::vector<char> curve_overlaps(faces.size(), 0);
-  auto interiors_intersect = [&](const Face& f, const Face& g) {
-    Vec2 p[3], q[3];
+  auto separated = [](const Vec2* t, const Vec2* other) {
+    const int o = orient2d(t[0], t[1], t[2]);
+    if (o == 0) return true;
     for (int k = 0; k < 3; ++k) {
-      p[k] = mesh.points[f.v[k]];
-      q[k] = mesh.points[g.v[k]];
+      bool all_outside = true;
+      for (int m = 0; m < 3 && all_outside; ++m) all_outside = orient2d(t[k], t[(k + 1) % 3], other[m]) * o <= 0;
+      if (all_outside) return true;
     }
-    auto separated = [](const Vec2* t, const Vec2* other) {
-      const int o = orient2d(t[0], t[1], t[2]);
-      if (o == 0) return true;
-      for (int k = 0; k < 3; ++k) {
-        bool all_outside = true;
-        for (int m = 0; m < 3 && all_outside; ++m) all_outside = orient2d(t[k], t[(k + 1) % 3], other[m]) * o <= 0;
-        if (all_outside) return true;
-      }
-      return false;
-    };
-    return !separated(p, q) && !separated(q, p);
+    return false;
   };
-  auto test_pair = [&](std::size_t i, std::size_t j) {
-    if (!detail::boxes_overlap(boxes[i], boxes[j]) || !interiors_intersect(faces[i], faces[j])) return;
-    for (std::size_t k : {i, j}) {
-      if (faces[k].curved && !curve_overlaps[k]) {
-        curve_overlaps[k] = 1;
-        ++check.hull_overlaps;
-        add_problem(check, "curve " + std::to_string(faces[k].source) + " overlaps another face");
-      }
-    }
-  };
-  // Only pairs with a curved face are tested, so the scans start from curved
-  // faces: each one forward over all faces whose boxes start within its
-  // range, and each straight face over the curved faces whose boxes start
-  // within its own (a long straight face, such as a fan's, meets few curves;
-  // scanning all faces from it would make a comb's check quadratic).
-  std::vector<std::size_t> curved_order;
-  for (const std::size_t i : order)
-    if (faces[i].curved) curved_order.push_back(i);
-  for (std::size_t oi = 0; oi < order.size(); ++oi) {
-    const std::size_t i = order[oi];
-    if (faces[i].curved) {
-      for (std::size_t oj = oi + 1; oj < order.size() && lo(order[oj]) <= hi(i); ++oj) test_pair(i, order[oj]);
-      continue;
-    }
-    auto c = std::lower_bound(curved_order.begin(), curved_order.end(), lo(i),
-                              [&](std::size_t k, double v) { return lo(k) < v; });
-    for (; c != curved_order.end() && lo(*c) <= hi(i); ++c) test_pair(*c, i);
+  return !separated(p, q) && !separated(q, p);
+}
+
+// Hull overlaps: each curved triangle against every other face whose open
+// box meets its open box (interiors lie inside those; pairs of two straight
+// faces are not searched).
+void check_hull_overlaps(const Mesh& mesh, const std::vector<Face>& faces, MeshCheck& check, CheckScratch& scratch) {
+  std::vector<Box> boxes(faces.size());
+  for (std::size_t i = 0; i < faces.size(); ++i)
+    for (int k = 0; k < 3; ++k) boxes[i].add(mesh.points[faces[i].v[k]]);
+  std::vector<char> overlaps(faces.size(), 0);
+  scratch.pairs.run(
+      boxes, detail::BoxContact::Interiors, [&](std::size_t i) { return faces[i].curved; },
+      [&](std::size_t i, std::size_t j) {
+        if ((overlaps[i] || !faces[i].curved) && (overlaps[j] || !faces[j].curved)) return;
+        if (!interiors_intersect(mesh, faces[i], faces[j])) return;
+        for (const std::size_t k : {i, j})
+          if (faces[k].curved) overlaps[k] = 1;
+      });
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    if (!overlaps[i]) continue;
+    ++check.hull_overlaps;
+    add_problem(check, "curve " + std::to_string(faces[i].source) + " overlaps another face");
   }
+}
+
+MeshCheck check_mesh_of(const Mesh& mesh, const Outline& quadratic_outline) {
+  MeshCheck check;
+  CheckScratch scratch;
+  std::vector<Face> faces;
+  if (!collect_faces(mesh, check, faces)) return check;
+  check_area(mesh, quadratic_outline, check, scratch);
+  check_degenerate(mesh, faces, check);
+  check_watertight(mesh, faces, check);
+  check_hull_overlaps(mesh, faces, check, scratch);
   return check;
 }
 
