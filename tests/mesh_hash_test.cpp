@@ -22,6 +22,7 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <ostream>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -131,6 +132,8 @@ struct HashFont {
   std::uint32_t glyph_step;  // every glyph_step-th glyph id (1: all)
 };
 
+void PrintTo(const HashFont& font, std::ostream* os) { *os << font.name; }
+
 class MeshHashFonts : public ::testing::TestWithParam<HashFont> {};
 
 TEST_P(MeshHashFonts, EveryGlyphMeshIsTheStoredOne) {
@@ -207,6 +210,8 @@ struct HashTarget {
   int (*run)(const std::uint8_t*, std::size_t);
   std::vector<const char*> inputs;  // folders (their files) or files, under the source tree
 };
+
+void PrintTo(const HashTarget& target, std::ostream* os) { *os << target.name; }
 
 class MeshHashFuzzCorpus : public ::testing::TestWithParam<HashTarget> {};
 

@@ -1,4 +1,4 @@
-// Resolving crossing contours into non-crossing rings (DESIGN.md section 4:
+// Resolving crossing contours into non-crossing rings (docs/design.md section 4:
 // overlapping, self-intersecting and edge-sharing contours, nonzero rule).
 //
 // Strategy. Hull separation (separate_hulls) has already subdivided conics
@@ -34,24 +34,14 @@
 #include "curvetext/tolerances.hpp"
 #include "tessellate/columns.hpp"
 #include "tessellate/positions.hpp"
+#include "tessellate/resolve.hpp"
 #include "tessellate/rings.hpp"
 
 namespace curvetext::detail {
 namespace {
 
-// A piece of the arrangement: a line or a conic whose hull nothing enters.
-struct Edge {
-  Vec2 a, b;
-  Vec2 control;
-  double weight = 1.0;
-  bool conic = false;
-  int depth = 0;
-  int count = 1;  // net number of times the outline runs a -> b
-  Box box;
-  // New since the last conflict sweep (resolve_crossings): only pairs with a
-  // fresh edge can conflict in a way that sweep has not seen.
-  bool fresh = true;
-};
+using Edge = ArrangementEdge;
+using Cut = CutPoint;
 
 Box edge_box(const Edge& e) {
   Box box;
@@ -116,7 +106,7 @@ bool lines_conflict(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
 // them in a row. The pairs come in no particular order and either way round:
 // every caller's answer is independent of both.
 template <class F>
-bool for_each_close_pair(const std::vector<Edge>& edges, F&& f) {
+bool for_each_close_pair(const std::vector<Edge>& edges, ResolveScratch& scratch, F&& f) {
   const std::size_t n = edges.size();
   Box all;
   for (const Edge& e : edges) {
@@ -124,13 +114,9 @@ bool for_each_close_pair(const std::vector<Edge>& edges, F&& f) {
     all.add(e.box.max);
   }
   const bool along_y = all.max.y - all.min.y > all.max.x - all.min.x;
-  struct Key {
-    double low;
-    std::uint32_t edge;
-  };
-  // Scratch reused across calls (callers never nest this loop).
-  thread_local std::vector<Key> keys;
-  thread_local std::vector<double> sides;
+  using Key = ResolveScratch::CloseKey;
+  std::vector<Key>& keys = scratch.close_keys;  // (callers never nest this loop)
+  std::vector<double>& sides = scratch.close_sides;
   keys.resize(n);
   for (std::size_t k = 0; k < n; ++k)
     keys[k] = {along_y ? edges[k].box.min.y : edges[k].box.min.x, static_cast<std::uint32_t>(k)};
@@ -147,7 +133,7 @@ bool for_each_close_pair(const std::vector<Edge>& edges, F&& f) {
   // no pattern a predictor could learn; a branch per candidate cost more
   // than the pairs' tests for a glyph whose long stems overlap most edges
   // along a).
-  thread_local std::vector<std::uint32_t> candidates;
+  std::vector<std::uint32_t>& candidates = scratch.candidates;
   candidates.resize(n);
   std::uint32_t* const candidate = candidates.data();
   for (std::size_t i = 0; i < n; ++i) {
@@ -168,9 +154,9 @@ bool for_each_close_pair(const std::vector<Edge>& edges, F&& f) {
 // against every other (no sort): after a round of splits the fresh pieces are
 // few. Each pair once.
 template <class F>
-bool for_each_fresh_pair(const std::vector<Edge>& edges, F&& f) {
+bool for_each_fresh_pair(const std::vector<Edge>& edges, ResolveScratch& scratch, F&& f) {
   const std::size_t n = edges.size();
-  thread_local std::vector<std::uint32_t> candidates;
+  std::vector<std::uint32_t>& candidates = scratch.candidates;
   candidates.resize(n);
   std::uint32_t* const candidate = candidates.data();
   for (std::uint32_t i = 0; i < n; ++i) {
@@ -229,13 +215,8 @@ std::vector<Edge> edges_of(const std::vector<Ring>& rings) {
 // edge become that end point, and to each other the first of them (the merge
 // distance is 1e-12 of the outline's size or largest coordinate, far above the
 // rounding error of a crossing of lines that are not nearly parallel).
-struct Cut {
-  std::uint32_t edge;
-  Vec2 p;
-};
-
-void snap_cuts(const std::vector<Edge>& edges, std::vector<Cut>& cuts) {
-  thread_local std::vector<Vec2> vertices;
+void snap_cuts(const std::vector<Edge>& edges, std::vector<Cut>& cuts, ResolveScratch& scratch) {
+  std::vector<Vec2>& vertices = scratch.vertices;
   vertices.clear();
   Box all;
   for (const Edge& e : edges) {
@@ -249,11 +230,8 @@ void snap_cuts(const std::vector<Edge>& edges, std::vector<Cut>& cuts) {
       std::max({std::fabs(all.min.x), std::fabs(all.min.y), std::fabs(all.max.x), std::fabs(all.max.y)});
   const double eps = tolerance::kMergeDistanceRelative * std::max(extent, largest);
   auto by_x = [](Vec2 a, Vec2 b) { return a.x != b.x ? a.x < b.x : a.y < b.y; };
-  struct Loose {
-    Vec2 p;
-    std::size_t cut;
-  };
-  thread_local std::vector<Loose> loose;
+  using Loose = ResolveScratch::LooseCut;
+  std::vector<Loose>& loose = scratch.loose;
   loose.clear();
   // The loose cut points (near no vertex) onto each other, in (x, y) order:
   // each becomes the nearest earlier representative within eps (the last in
@@ -261,7 +239,7 @@ void snap_cuts(const std::vector<Edge>& edges, std::vector<Cut>& cuts) {
   // equal points compare equal here, and they snap alike: the result does
   // not depend on the order of the cuts.) The representatives come in x
   // order because the loose points do.
-  thread_local std::vector<Vec2> reps;
+  std::vector<Vec2>& reps = scratch.representatives;
   auto snap_loose = [&](auto&& nearest_rep) {
     std::sort(loose.begin(), loose.end(), [&](const Loose& a, const Loose& b) { return by_x(a.p, b.p); });
     reps.clear();
@@ -281,7 +259,7 @@ void snap_cuts(const std::vector<Edge>& edges, std::vector<Cut>& cuts) {
   // branch-free count of the vertices within eps finds those first. The
   // loose ones then meet each other in a scan too.
   if (cuts.size() <= 16) {
-    thread_local std::vector<double> coordinates;
+    std::vector<double>& coordinates = scratch.coordinates;
     const auto [xs, ys] = columns<2>(coordinates, vertices.size());
     for (std::size_t k = 0; k < vertices.size(); ++k) {
       xs[k] = vertices[k].x;
@@ -397,11 +375,11 @@ void line_pair_cuts(const std::vector<Edge>& edges, std::uint32_t i, std::uint32
 // Splits line edges at the cut points found on them (line_pair_cuts), after
 // snapping the points together (snap_cuts). The pieces of a split edge are
 // fresh; other edges keep their flag. Returns true when some edge was split.
-bool split_at_cuts(std::vector<Edge>& edges, std::vector<Cut>& cuts) {
+bool split_at_cuts(std::vector<Edge>& edges, std::vector<Cut>& cuts, ResolveScratch& scratch) {
   if (cuts.empty()) return false;
-  thread_local std::vector<Vec2> along;  // scratch
-  thread_local std::vector<Edge> next;
-  snap_cuts(edges, cuts);
+  std::vector<Vec2>& along = scratch.along;
+  std::vector<Edge>& next = scratch.split_edges;
+  snap_cuts(edges, cuts, scratch);
   // Each edge's cuts together, in the order found.
   std::stable_sort(cuts.begin(), cuts.end(), [](const Cut& a, const Cut& b) { return a.edge < b.edge; });
   next.clear();
@@ -440,7 +418,7 @@ bool split_at_cuts(std::vector<Edge>& edges, std::vector<Cut>& cuts) {
 // edge is directed from its smaller end and looked up in a hash table of the
 // edges kept so far: the merged edges come in the order of their first
 // occurrence.
-void merge_coincident(const std::vector<Edge>& edges, std::vector<Edge>& merged) {
+void merge_coincident(const std::vector<Edge>& edges, std::vector<Edge>& merged, std::vector<std::int32_t>& slots) {
   auto same_key = [](const Edge& e, const Edge& f) {
     return e.a == f.a && e.b == f.b && e.conic == f.conic &&
            (!e.conic || (e.control == f.control && e.weight == f.weight));
@@ -448,7 +426,6 @@ void merge_coincident(const std::vector<Edge>& edges, std::vector<Edge>& merged)
   merged.clear();
   merged.reserve(edges.size());
   const int bits = position_table_bits(edges.size());
-  thread_local std::vector<std::int32_t> slots;  // index into merged, or -1
   slots.assign(std::size_t{1} << bits, -1);
   const std::size_t mask = (std::size_t{1} << bits) - 1;
   for (const Edge& e0 : edges) {
@@ -500,7 +477,8 @@ bool angle_less(Vec2 v, Vec2 p, Vec2 q) {
 // Most vertices are such joints; only crossings and touches end a chain, and
 // there the windings pass from chain to chain too (below), so one ray is cast
 // per connected part of the arrangement instead of one per edge.
-void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::vector<int>& right) {
+void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::vector<int>& right,
+                   ResolveScratch& scratch) {
   const std::size_t n = edges.size();
   left.assign(n, 0);
   right.assign(n, 0);
@@ -512,20 +490,17 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
   // it has and its second.
   // Up to two joins per edge (at a and at b): the other edge, and whether its
   // sides are swapped.
-  struct Join {
-    std::uint32_t other = UINT32_MAX;
-    bool swapped = false;
-  };
-  thread_local std::vector<Join> joins;
+  using Join = ResolveScratch::Join;
+  std::vector<Join>& joins = scratch.joins;
   joins.assign(2 * n, Join{});
   auto end_point = [&](std::size_t k) { return (k & 1) != 0 ? edges[k / 2].b : edges[k / 2].a; };
   // Each end's position's first end; per first end, how many ends are there.
-  thread_local std::vector<std::uint32_t> first_of, ends_at;
+  std::vector<std::uint32_t>& first_of = scratch.first_of;
+  std::vector<std::uint32_t>& ends_at = scratch.ends_at;
   first_of.resize(2 * n);
   {
-    thread_local std::vector<std::int32_t> slots;        // scratch
-    thread_local std::vector<std::uint32_t> second_end;  // per first end
-    FirstAtPosition ends(slots, 2 * n, end_point);
+    std::vector<std::uint32_t>& second_end = scratch.second_end;  // per first end
+    FirstAtPosition ends(scratch.slots, 2 * n, end_point);
     ends_at.assign(2 * n, 0);
     second_end.resize(2 * n);
     for (std::uint32_t k = 0; k < 2 * n; ++k) {
@@ -596,7 +571,7 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
   std::size_t rays = 0;
   // The ends' heights in either frame, one array each: y, and for rotated
   // rays -x (the rotated frame's y, exact).
-  thread_local std::vector<double> heights;
+  std::vector<double>& heights = scratch.heights;
   // Named pointers, not a structured binding: the lambda below captures
   // them, which clang before 16 does not allow for bindings.
   const auto height_columns = columns<4>(heights, n);
@@ -608,7 +583,7 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
     a_rotated[j] = -edges[j].a.x;
     b_rotated[j] = -edges[j].b.x;
   }
-  thread_local std::vector<std::uint32_t> straddling;
+  std::vector<std::uint32_t>& straddling = scratch.straddling;
   straddling.resize(n);
   // Left and right winding of edge i by its own ray.
   auto cast = [&](std::size_t i) {
@@ -667,7 +642,9 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
   // cast only for a chain none of that reaches (one per connected part of
   // the arrangement). Node m's ends are node_ends[node_start[m] ..
   // node_start[m + 1]), sorted by angle when the node is first used.
-  thread_local std::vector<std::uint32_t> node_of, node_start, node_ends;
+  std::vector<std::uint32_t>& node_of = scratch.node_of;
+  std::vector<std::uint32_t>& node_start = scratch.node_start;
+  std::vector<std::uint32_t>& node_ends = scratch.node_ends;
   node_of.assign(2 * n, UINT32_MAX);  // per first end: its node
   node_start.assign(1, 0);
   for (std::size_t k = 0; k < 2 * n; ++k) {
@@ -677,16 +654,17 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
   }
   const std::size_t nodes = node_start.size() - 1;
   node_ends.resize(node_start.back());
-  thread_local std::vector<std::uint32_t> fill;
+  std::vector<std::uint32_t>& fill = scratch.fill;
   fill.assign(node_start.begin(), node_start.end() - 1);
   for (std::size_t k = 0; k < 2 * n; ++k) {
     const std::uint32_t m = node_of[first_of[k]];
     if (m != UINT32_MAX) node_ends[fill[m]++] = static_cast<std::uint32_t>(k);
   }
-  thread_local std::vector<char> done, node_done;
+  std::vector<char>& done = scratch.done;
+  std::vector<char>& node_done = scratch.node_done;
   done.assign(n, 0);
   node_done.assign(nodes, 0);
-  thread_local std::vector<std::uint32_t> pending;  // edges whose windings are set, ends not yet looked at
+  std::vector<std::uint32_t>& pending = scratch.pending;  // edges whose windings are set, ends not yet looked at
   pending.clear();
   // Along the chain of `first` (windings set) both ways.
   auto walk_chain = [&](std::size_t first) {
@@ -766,9 +744,10 @@ void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::
 
 }  // namespace
 
-bool rings_cross(const std::vector<Ring>& rings, bool hulls_separated) {
+bool rings_cross(const std::vector<Ring>& rings, HullState hulls, ResolveScratch& scratch) {
+  const bool hulls_separated = hulls == HullState::Separated;
   const std::vector<Edge> edges = edges_of(rings);
-  return for_each_close_pair(edges, [&](std::uint32_t i, std::uint32_t j) {
+  return for_each_close_pair(edges, scratch, [&](std::uint32_t i, std::uint32_t j) {
     const Edge& e = edges[i];
     const Edge& f = edges[j];
     if (e.conic || f.conic) {
@@ -789,13 +768,14 @@ bool lines_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   return orient2d(shared, p, q) == 0 && dot(p - shared, q - shared) > 0.0;
 }
 
-std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, bool hulls_separated, bool* settled,
-                                    std::size_t max_pieces) {
+std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, HullState hulls, std::size_t max_pieces,
+                                    RingPool& pool, ResolveScratch& scratch, bool* settled) {
+  const bool hulls_separated = hulls == HullState::Separated;
   // Coincident edges (a path that retraces itself, contours sharing edges)
   // are merged first: n runs over one edge are one edge with a count, not
   // n^2 / 2 pairs to cut.
   std::vector<Edge> edges;
-  merge_coincident(edges_of(rings), edges);
+  merge_coincident(edges_of(rings), edges, scratch.slots);
   // Rounded crossing points can make new crossings round after round; the
   // budget stops an arrangement that keeps growing.
   auto within_budget = [&](const char* what, std::size_t used) {
@@ -818,7 +798,7 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, bool hulls_s
   // cut points. Pairs of edges that are both unchanged since the last sweep
   // are skipped: it found them apart, or one of them would have been split
   // and so be new.
-  thread_local std::vector<Cut> cuts;
+  std::vector<Cut>& cuts = scratch.cuts;
   // Up to this many box tests (fresh edges times all), testing the fresh
   // edges against all costs less than the sweep's sort.
   constexpr std::size_t kFreshPairsDirect = 4096;
@@ -853,14 +833,14 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, bool hulls_s
     std::size_t fresh = 0;
     for (const Edge& e : edges) fresh += static_cast<std::size_t>(e.fresh);
     if (round > 0 && fresh * edges.size() <= kFreshPairsDirect) {
-      for_each_fresh_pair(edges, test_pair);
+      for_each_fresh_pair(edges, scratch, test_pair);
     } else {
-      for_each_close_pair(edges, test_pair);
+      for_each_close_pair(edges, scratch, test_pair);
     }
     for (Edge& e : edges) e.fresh = false;
     if (!any) {
       // (The last round's cuts are still made, not looked at again.)
-      if (!split_at_cuts(edges, cuts)) {
+      if (!split_at_cuts(edges, cuts, scratch)) {
         conflicts_left = false;
         break;
       }
@@ -868,7 +848,7 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, bool hulls_s
       continue;
     }
     if (conic_rounds++ == kMaxConicRounds) {
-      split_at_cuts(edges, cuts);
+      split_at_cuts(edges, cuts, scratch);
       within_budget("crossing resolution (edges)", edges.size());
       break;
     }
@@ -906,11 +886,12 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, bool hulls_s
     edges.swap(next);
     within_budget("crossing resolution (edges)", edges.size());
   }
-  // (Scratch reused across calls from here on: no allocation once warm.)
-  thread_local std::vector<Edge> merged, kept;
-  thread_local std::vector<int> left, right;
-  merge_coincident(edges, merged);
-  side_windings(merged, left, right);
+  std::vector<Edge>& merged = scratch.merged;
+  std::vector<Edge>& kept = scratch.kept;
+  std::vector<int>& left = scratch.left;
+  std::vector<int>& right = scratch.right;
+  merge_coincident(edges, merged, scratch.slots);
+  side_windings(merged, left, right, scratch);
 
   // Kept edges, directed with the fill on the left.
   kept.clear();
@@ -930,10 +911,12 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, bool hulls_s
   // (counted, then filled in edge order).
   const std::size_t kept_count = kept.size();
   constexpr std::uint32_t kNoVertex = UINT32_MAX;
-  thread_local std::vector<std::int32_t> slots;  // scratch
-  thread_local std::vector<std::uint32_t> start_vertex, end_vertex, out_first, out_edges;
+  std::vector<std::uint32_t>& start_vertex = scratch.start_vertex;
+  std::vector<std::uint32_t>& end_vertex = scratch.end_vertex;
+  std::vector<std::uint32_t>& out_first = scratch.out_first;
+  std::vector<std::uint32_t>& out_edges = scratch.out_edges;
   {
-    FirstAtPosition starts(slots, kept_count, [&](std::uint32_t i) { return kept[i].a; });
+    FirstAtPosition starts(scratch.slots, kept_count, [&](std::uint32_t i) { return kept[i].a; });
     std::uint32_t vertices = 0;
     start_vertex.resize(kept_count);
     for (std::uint32_t i = 0; i < kept_count; ++i) {
@@ -977,21 +960,21 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, bool hulls_s
     return best_before != UINT32_MAX ? best_before : best_any;
   };
 
-  thread_local std::vector<Vec2> controls;  // of the kept conics
+  std::vector<Vec2>& controls = scratch.controls;  // of the kept conics
   controls.clear();
   for (const Edge& e : kept)
     if (e.conic) controls.push_back(e.control);
   auto is_control_point = [&](Vec2 p) { return std::find(controls.begin(), controls.end(), p) != controls.end(); };
-  thread_local std::vector<char> used;
+  std::vector<char>& used = scratch.used;
   used.assign(kept_count, 0);
-  thread_local Ring traced;                            // scratch: one loop as traced
-  thread_local std::vector<std::uint32_t> ring_edges;  // the kept edge of each piece
+  Ring& traced = scratch.traced;                                // one loop as traced
+  std::vector<std::uint32_t>& ring_edges = scratch.ring_edges;  // the kept edge of each piece
   std::vector<Ring> out;
   // A loop passes through a vertex twice only where two kept edges leave it.
   auto keep = [&](Ring&& loop) {
     const bool has_conic = std::any_of(loop.begin(), loop.end(), [](const Piece& p) { return p.conic; });
     if (loop.size() < 2 || (loop.size() == 2 && !has_conic) || ring_area(loop) == 0.0) {
-      recycle_ring(std::move(loop));
+      pool.recycle(std::move(loop));
       return;
     }
     out.push_back(std::move(loop));
@@ -1022,7 +1005,7 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, bool hulls_s
     // other edges turned out interior. A vertex at a conic's control point is
     // kept: there a conic's leg runs exactly along the line (as hull
     // separation aligned it), and the longer line would overlap the leg.
-    Ring simple = take_ring();
+    Ring simple = pool.take();
     for (std::size_t i = 0; i < traced.size(); ++i) {
       const std::size_t prev = (i + traced.size() - 1) % traced.size();
       if (traced.size() > 3 && !traced[i].conic && !traced[prev].conic &&
@@ -1039,8 +1022,8 @@ std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, bool hulls_s
       keep(std::move(simple));
       continue;
     }
-    for (Ring& sub : split_at_repeated_vertices(simple)) keep(std::move(sub));
-    recycle_ring(std::move(simple));
+    for (Ring& sub : split_at_repeated_vertices(simple, scratch.slots)) keep(std::move(sub));
+    pool.recycle(std::move(simple));
   }
   if (settled != nullptr) *settled = !conflicts_left;
   return out;

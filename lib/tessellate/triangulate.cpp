@@ -117,12 +117,13 @@ bool hole_inside(const std::vector<Vec2>& hole, const std::vector<Vec2>& outer) 
 
 }  // namespace
 
-std::vector<PolygonLoops> relink_touching_loops(std::vector<Vec2> outer, std::vector<std::vector<Vec2>> holes) {
+std::vector<PolygonLoops> relink_touching_loops(std::vector<Vec2> outer, std::vector<std::vector<Vec2>> holes,
+                                                TriangulateScratch& scratch) {
   // Quick exit for the usual case: no position occurs twice among all loop
   // vertices (then none does among the nodes below, a subset), checked on a
   // sorted copy, without building the node lists.
   {
-    thread_local std::vector<std::pair<double, double>> sorted;
+    std::vector<std::pair<double, double>>& sorted = scratch.relink_sorted;
     sorted.clear();
     for (const Vec2 p : outer) sorted.emplace_back(p.x, p.y);
     for (const auto& hole : holes) {
@@ -339,54 +340,8 @@ std::vector<Vec2> bridge_holes(std::vector<Vec2> outer, std::vector<std::vector<
   return outer;
 }
 
-namespace {
-
-// The live vertices of the loop being clipped, each with the box of its
-// outgoing edge, in a compact array (removal swaps with the last entry). An
-// ear test must look at every vertex p whose edge p -> next(p) has a box
-// overlapping the candidate triangle's box (that includes every vertex inside
-// the box); the test's answer does not depend on the order the vertices are
-// looked at, so scanning this array, where the box test is a few loads and
-// compares per vertex, replaces the walk along the linked loop.
-class LiveEdges {
- public:
-  struct Entry {
-    double x0, x1, y0, y1;  // box of the edge p -> next[p]
-    std::uint32_t p;
-  };
-
-  void reset(std::size_t n) {
-    entries_.clear();
-    slot_.assign(n, kNone);
-  }
-  void set(std::uint32_t p, Vec2 a, Vec2 b) {
-    Entry e{std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y), p};
-    if (slot_[p] == kNone) {
-      slot_[p] = static_cast<std::uint32_t>(entries_.size());
-      entries_.push_back(e);
-    } else {
-      entries_[slot_[p]] = e;
-    }
-  }
-  void erase(std::uint32_t p) {
-    const std::uint32_t k = slot_[p];
-    if (k == kNone) return;
-    entries_[k] = entries_.back();
-    slot_[entries_[k].p] = k;
-    entries_.pop_back();
-    slot_[p] = kNone;
-  }
-  const std::vector<Entry>& entries() const { return entries_; }
-
- private:
-  static constexpr std::uint32_t kNone = 0xffffffffu;
-  std::vector<Entry> entries_;
-  std::vector<std::uint32_t> slot_;
-};
-
-}  // namespace
-
-bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& triangles, std::size_t max_visits) {
+bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& triangles, TriangulateScratch& scratch,
+              std::size_t max_visits) {
   std::size_t n = loop.size();
   std::size_t visits = 0;
   auto spend = [&](std::size_t work) {
@@ -395,9 +350,9 @@ bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& t
   };
   if (n < 3) return n == 0;
   if (n >= 0xffffffffu) return false;  // indices are 32-bit
-  // Scratch reused across calls (no allocation per glyph once warm).
-  thread_local std::vector<std::uint32_t> prev, next;
-  thread_local LiveEdges live;
+  std::vector<std::uint32_t>& prev = scratch.ear_prev;
+  std::vector<std::uint32_t>& next = scratch.ear_next;
+  LiveEdges& live = scratch.live;
   prev.resize(n);
   next.resize(n);
   live.reset(n);
@@ -544,85 +499,10 @@ bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& t
   return clean;
 }
 
-namespace {
-
-// Edge (min index, max index) -> the triangles on its two sides, in an
-// open-addressing table (no per-edge allocation). A flipped-away edge keeps
-// its slot with count 0, which reads as "no such edge".
-class EdgeTable {
- public:
-  struct Faces {
-    std::uint64_t key = kEmpty;
-    std::uint32_t face[2] = {0, 0};
-    int count = 0;
-    bool fixed = false;  // a constrained (outline) edge: never flipped
-  };
-
-  // Empties the table for about `expected` edges, keeping its memory.
-  void reset(std::size_t expected) {
-    std::size_t capacity = 16;
-    while (capacity < 2 * expected + 16) capacity *= 2;
-    slots_.assign(capacity, Faces{});
-    used_ = 0;
-  }
-
-  static std::uint64_t pack(EdgeKey k) { return (std::uint64_t{k.first} << 32) | k.second; }
-
-  Faces& at(EdgeKey k) {
-    const std::uint64_t key = pack(k);
-    if (2 * (used_ + 1) > slots_.size()) grow();
-    std::size_t slot = hash(key) & (slots_.size() - 1);
-    while (slots_[slot].key != kEmpty && slots_[slot].key != key) slot = (slot + 1) & (slots_.size() - 1);
-    if (slots_[slot].key == kEmpty) {
-      slots_[slot].key = key;
-      ++used_;
-    }
-    return slots_[slot];
-  }
-
-  // The live entry of edge k (count > 0), or null.
-  Faces* find(EdgeKey k) {
-    const std::uint64_t key = pack(k);
-    std::size_t slot = hash(key) & (slots_.size() - 1);
-    while (slots_[slot].key != kEmpty) {
-      if (slots_[slot].key == key) return slots_[slot].count > 0 ? &slots_[slot] : nullptr;
-      slot = (slot + 1) & (slots_.size() - 1);
-    }
-    return nullptr;
-  }
-
- private:
-  static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
-  std::vector<Faces> slots_;
-  std::size_t used_ = 0;
-
-  static std::size_t hash(std::uint64_t key) {
-    // One multiply, then the high half folded down so that both vertex
-    // indices reach the low bits the table masks with (lookups only: the
-    // table's order never decides anything).
-    const std::uint64_t h = key * 0x9e3779b97f4a7c15ull;
-    return static_cast<std::size_t>(h ^ (h >> 32));
-  }
-
-  void grow() {
-    std::vector<Faces> old(slots_.size() * 2, Faces{});
-    old.swap(slots_);
-    for (const Faces& f : old) {
-      if (f.key == kEmpty) continue;
-      std::size_t slot = hash(f.key) & (slots_.size() - 1);
-      while (slots_[slot].key != kEmpty) slot = (slot + 1) & (slots_.size() - 1);
-      slots_[slot] = f;
-    }
-  }
-};
-
-}  // namespace
-
 void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std::uint32_t, 3>>& triangles,
-                    const std::vector<EdgeKey>& constrained) {
-  // Scratch reused across calls (no allocation per glyph once warm).
-  thread_local EdgeTable edges;
-  thread_local std::vector<EdgeKey> stack;
+                    const std::vector<EdgeKey>& constrained, TriangulateScratch& scratch) {
+  EdgeTable& edges = scratch.edges;
+  std::vector<EdgeKey>& stack = scratch.flip_stack;
   edges.reset(3 * triangles.size());
   stack.clear();
   stack.reserve(3 * triangles.size());
@@ -641,7 +521,7 @@ void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std:
   // are the only ones a flip could create: fixed edges never flip, so the
   // others are never removed and re-created. Kept apart (sorted, usually
   // empty) so that a new edge is looked up there instead of in all of them.
-  thread_local std::vector<EdgeKey> missing;
+  std::vector<EdgeKey>& missing = scratch.missing;
   missing.clear();
   for (const EdgeKey& key : constrained) {
     if (EdgeTable::Faces* e = edges.find(key)) {
@@ -719,14 +599,15 @@ void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std:
 // 16-bit entries (128 KiB at most); larger ones hash.
 constexpr std::size_t kDirectVertices = 256;
 
-void delaunay_flips_manifold(const std::vector<Vec2>& points, std::vector<std::array<std::uint32_t, 3>>& triangles) {
+void delaunay_flips_manifold(const std::vector<Vec2>& points, std::vector<std::array<std::uint32_t, 3>>& triangles,
+                             TriangulateScratch& scratch) {
   // Half-edge h = 4 t + k (k < 3: a shift and a mask instead of a division)
   // runs from triangles[t][k] to triangles[t][k + 1]; twin[h] is the
   // half-edge running back on the other triangle, or -1.
   const std::size_t m = triangles.size();
   if (m < 2) return;
   static constexpr std::uint32_t kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};
-  thread_local std::vector<std::int32_t> twin;
+  std::vector<std::int32_t>& twin = scratch.twin;
   twin.assign(4 * m, -1);
   // twin[h] for h = a -> b is the half-edge b -> a, found by a table lookup
   // without branches (whether an edge has a twin, inner or boundary, comes in
@@ -738,7 +619,7 @@ void delaunay_flips_manifold(const std::vector<Vec2>& points, std::vector<std::a
     // Entry a * n + b holds h + 1 for h = a -> b, 0 for none. Every entry
     // written is reset before returning, so the table is all zero between
     // calls and is never cleared as a whole.
-    thread_local std::vector<std::uint16_t> direct;
+    std::vector<std::uint16_t>& direct = scratch.direct;
     if (direct.size() < n * n) direct.assign(n * n, 0);
     for (std::uint32_t t = 0; t < m; ++t)
       for (std::uint32_t k = 0; k < 3; ++k)
@@ -751,9 +632,9 @@ void delaunay_flips_manifold(const std::vector<Vec2>& points, std::vector<std::a
   } else {
     // Open addressing on the directed pair, at most a quarter full, so that a
     // probe rarely goes past its first slot.
-    constexpr std::uint64_t kEmptyKey = ~std::uint64_t{0};  // all bits set: filled by memset
-    thread_local std::vector<std::uint64_t> keys;           // a << 32 | b, or kEmptyKey
-    thread_local std::vector<std::int32_t> half_edges;      // the half-edge of each key
+    constexpr std::uint64_t kEmptyKey = ~std::uint64_t{0};            // all bits set: filled by memset
+    std::vector<std::uint64_t>& keys = scratch.twin_keys;             // a << 32 | b, or kEmptyKey
+    std::vector<std::int32_t>& half_edges = scratch.twin_half_edges;  // the half-edge of each key
     int bits = 4;
     while ((std::size_t{1} << bits) < 12 * m) ++bits;
     const std::size_t mask = (std::size_t{1} << bits) - 1;
@@ -785,7 +666,7 @@ void delaunay_flips_manifold(const std::vector<Vec2>& points, std::vector<std::a
       }
     }
   }
-  thread_local std::vector<std::uint32_t> stack;
+  std::vector<std::uint32_t>& stack = scratch.manifold_stack;
   // Every inner edge once (from its first side), written without a branch.
   stack.resize(4 * m);
   std::size_t inner = 0;
