@@ -477,271 +477,303 @@ bool angle_less(Vec2 v, Vec2 p, Vec2 q) {
 // Most vertices are such joints; only crossings and touches end a chain, and
 // there the windings pass from chain to chain too (below), so one ray is cast
 // per connected part of the arrangement instead of one per edge.
-void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::vector<int>& right,
-                   ResolveScratch& scratch) {
-  const std::size_t n = edges.size();
-  left.assign(n, 0);
-  right.assign(n, 0);
-  if (n == 0) return;
-
-  // The chains: a position held by exactly two ends of two different edges
-  // joins them. End k is edge k / 2's start (k even) or end (k odd); a hash
-  // table of positions holds each position's first end, with how many ends
-  // it has and its second.
-  // Up to two joins per edge (at a and at b): the other edge, and whether its
-  // sides are swapped.
-  using Join = ResolveScratch::Join;
-  std::vector<Join>& joins = scratch.joins;
-  joins.assign(2 * n, Join{});
-  auto end_point = [&](std::size_t k) { return (k & 1) != 0 ? edges[k / 2].b : edges[k / 2].a; };
-  // Each end's position's first end; per first end, how many ends are there.
-  std::vector<std::uint32_t>& first_of = scratch.first_of;
-  std::vector<std::uint32_t>& ends_at = scratch.ends_at;
-  first_of.resize(2 * n);
-  {
-    std::vector<std::uint32_t>& second_end = scratch.second_end;  // per first end
-    FirstAtPosition ends(scratch.slots, 2 * n, end_point);
-    ends_at.assign(2 * n, 0);
-    second_end.resize(2 * n);
-    for (std::uint32_t k = 0; k < 2 * n; ++k) {
-      const std::uint32_t first = ends.add(k);
-      first_of[k] = first;
-      if (++ends_at[first] == 2) second_end[first] = k;
-    }
-    for (std::size_t k = 0; k < 2 * n; ++k) {
-      if (ends_at[k] != 2) continue;
-      const std::size_t u = k, v = second_end[k];
-      const std::uint32_t eu = static_cast<std::uint32_t>(u / 2), ev = static_cast<std::uint32_t>(v / 2);
-      if (eu == ev) continue;
-      const bool u_at_b = (u & 1) != 0, v_at_b = (v & 1) != 0;
-      const bool swapped = u_at_b == v_at_b;
-      joins[u] = {ev, swapped};
-      joins[v] = {eu, swapped};
-    }
+// The bins of side_windings's rays: only edges whose span in the ray's
+// perpendicular coordinate contains the midpoint's can be crossed: the rays
+// test every edge when they are few, and otherwise look at one bin of edges
+// (of y for horizontal rays, of x for vertical ones, by their closed spans;
+// about n / 2 bins, one array each, counted then filled).
+struct Bins {
+  double lo = 0.0, scale = 0.0;
+  std::size_t count = 1;
+  std::vector<std::uint32_t> start;  // bin k's edges: members[start[k] .. start[k + 1])
+  std::vector<std::uint32_t> members;
+  std::size_t bin(double v) const {
+    const double k = (v - lo) * scale;
+    if (!(k > 0.0)) return 0;
+    return std::min(count - 1, static_cast<std::size_t>(k));
   }
+};
 
-  // Only edges whose span in the ray's perpendicular coordinate contains the
-  // midpoint's can be crossed: the rays test every edge when they are few,
-  // and otherwise look at one bin of edges (of y for horizontal rays, of x
-  // for vertical ones, by their closed spans; about n / 2 bins, one array
-  // each, counted then filled).
-  struct Bins {
-    double lo = 0.0, scale = 0.0;
-    std::size_t count = 1;
-    std::vector<std::uint32_t> start;  // bin k's edges: members[start[k] .. start[k + 1])
-    std::vector<std::uint32_t> members;
-    std::size_t bin(double v) const {
-      const double k = (v - lo) * scale;
-      if (!(k > 0.0)) return 0;
-      return std::min(count - 1, static_cast<std::size_t>(k));
-    }
-  };
-  Box all;
-  for (const Edge& e : edges) {
-    all.add(e.a);
-    all.add(e.b);
-  }
-  const std::size_t count = std::clamp<std::size_t>(n / 2, 1, 4096);
-  auto make_bins = [&](bool use_x) {
-    Bins b;
-    b.count = count;
-    b.lo = use_x ? all.min.x : all.min.y;
-    const double hi = use_x ? all.max.x : all.max.y;
-    b.scale = hi > b.lo ? static_cast<double>(count) / (hi - b.lo) : 0.0;
-    auto span = [&](std::uint32_t j) {
-      const double v0 = use_x ? std::min(edges[j].a.x, edges[j].b.x) : std::min(edges[j].a.y, edges[j].b.y);
-      const double v1 = use_x ? std::max(edges[j].a.x, edges[j].b.x) : std::max(edges[j].a.y, edges[j].b.y);
-      return std::pair{b.bin(v0), b.bin(v1)};
-    };
-    b.start.assign(count + 1, 0);
-    for (std::uint32_t j = 0; j < n; ++j) {
-      const auto [first, last] = span(j);
-      for (std::size_t k = first; k <= last; ++k) ++b.start[k + 1];
-    }
-    for (std::size_t k = 0; k < count; ++k) b.start[k + 1] += b.start[k];
-    b.members.resize(b.start[count]);
-    std::vector<std::uint32_t> fill(b.start.begin(), b.start.end() - 1);
-    for (std::uint32_t j = 0; j < n; ++j) {
-      const auto [first, last] = span(j);
-      for (std::size_t k = first; k <= last; ++k) b.members[fill[k]++] = j;
-    }
-    return b;
-  };
-  std::optional<Bins> by_y, by_x;
-  std::size_t rays = 0;
+class SideWindings {
+ public:
+  SideWindings(const std::vector<Edge>& edges, std::vector<int>& left, std::vector<int>& right, ResolveScratch& scratch)
+      : edges_(edges), left_(left), right_(right), s_(scratch), n_(edges.size()) {}
+
+  void run();
+
+ private:
+  // End k is edge k / 2's start (k even) or end (k odd).
+  Vec2 end_point(std::size_t k) const { return (k & 1) != 0 ? edges_[k / 2].b : edges_[k / 2].a; }
+  void find_joins();
+  void fill_heights();
+  Bins make_bins(bool use_x) const;
+  void cast(std::size_t i);
+  void find_nodes();
+  void walk_chain(std::size_t first);
+  void spread_at(std::uint32_t m);
+
+  const std::vector<Edge>& edges_;
+  std::vector<int>& left_;
+  std::vector<int>& right_;
+  ResolveScratch& s_;
+  const std::size_t n_;
+  Box all_;
+  std::size_t bin_count_ = 1;
+  std::optional<Bins> by_y_, by_x_;
+  std::size_t rays_ = 0;
   // The ends' heights in either frame, one array each: y, and for rotated
   // rays -x (the rotated frame's y, exact).
-  std::vector<double>& heights = scratch.heights;
-  // Named pointers, not a structured binding: the lambda below captures
-  // them, which clang before 16 does not allow for bindings.
-  const auto height_columns = columns<4>(heights, n);
-  double *const a_y = height_columns[0], *const b_y = height_columns[1], *const a_rotated = height_columns[2],
-                *const b_rotated = height_columns[3];
-  for (std::size_t j = 0; j < n; ++j) {
-    a_y[j] = edges[j].a.y;
-    b_y[j] = edges[j].b.y;
-    a_rotated[j] = -edges[j].a.x;
-    b_rotated[j] = -edges[j].b.x;
-  }
-  std::vector<std::uint32_t>& straddling = scratch.straddling;
-  straddling.resize(n);
-  // Left and right winding of edge i by its own ray.
-  auto cast = [&](std::size_t i) {
-    const Edge& e = edges[i];
-    const bool rotate = std::fabs(e.b.x - e.a.x) > std::fabs(e.b.y - e.a.y);
-    auto tf = [rotate](Vec2 p) { return rotate ? Vec2{p.y, -p.x} : p; };
-    const Vec2 mid = (e.a + e.b) * 0.5;
-    const Vec2 m = tf(mid);
-    int w = 0;
-    // Only an edge whose span straddles the ray's line can be crossed: those
-    // are gathered first, without a branch per edge (most do not straddle,
-    // in no order a predictor could learn).
-    const double* const a_height = rotate ? a_rotated : a_y;
-    const double* const b_height = rotate ? b_rotated : b_y;
-    std::size_t found = 0;
-    auto gather = [&](std::uint32_t j) {
-      straddling[found] = j;
-      found += static_cast<std::size_t>(((a_height[j] <= m.y) != (b_height[j] <= m.y)) & (j != i));
-    };
-    auto test = [&](std::uint32_t j) {
-      const Edge& f = edges[j];
-      const Vec2 a = tf(f.a), b = tf(f.b);
-      // For an edge sharing an end point with e, every point of e's open
-      // interior is on the side of f's line where e's other end is; asking
-      // that end instead of the rounded midpoint is exact even for a tiny e.
-      Vec2 probe = m;
-      if (f.a == e.a || f.b == e.a) probe = tf(e.b);
-      if (f.a == e.b || f.b == e.b) probe = tf(e.a);
-      if (a.y <= m.y) {
-        if (b.y > m.y && orient2d(a, b, probe) > 0) w += f.count;
-      } else if (b.y <= m.y && orient2d(a, b, probe) < 0) {
-        w -= f.count;
-      }
-    };
-    // The first 16 rays (or all of them, for fewer than 64 edges) test every
-    // edge, about what making the bins costs; later ones use the bins.
-    if (++rays <= 16 || n < 64) {
-      for (std::uint32_t j = 0; j < n; ++j) gather(j);
-    } else {
-      std::optional<Bins>& slot = rotate ? by_x : by_y;
-      if (!slot) slot = make_bins(rotate);
-      const std::size_t k = slot->bin(rotate ? mid.x : mid.y);
-      for (std::uint32_t c = slot->start[k]; c < slot->start[k + 1]; ++c) gather(slot->members[c]);
-    }
-    for (std::size_t c = 0; c < found; ++c) test(straddling[c]);
-    const bool upward = tf(e.b).y > tf(e.a).y;
-    left[i] = upward ? w + e.count : w;
-    right[i] = upward ? w : w - e.count;
-  };
+  double *a_y_ = nullptr, *b_y_ = nullptr, *a_rotated_ = nullptr, *b_rotated_ = nullptr;
+};
 
-  // The nodes: positions where other than two ends meet (crossings,
-  // touches, merged edges), which end chains. Around a node the faces
-  // between consecutive edges (in angular order) differ by the count of the
-  // edge between them, so one edge's windings there give all the others':
-  // the windings spread from chain to chain through the nodes, and a ray is
-  // cast only for a chain none of that reaches (one per connected part of
-  // the arrangement). Node m's ends are node_ends[node_start[m] ..
-  // node_start[m + 1]), sorted by angle when the node is first used.
-  std::vector<std::uint32_t>& node_of = scratch.node_of;
-  std::vector<std::uint32_t>& node_start = scratch.node_start;
-  std::vector<std::uint32_t>& node_ends = scratch.node_ends;
-  node_of.assign(2 * n, UINT32_MAX);  // per first end: its node
-  node_start.assign(1, 0);
-  for (std::size_t k = 0; k < 2 * n; ++k) {
-    if (first_of[k] != k || ends_at[k] == 2) continue;
-    node_of[k] = static_cast<std::uint32_t>(node_start.size() - 1);
-    node_start.push_back(node_start.back() + ends_at[k]);
+void SideWindings::run() {
+  left_.assign(n_, 0);
+  right_.assign(n_, 0);
+  if (n_ == 0) return;
+  find_joins();
+  for (const Edge& e : edges_) {
+    all_.add(e.a);
+    all_.add(e.b);
   }
-  const std::size_t nodes = node_start.size() - 1;
-  node_ends.resize(node_start.back());
-  std::vector<std::uint32_t>& fill = scratch.fill;
-  fill.assign(node_start.begin(), node_start.end() - 1);
-  for (std::size_t k = 0; k < 2 * n; ++k) {
-    const std::uint32_t m = node_of[first_of[k]];
-    if (m != UINT32_MAX) node_ends[fill[m]++] = static_cast<std::uint32_t>(k);
-  }
-  std::vector<char>& done = scratch.done;
-  std::vector<char>& node_done = scratch.node_done;
-  done.assign(n, 0);
-  node_done.assign(nodes, 0);
-  std::vector<std::uint32_t>& pending = scratch.pending;  // edges whose windings are set, ends not yet looked at
-  pending.clear();
-  // Along the chain of `first` (windings set) both ways.
-  auto walk_chain = [&](std::size_t first) {
-    pending.push_back(static_cast<std::uint32_t>(first));
-    for (int way = 0; way < 2; ++way) {
-      std::size_t from = first;
-      bool at_b = way == 0;  // leave `from` through this end
-      for (;;) {
-        const Join join = joins[2 * from + at_b];
-        if (join.other == UINT32_MAX || done[join.other]) break;
-        const std::size_t to = join.other;
-        left[to] = join.swapped ? right[from] : left[from];
-        right[to] = join.swapped ? left[from] : right[from];
-        done[to] = 1;
-        pending.push_back(static_cast<std::uint32_t>(to));
-        // `to` was entered through its end at the join: at b when the sides
-        // were not swapped and we left `from` through b, and so on; leave it
-        // through the other end.
-        const bool entered_at_b = join.swapped ? at_b : !at_b;
-        at_b = !entered_at_b;
-        from = to;
-      }
-    }
-  };
-  // Node m, where some edge's windings are known: every other edge there.
-  auto spread_at = [&](std::uint32_t m) {
-    node_done[m] = 1;
-    std::uint32_t* const first_end = node_ends.data() + node_start[m];
-    std::uint32_t* const last_end = node_ends.data() + node_start[m + 1];
-    const Vec2 v = end_point(*first_end);
-    // Counter-clockwise by the direction to each edge's other end (a conic's
-    // chord: hulls are separated, so chords and arcs leave v in one order).
-    auto other_end = [&](std::uint32_t k) { return end_point(k ^ 1u); };
-    std::sort(first_end, last_end,
-              [&](std::uint32_t x, std::uint32_t y) { return angle_less(v, other_end(x), other_end(y)); });
-    const std::size_t degree = static_cast<std::size_t>(last_end - first_end);
-    std::size_t known = degree;
-    for (std::size_t j = 0; j < degree; ++j)
-      if (done[first_end[j] / 2]) {
-        known = j;
-        break;
-      }
-    if (known == degree) return;
-    // sector = the winding just counter-clockwise of the current end. An
-    // edge leaving v has its left side counter-clockwise of it, one
-    // arriving its right side.
-    auto leaves = [](std::uint32_t k) { return (k & 1) == 0; };
-    std::uint32_t k = first_end[known];
-    int sector = leaves(k) ? left[k / 2] : right[k / 2];
-    for (std::size_t step = 1; step < degree; ++step) {
-      k = first_end[(known + step) % degree];
-      const std::size_t e = k / 2;
-      const int before = sector;
-      sector += leaves(k) ? edges[e].count : -edges[e].count;
-      if (done[e]) continue;
-      left[e] = leaves(k) ? sector : before;
-      right[e] = leaves(k) ? before : sector;
-      done[e] = 1;
-      walk_chain(e);
-    }
-  };
-  for (std::size_t first = 0; first < n; ++first) {
-    if (done[first]) continue;
+  bin_count_ = std::clamp<std::size_t>(n_ / 2, 1, 4096);
+  fill_heights();
+  find_nodes();
+  s_.done.assign(n_, 0);
+  s_.pending.clear();
+  for (std::size_t first = 0; first < n_; ++first) {
+    if (s_.done[first]) continue;
     cast(first);
-    done[first] = 1;
+    s_.done[first] = 1;
     walk_chain(first);
-    while (!pending.empty()) {
-      const std::uint32_t e = pending.back();
-      pending.pop_back();
+    while (!s_.pending.empty()) {
+      const std::uint32_t e = s_.pending.back();
+      s_.pending.pop_back();
       for (std::uint32_t k = 2 * e; k < 2 * e + 2; ++k) {
-        const std::uint32_t m = node_of[first_of[k]];
-        if (m != UINT32_MAX && !node_done[m]) spread_at(m);
+        const std::uint32_t m = s_.node_of[s_.first_of[k]];
+        if (m != UINT32_MAX && !s_.node_done[m]) spread_at(m);
       }
     }
   }
 }
 
+// The chains: a position held by exactly two ends of two different edges
+// joins them. A hash table of positions holds each position's first end,
+// with how many ends it has and its second.
+void SideWindings::find_joins() {
+  const std::size_t n = n_;
+  std::vector<ResolveScratch::Join>& joins = s_.joins;
+  joins.assign(2 * n, ResolveScratch::Join{});
+  // Each end's position's first end; per first end, how many ends are there.
+  std::vector<std::uint32_t>& first_of = s_.first_of;
+  std::vector<std::uint32_t>& ends_at = s_.ends_at;
+  first_of.resize(2 * n);
+  std::vector<std::uint32_t>& second_end = s_.second_end;  // per first end
+  FirstAtPosition ends(s_.slots, 2 * n, [this](std::size_t k) { return end_point(k); });
+  ends_at.assign(2 * n, 0);
+  second_end.resize(2 * n);
+  for (std::uint32_t k = 0; k < 2 * n; ++k) {
+    const std::uint32_t first = ends.add(k);
+    first_of[k] = first;
+    if (++ends_at[first] == 2) second_end[first] = k;
+  }
+  for (std::size_t k = 0; k < 2 * n; ++k) {
+    if (ends_at[k] != 2) continue;
+    const std::size_t u = k, v = second_end[k];
+    const std::uint32_t eu = static_cast<std::uint32_t>(u / 2), ev = static_cast<std::uint32_t>(v / 2);
+    if (eu == ev) continue;
+    const bool u_at_b = (u & 1) != 0, v_at_b = (v & 1) != 0;
+    const bool swapped = u_at_b == v_at_b;
+    joins[u] = {ev, swapped};
+    joins[v] = {eu, swapped};
+  }
+}
+
+void SideWindings::fill_heights() {
+  const auto height_columns = columns<4>(s_.heights, n_);
+  a_y_ = height_columns[0], b_y_ = height_columns[1], a_rotated_ = height_columns[2], b_rotated_ = height_columns[3];
+  for (std::size_t j = 0; j < n_; ++j) {
+    a_y_[j] = edges_[j].a.y;
+    b_y_[j] = edges_[j].b.y;
+    a_rotated_[j] = -edges_[j].a.x;
+    b_rotated_[j] = -edges_[j].b.x;
+  }
+  s_.straddling.resize(n_);
+}
+
+Bins SideWindings::make_bins(bool use_x) const {
+  const std::vector<Edge>& edges = edges_;
+  const std::size_t count = bin_count_;
+  Bins b;
+  b.count = count;
+  b.lo = use_x ? all_.min.x : all_.min.y;
+  const double hi = use_x ? all_.max.x : all_.max.y;
+  b.scale = hi > b.lo ? static_cast<double>(count) / (hi - b.lo) : 0.0;
+  auto span = [&](std::uint32_t j) {
+    const double v0 = use_x ? std::min(edges[j].a.x, edges[j].b.x) : std::min(edges[j].a.y, edges[j].b.y);
+    const double v1 = use_x ? std::max(edges[j].a.x, edges[j].b.x) : std::max(edges[j].a.y, edges[j].b.y);
+    return std::pair{b.bin(v0), b.bin(v1)};
+  };
+  b.start.assign(count + 1, 0);
+  for (std::uint32_t j = 0; j < n_; ++j) {
+    const auto [first, last] = span(j);
+    for (std::size_t k = first; k <= last; ++k) ++b.start[k + 1];
+  }
+  for (std::size_t k = 0; k < count; ++k) b.start[k + 1] += b.start[k];
+  b.members.resize(b.start[count]);
+  std::vector<std::uint32_t> fill(b.start.begin(), b.start.end() - 1);
+  for (std::uint32_t j = 0; j < n_; ++j) {
+    const auto [first, last] = span(j);
+    for (std::size_t k = first; k <= last; ++k) b.members[fill[k]++] = j;
+  }
+  return b;
+}
+
+// Left and right winding of edge i by its own ray.
+void SideWindings::cast(std::size_t i) {
+  const Edge& e = edges_[i];
+  const bool rotate = std::fabs(e.b.x - e.a.x) > std::fabs(e.b.y - e.a.y);
+  auto tf = [rotate](Vec2 p) { return rotate ? Vec2{p.y, -p.x} : p; };
+  const Vec2 mid = (e.a + e.b) * 0.5;
+  const Vec2 m = tf(mid);
+  int w = 0;
+  // Only an edge whose span straddles the ray's line can be crossed: those
+  // are gathered first, without a branch per edge (most do not straddle, in
+  // no order a predictor could learn).
+  const double* const a_height = rotate ? a_rotated_ : a_y_;
+  const double* const b_height = rotate ? b_rotated_ : b_y_;
+  std::uint32_t* const straddling = s_.straddling.data();
+  std::size_t found = 0;
+  auto gather = [&](std::uint32_t j) {
+    straddling[found] = j;
+    found += static_cast<std::size_t>(((a_height[j] <= m.y) != (b_height[j] <= m.y)) & (j != i));
+  };
+  auto test = [&](std::uint32_t j) {
+    const Edge& f = edges_[j];
+    const Vec2 a = tf(f.a), b = tf(f.b);
+    // For an edge sharing an end point with e, every point of e's open
+    // interior is on the side of f's line where e's other end is; asking that
+    // end instead of the rounded midpoint is exact even for a tiny e.
+    Vec2 probe = m;
+    if (f.a == e.a || f.b == e.a) probe = tf(e.b);
+    if (f.a == e.b || f.b == e.b) probe = tf(e.a);
+    if (a.y <= m.y) {
+      if (b.y > m.y && orient2d(a, b, probe) > 0) w += f.count;
+    } else if (b.y <= m.y && orient2d(a, b, probe) < 0) {
+      w -= f.count;
+    }
+  };
+  // The first 16 rays (or all of them, for fewer than 64 edges) test every
+  // edge, about what making the bins costs; later ones use the bins.
+  if (++rays_ <= 16 || n_ < 64) {
+    for (std::uint32_t j = 0; j < n_; ++j) gather(j);
+  } else {
+    std::optional<Bins>& slot = rotate ? by_x_ : by_y_;
+    if (!slot) slot = make_bins(rotate);
+    const std::size_t k = slot->bin(rotate ? mid.x : mid.y);
+    for (std::uint32_t c = slot->start[k]; c < slot->start[k + 1]; ++c) gather(slot->members[c]);
+  }
+  for (std::size_t c = 0; c < found; ++c) test(straddling[c]);
+  const bool upward = tf(e.b).y > tf(e.a).y;
+  left_[i] = upward ? w + e.count : w;
+  right_[i] = upward ? w : w - e.count;
+}
+
+// The nodes: positions where other than two ends meet (crossings, touches,
+// merged edges), which end chains. Around a node the faces between
+// consecutive edges (in angular order) differ by the count of the edge
+// between them, so one edge's windings there give all the others': the
+// windings spread from chain to chain through the nodes, and a ray is cast
+// only for a chain none of that reaches (one per connected part of the
+// arrangement). Node m's ends are node_ends[node_start[m] .. node_start[m +
+// 1]), sorted by angle when the node is first used.
+void SideWindings::find_nodes() {
+  std::vector<std::uint32_t>& node_of = s_.node_of;
+  std::vector<std::uint32_t>& node_start = s_.node_start;
+  node_of.assign(2 * n_, UINT32_MAX);  // per first end: its node
+  node_start.assign(1, 0);
+  for (std::size_t k = 0; k < 2 * n_; ++k) {
+    if (s_.first_of[k] != k || s_.ends_at[k] == 2) continue;
+    node_of[k] = static_cast<std::uint32_t>(node_start.size() - 1);
+    node_start.push_back(node_start.back() + s_.ends_at[k]);
+  }
+  const std::size_t nodes = node_start.size() - 1;
+  s_.node_ends.resize(node_start.back());
+  std::vector<std::uint32_t>& fill = s_.fill;
+  fill.assign(node_start.begin(), node_start.end() - 1);
+  for (std::size_t k = 0; k < 2 * n_; ++k) {
+    const std::uint32_t m = node_of[s_.first_of[k]];
+    if (m != UINT32_MAX) s_.node_ends[fill[m]++] = static_cast<std::uint32_t>(k);
+  }
+  s_.node_done.assign(nodes, 0);
+}
+
+// Along the chain of `first` (windings set) both ways; the edges reached
+// wait in `pending` (windings set, ends not yet looked at).
+void SideWindings::walk_chain(std::size_t first) {
+  s_.pending.push_back(static_cast<std::uint32_t>(first));
+  for (int way = 0; way < 2; ++way) {
+    std::size_t from = first;
+    bool at_b = way == 0;  // leave `from` through this end
+    for (;;) {
+      const ResolveScratch::Join join = s_.joins[2 * from + at_b];
+      if (join.other == UINT32_MAX || s_.done[join.other]) break;
+      const std::size_t to = join.other;
+      left_[to] = join.swapped ? right_[from] : left_[from];
+      right_[to] = join.swapped ? left_[from] : right_[from];
+      s_.done[to] = 1;
+      s_.pending.push_back(static_cast<std::uint32_t>(to));
+      // `to` was entered through its end at the join: at b when the sides
+      // were not swapped and we left `from` through b, and so on; leave it
+      // through the other end.
+      const bool entered_at_b = join.swapped ? at_b : !at_b;
+      at_b = !entered_at_b;
+      from = to;
+    }
+  }
+}
+
+// Node m, where some edge's windings are known: every other edge there.
+void SideWindings::spread_at(std::uint32_t m) {
+  s_.node_done[m] = 1;
+  std::uint32_t* const first_end = s_.node_ends.data() + s_.node_start[m];
+  std::uint32_t* const last_end = s_.node_ends.data() + s_.node_start[m + 1];
+  const Vec2 v = end_point(*first_end);
+  // Counter-clockwise by the direction to each edge's other end (a conic's
+  // chord: hulls are separated, so chords and arcs leave v in one order).
+  auto other_end = [&](std::uint32_t k) { return end_point(k ^ 1u); };
+  std::sort(first_end, last_end,
+            [&](std::uint32_t x, std::uint32_t y) { return angle_less(v, other_end(x), other_end(y)); });
+  const std::size_t degree = static_cast<std::size_t>(last_end - first_end);
+  std::size_t known = degree;
+  for (std::size_t j = 0; j < degree; ++j)
+    if (s_.done[first_end[j] / 2]) {
+      known = j;
+      break;
+    }
+  if (known == degree) return;
+  // sector = the winding just counter-clockwise of the current end. An edge
+  // leaving v has its left side counter-clockwise of it, one arriving its
+  // right side.
+  auto leaves = [](std::uint32_t k) { return (k & 1) == 0; };
+  std::uint32_t k = first_end[known];
+  int sector = leaves(k) ? left_[k / 2] : right_[k / 2];
+  for (std::size_t step = 1; step < degree; ++step) {
+    k = first_end[(known + step) % degree];
+    const std::size_t e = k / 2;
+    const int before = sector;
+    sector += leaves(k) ? edges_[e].count : -edges_[e].count;
+    if (s_.done[e]) continue;
+    left_[e] = leaves(k) ? sector : before;
+    right_[e] = leaves(k) ? before : sector;
+    s_.done[e] = 1;
+    walk_chain(e);
+  }
+}
+
+void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::vector<int>& right,
+                   ResolveScratch& scratch) {
+  SideWindings(edges, left, right, scratch).run();
+}
 }  // namespace
 
 bool rings_cross(const std::vector<Ring>& rings, HullState hulls, ResolveScratch& scratch) {
@@ -768,265 +800,328 @@ bool lines_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   return orient2d(shared, p, q) == 0 && dot(p - shared, q - shared) > 0.0;
 }
 
-std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, HullState hulls, std::size_t max_pieces,
-                                    RingPool& pool, ResolveScratch& scratch, bool* settled) {
-  const bool hulls_separated = hulls == HullState::Separated;
+namespace {
+
+// One call of resolve_crossings: the arrangement of the rings' pieces made
+// free of conflicts (rounds of splits), its edges' windings, and the loops
+// of the edges that bound the fill.
+class CrossingResolver {
+ public:
+  CrossingResolver(HullState hulls, std::size_t max_pieces, RingPool& pool, ResolveScratch& scratch)
+      : hulls_separated_(hulls == HullState::Separated), max_pieces_(max_pieces), pool_(pool), s_(scratch) {}
+
+  std::vector<Ring> run(const std::vector<Ring>& rings, bool* settled);
+
+ private:
+  // Rounded crossing points can make new crossings round after round; the
+  // budget stops an arrangement that keeps growing.
+  void within_budget(const char* what, std::size_t used) const {
+    if (used > max_pieces_) work_budget_exceeded(what, used, max_pieces_);
+  }
+  bool remove_conflicts();
+  bool find_conflicts(int round);
+  void split_marked_conics();
+  void keep_boundary_edges();
+  void number_vertices();
+  std::uint32_t out_degree(std::uint32_t v) const {
+    return v == kNoVertex ? 0u : s_.out_first[v + 1] - s_.out_first[v];
+  }
+  std::uint32_t next_edge(std::uint32_t incoming) const;
+  bool trace_loop(std::uint32_t start);
+  Ring drop_straight_vertices();
+  void keep(Ring&& loop, std::vector<Ring>& out);
+
+  static constexpr std::uint32_t kNoVertex = UINT32_MAX;
+  const bool hulls_separated_;
+  const std::size_t max_pieces_;
+  RingPool& pool_;
+  ResolveScratch& s_;
+  std::vector<Edge> edges_;
+  std::vector<char> marked_;  // conics in conflict, to be halved
+  std::vector<Edge> next_;
+};
+
+std::vector<Ring> CrossingResolver::run(const std::vector<Ring>& rings, bool* settled) {
   // Coincident edges (a path that retraces itself, contours sharing edges)
   // are merged first: n runs over one edge are one edge with a count, not
   // n^2 / 2 pairs to cut.
-  std::vector<Edge> edges;
-  merge_coincident(edges_of(rings), edges, scratch.slots);
-  // Rounded crossing points can make new crossings round after round; the
-  // budget stops an arrangement that keeps growing.
-  auto within_budget = [&](const char* what, std::size_t used) {
-    if (used > max_pieces) work_budget_exceeded(what, used, max_pieces);
-  };
+  merge_coincident(edges_of(rings), edges_, s_.slots);
+  const bool conflicts_left = remove_conflicts();
+  keep_boundary_edges();
+  number_vertices();
+  s_.controls.clear();
+  for (const Edge& e : s_.kept)
+    if (e.conic) s_.controls.push_back(e.control);
+  s_.used.assign(s_.kept.size(), 0);
+  std::vector<Ring> out;
+  for (std::uint32_t start = 0; start < s_.kept.size(); ++start) {
+    if (s_.used[start]) continue;
+    const bool may_repeat = trace_loop(start);
+    Ring simple = drop_straight_vertices();
+    // A loop passes through a vertex twice only where two kept edges leave it.
+    if (!may_repeat) {
+      keep(std::move(simple), out);
+      continue;
+    }
+    for (Ring& sub : split_at_repeated_vertices(simple, s_.slots)) keep(std::move(sub), out);
+    pool_.recycle(std::move(simple));
+  }
+  if (settled != nullptr) *settled = !conflicts_left;
+  return out;
+}
 
-  // Conics in conflict with another piece (sharing a point other than a
-  // common vertex, or both end points) are halved, and flattened once at the
-  // subdivision limit, where their arcs are within ~1e-6 of the curve's size
-  // of their chords. Lines are split at their cut points (crossings, and end
-  // points lying inside them). Each crossing point is rounded to doubles,
-  // which can move a piece by an ulp into a new crossing, or near a conic's
-  // vertex into the conic's hull, so conflicts are looked for again after
-  // every round of splits. Each round with a conic in conflict deepens every
-  // such conic, so there are at most kMaxHullSubdivisionDepth + 2 of them;
-  // line splits settle in a few rounds (the cap is generous).
+// Conics in conflict with another piece (sharing a point other than a common
+// vertex, or both end points) are halved, and flattened once at the
+// subdivision limit, where their arcs are within ~1e-6 of the curve's size of
+// their chords. Lines are split at their cut points (crossings, and end
+// points lying inside them). Each crossing point is rounded to doubles, which
+// can move a piece by an ulp into a new crossing, or near a conic's vertex
+// into the conic's hull, so conflicts are looked for again after every round
+// of splits. Each round with a conic in conflict deepens every such conic, so
+// there are at most kMaxHullSubdivisionDepth + 2 of them; line splits settle
+// in a few rounds (the cap is generous). Returns true when conflicts were
+// left when the rounds ran out.
+bool CrossingResolver::remove_conflicts() {
   constexpr int kMaxConicRounds = tolerance::kMaxHullSubdivisionDepth + 2;
   constexpr int kMaxRounds = 4 * (kMaxConicRounds + 1);
-  // One sweep per round finds both the conics in conflict and the lines'
-  // cut points. Pairs of edges that are both unchanged since the last sweep
-  // are skipped: it found them apart, or one of them would have been split
-  // and so be new.
-  std::vector<Cut>& cuts = scratch.cuts;
-  // Up to this many box tests (fresh edges times all), testing the fresh
-  // edges against all costs less than the sweep's sort.
-  constexpr std::size_t kFreshPairsDirect = 4096;
-  std::vector<char> marked;
-  std::vector<Edge> next;
   int conic_rounds = 0;
-  bool conflicts_left = true;
   for (int round = 0; round < kMaxRounds; ++round) {
-    marked.assign(edges.size(), 0);
-    cuts.clear();
-    bool any = false;
-    auto test_pair = [&](std::uint32_t i, std::uint32_t j) {
-      const Edge& e = edges[i];
-      const Edge& f = edges[j];
-      if (!e.fresh && !f.fresh) return false;
-      if (!e.conic && !f.conic) {
-        if (!same_ends(e, f)) line_pair_cuts(edges, i, j, cuts);
-        within_budget("crossing resolution (cut points)", cuts.size());
-        return false;
-      }
-      // Hull separation has kept the conics apart from every piece they
-      // share no vertex with; where it split two curves at their crossing,
-      // the pieces meet at that vertex with their hulls across each other.
-      if (round == 0 && hulls_separated && !shares_an_end(e, f)) return false;
-      if (same_curve(e, f) || !pieces_conflict(e, f)) return false;
-      if (e.conic) marked[i] = 1;
-      if (f.conic) marked[j] = 1;
-      any = true;
-      return false;
-    };
-    // (Every edge is fresh in the first round.)
-    std::size_t fresh = 0;
-    for (const Edge& e : edges) fresh += static_cast<std::size_t>(e.fresh);
-    if (round > 0 && fresh * edges.size() <= kFreshPairsDirect) {
-      for_each_fresh_pair(edges, scratch, test_pair);
-    } else {
-      for_each_close_pair(edges, scratch, test_pair);
-    }
-    for (Edge& e : edges) e.fresh = false;
-    if (!any) {
+    if (!find_conflicts(round)) {
       // (The last round's cuts are still made, not looked at again.)
-      if (!split_at_cuts(edges, cuts, scratch)) {
-        conflicts_left = false;
-        break;
-      }
-      within_budget("crossing resolution (edges)", edges.size());
+      if (!split_at_cuts(edges_, s_.cuts, s_)) return false;
+      within_budget("crossing resolution (edges)", edges_.size());
       continue;
     }
     if (conic_rounds++ == kMaxConicRounds) {
-      split_at_cuts(edges, cuts, scratch);
-      within_budget("crossing resolution (edges)", edges.size());
-      break;
+      split_at_cuts(edges_, s_.cuts, s_);
+      within_budget("crossing resolution (edges)", edges_.size());
+      return true;
     }
     // Conics first; the lines' cuts are found again in the next round (the
     // lines they were on stay fresh for it).
-    for (const Cut& c : cuts) edges[c.edge].fresh = true;
-    next.clear();
-    next.reserve(edges.size() + 16);
-    for (std::size_t i = 0; i < edges.size(); ++i) {
-      const Edge& e = edges[i];
-      if (!marked[i]) {
-        next.push_back(e);
-      } else if (e.depth >= tolerance::kMaxHullSubdivisionDepth) {
-        Edge flat = e;
-        flat.conic = false;
-        flat.weight = 1.0;
-        flat.box = edge_box(flat);
-        flat.fresh = true;
-        next.push_back(flat);
-      } else {
-        const auto halves = split(Segment::conic(e.a, e.control, e.b, e.weight), 0.5);
-        for (const Segment& h : {halves.first, halves.second}) {
-          Edge half = e;
-          half.a = canonical(h.p[0]);
-          half.control = canonical(h.p[1]);
-          half.b = canonical(h.p[2]);
-          half.weight = h.weight;
-          half.depth = e.depth + 1;
-          half.box = edge_box(half);
-          half.fresh = true;
-          next.push_back(half);
-        }
+    for (const Cut& c : s_.cuts) edges_[c.edge].fresh = true;
+    split_marked_conics();
+    within_budget("crossing resolution (edges)", edges_.size());
+  }
+  return true;
+}
+
+// One sweep per round finds both the conics in conflict (marked_; returns
+// true when there is one) and the lines' cut points (s_.cuts). Pairs of
+// edges that are both unchanged since the last sweep are skipped: it found
+// them apart, or one of them would have been split and so be new.
+bool CrossingResolver::find_conflicts(int round) {
+  // Up to this many box tests (fresh edges times all), testing the fresh
+  // edges against all costs less than the sweep's sort.
+  constexpr std::size_t kFreshPairsDirect = 4096;
+  std::vector<Edge>& edges = edges_;
+  std::vector<Cut>& cuts = s_.cuts;
+  marked_.assign(edges.size(), 0);
+  cuts.clear();
+  bool any = false;
+  auto test_pair = [&](std::uint32_t i, std::uint32_t j) {
+    const Edge& e = edges[i];
+    const Edge& f = edges[j];
+    if (!e.fresh && !f.fresh) return false;
+    if (!e.conic && !f.conic) {
+      if (!same_ends(e, f)) line_pair_cuts(edges, i, j, cuts);
+      within_budget("crossing resolution (cut points)", cuts.size());
+      return false;
+    }
+    // Hull separation has kept the conics apart from every piece they share
+    // no vertex with; where it split two curves at their crossing, the pieces
+    // meet at that vertex with their hulls across each other.
+    if (round == 0 && hulls_separated_ && !shares_an_end(e, f)) return false;
+    if (same_curve(e, f) || !pieces_conflict(e, f)) return false;
+    if (e.conic) marked_[i] = 1;
+    if (f.conic) marked_[j] = 1;
+    any = true;
+    return false;
+  };
+  // (Every edge is fresh in the first round.)
+  std::size_t fresh = 0;
+  for (const Edge& e : edges) fresh += static_cast<std::size_t>(e.fresh);
+  if (round > 0 && fresh * edges.size() <= kFreshPairsDirect) {
+    for_each_fresh_pair(edges, s_, test_pair);
+  } else {
+    for_each_close_pair(edges, s_, test_pair);
+  }
+  for (Edge& e : edges) e.fresh = false;
+  return any;
+}
+
+// The marked conics halved, or made their chords at the subdivision limit.
+void CrossingResolver::split_marked_conics() {
+  next_.clear();
+  next_.reserve(edges_.size() + 16);
+  for (std::size_t i = 0; i < edges_.size(); ++i) {
+    const Edge& e = edges_[i];
+    if (!marked_[i]) {
+      next_.push_back(e);
+    } else if (e.depth >= tolerance::kMaxHullSubdivisionDepth) {
+      Edge flat = e;
+      flat.conic = false;
+      flat.weight = 1.0;
+      flat.box = edge_box(flat);
+      flat.fresh = true;
+      next_.push_back(flat);
+    } else {
+      const auto halves = split(Segment::conic(e.a, e.control, e.b, e.weight), 0.5);
+      for (const Segment& h : {halves.first, halves.second}) {
+        Edge half = e;
+        half.a = canonical(h.p[0]);
+        half.control = canonical(h.p[1]);
+        half.b = canonical(h.p[2]);
+        half.weight = h.weight;
+        half.depth = e.depth + 1;
+        half.box = edge_box(half);
+        half.fresh = true;
+        next_.push_back(half);
       }
     }
-    edges.swap(next);
-    within_budget("crossing resolution (edges)", edges.size());
   }
-  std::vector<Edge>& merged = scratch.merged;
-  std::vector<Edge>& kept = scratch.kept;
-  std::vector<int>& left = scratch.left;
-  std::vector<int>& right = scratch.right;
-  merge_coincident(edges, merged, scratch.slots);
-  side_windings(merged, left, right, scratch);
+  edges_.swap(next_);
+}
 
-  // Kept edges, directed with the fill on the left.
-  kept.clear();
-  kept.reserve(merged.size());
+// Kept edges (s_.kept): those with the fill on exactly one side, directed
+// with the fill on the left.
+void CrossingResolver::keep_boundary_edges() {
+  std::vector<Edge>& merged = s_.merged;
+  merge_coincident(edges_, merged, s_.slots);
+  side_windings(merged, s_.left, s_.right, s_);
+  s_.kept.clear();
+  s_.kept.reserve(merged.size());
   for (std::size_t i = 0; i < merged.size(); ++i) {
-    const bool l = left[i] != 0, r = right[i] != 0;
+    const bool l = s_.left[i] != 0, r = s_.right[i] != 0;
     if (l == r) continue;
     Edge e = merged[i];
     if (!l) std::swap(e.a, e.b);
     e.count = 1;
-    kept.push_back(e);
+    s_.kept.push_back(e);
   }
+}
 
-  // Vertices of the kept edges, numbered: each edge's start and end vertex
-  // (an end where no kept edge starts has none), found in a hash table of
-  // positions, and per vertex its outgoing edges in increasing index order
-  // (counted, then filled in edge order).
+// Vertices of the kept edges, numbered: each edge's start and end vertex (an
+// end where no kept edge starts has none), found in a hash table of
+// positions, and per vertex its outgoing edges in increasing index order
+// (counted, then filled in edge order).
+void CrossingResolver::number_vertices() {
+  const std::vector<Edge>& kept = s_.kept;
   const std::size_t kept_count = kept.size();
-  constexpr std::uint32_t kNoVertex = UINT32_MAX;
-  std::vector<std::uint32_t>& start_vertex = scratch.start_vertex;
-  std::vector<std::uint32_t>& end_vertex = scratch.end_vertex;
-  std::vector<std::uint32_t>& out_first = scratch.out_first;
-  std::vector<std::uint32_t>& out_edges = scratch.out_edges;
-  {
-    FirstAtPosition starts(scratch.slots, kept_count, [&](std::uint32_t i) { return kept[i].a; });
-    std::uint32_t vertices = 0;
-    start_vertex.resize(kept_count);
-    for (std::uint32_t i = 0; i < kept_count; ++i) {
-      const std::uint32_t first = starts.add(i);
-      start_vertex[i] = first == i ? vertices++ : start_vertex[first];
-    }
-    end_vertex.resize(kept_count);
-    for (std::size_t i = 0; i < kept_count; ++i) {
-      const std::int32_t first = starts.find(kept[i].b);
-      end_vertex[i] = first < 0 ? kNoVertex : start_vertex[static_cast<std::size_t>(first)];
-    }
-    out_first.assign(vertices + 1, 0);
-    for (std::size_t i = 0; i < kept_count; ++i) ++out_first[start_vertex[i] + 1];
-    for (std::size_t v = 0; v < vertices; ++v) out_first[v + 1] += out_first[v];
-    out_edges.resize(kept_count);
-    for (std::size_t i = 0; i < kept_count; ++i)
-      out_edges[out_first[start_vertex[i]]++] = static_cast<std::uint32_t>(i);
-    // (Filling moved each vertex's first to its end: shift back.)
-    for (std::size_t v = vertices; v > 0; --v) out_first[v] = out_first[v - 1];
-    out_first[0] = 0;
+  std::vector<std::uint32_t>& start_vertex = s_.start_vertex;
+  std::vector<std::uint32_t>& end_vertex = s_.end_vertex;
+  std::vector<std::uint32_t>& out_first = s_.out_first;
+  std::vector<std::uint32_t>& out_edges = s_.out_edges;
+  FirstAtPosition starts(s_.slots, kept_count, [&](std::uint32_t i) { return kept[i].a; });
+  std::uint32_t vertices = 0;
+  start_vertex.resize(kept_count);
+  for (std::uint32_t i = 0; i < kept_count; ++i) {
+    const std::uint32_t first = starts.add(i);
+    start_vertex[i] = first == i ? vertices++ : start_vertex[first];
   }
-  auto out_degree = [&](std::uint32_t v) { return v == kNoVertex ? 0u : out_first[v + 1] - out_first[v]; };
-
-  // At v, coming along u -> v: the next edge is the first outgoing one
-  // clockwise from the direction back to u. Fill-on-left edges alternate in
-  // and out around v, so this pairs each incoming edge with one outgoing edge.
-  auto next_edge = [&](std::uint32_t incoming) -> std::uint32_t {
-    const Edge& in = kept[incoming];
-    const Vec2 v = in.b;
-    const std::uint32_t vertex = end_vertex[incoming];
-    std::uint32_t best_before = UINT32_MAX, best_any = UINT32_MAX;
-    if (vertex == kNoVertex) return best_any;
-    for (std::uint32_t k = out_first[vertex]; k < out_first[vertex + 1]; ++k) {
-      const std::uint32_t o = out_edges[k];
-      const Vec2 p = kept[o].b;
-      if (best_any == UINT32_MAX || angle_less(v, kept[best_any].b, p)) best_any = o;
-      if (angle_less(v, p, in.a) && (best_before == UINT32_MAX || angle_less(v, kept[best_before].b, p))) {
-        best_before = o;
-      }
-    }
-    return best_before != UINT32_MAX ? best_before : best_any;
-  };
-
-  std::vector<Vec2>& controls = scratch.controls;  // of the kept conics
-  controls.clear();
-  for (const Edge& e : kept)
-    if (e.conic) controls.push_back(e.control);
-  auto is_control_point = [&](Vec2 p) { return std::find(controls.begin(), controls.end(), p) != controls.end(); };
-  std::vector<char>& used = scratch.used;
-  used.assign(kept_count, 0);
-  Ring& traced = scratch.traced;                                // one loop as traced
-  std::vector<std::uint32_t>& ring_edges = scratch.ring_edges;  // the kept edge of each piece
-  std::vector<Ring> out;
-  // A loop passes through a vertex twice only where two kept edges leave it.
-  auto keep = [&](Ring&& loop) {
-    const bool has_conic = std::any_of(loop.begin(), loop.end(), [](const Piece& p) { return p.conic; });
-    if (loop.size() < 2 || (loop.size() == 2 && !has_conic) || ring_area(loop) == 0.0) {
-      pool.recycle(std::move(loop));
-      return;
-    }
-    out.push_back(std::move(loop));
-  };
-  for (std::uint32_t start = 0; start < kept_count; ++start) {
-    if (used[start]) continue;
-    traced.clear();
-    ring_edges.clear();
-    bool may_repeat = false;
-    std::uint32_t cur = start;
-    for (std::size_t steps = 0; steps <= kept_count; ++steps) {
-      used[cur] = 1;
-      Piece p;
-      p.a = kept[cur].a;
-      p.conic = kept[cur].conic;
-      p.control = kept[cur].control;
-      p.weight = kept[cur].weight;
-      p.depth = kept[cur].depth;
-      traced.push_back(p);
-      ring_edges.push_back(cur);
-      may_repeat |= out_degree(start_vertex[cur]) > 1;
-      const std::uint32_t nxt = next_edge(cur);
-      if (nxt == UINT32_MAX || nxt == start || used[nxt]) break;
-      cur = nxt;
-    }
-    // Straight-through vertices where the boundary passes alone (one kept
-    // edge out) are dropped: they come from splitting at crossings whose
-    // other edges turned out interior. A vertex at a conic's control point is
-    // kept: there a conic's leg runs exactly along the line (as hull
-    // separation aligned it), and the longer line would overlap the leg.
-    Ring simple = pool.take();
-    for (std::size_t i = 0; i < traced.size(); ++i) {
-      const std::size_t prev = (i + traced.size() - 1) % traced.size();
-      if (traced.size() > 3 && !traced[i].conic && !traced[prev].conic &&
-          out_degree(start_vertex[ring_edges[i]]) == 1) {
-        const Vec2 a = traced[prev].a, b = traced[i].a, c = ring_end(traced, i);
-        if (orient2d(a, b, c) == 0 && dot(b - a, c - b) > 0.0 && !is_control_point(b)) continue;
-      }
-      simple.push_back(traced[i]);
-    }
-    // Dropping is decided against the original neighbours; consecutive drops
-    // are fine because each dropped vertex lies on the line through its
-    // neighbours and all of them on one straight run.
-    if (!may_repeat) {
-      keep(std::move(simple));
-      continue;
-    }
-    for (Ring& sub : split_at_repeated_vertices(simple, scratch.slots)) keep(std::move(sub));
-    pool.recycle(std::move(simple));
+  end_vertex.resize(kept_count);
+  for (std::size_t i = 0; i < kept_count; ++i) {
+    const std::int32_t first = starts.find(kept[i].b);
+    end_vertex[i] = first < 0 ? kNoVertex : start_vertex[static_cast<std::size_t>(first)];
   }
-  if (settled != nullptr) *settled = !conflicts_left;
-  return out;
+  out_first.assign(vertices + 1, 0);
+  for (std::size_t i = 0; i < kept_count; ++i) ++out_first[start_vertex[i] + 1];
+  for (std::size_t v = 0; v < vertices; ++v) out_first[v + 1] += out_first[v];
+  out_edges.resize(kept_count);
+  for (std::size_t i = 0; i < kept_count; ++i) out_edges[out_first[start_vertex[i]]++] = static_cast<std::uint32_t>(i);
+  // (Filling moved each vertex's first to its end: shift back.)
+  for (std::size_t v = vertices; v > 0; --v) out_first[v] = out_first[v - 1];
+  out_first[0] = 0;
+}
+
+// At v, coming along u -> v: the next edge is the first outgoing one
+// clockwise from the direction back to u. Fill-on-left edges alternate in
+// and out around v, so this pairs each incoming edge with one outgoing edge.
+std::uint32_t CrossingResolver::next_edge(std::uint32_t incoming) const {
+  const std::vector<Edge>& kept = s_.kept;
+  const Edge& in = kept[incoming];
+  const Vec2 v = in.b;
+  const std::uint32_t vertex = s_.end_vertex[incoming];
+  std::uint32_t best_before = UINT32_MAX, best_any = UINT32_MAX;
+  if (vertex == kNoVertex) return best_any;
+  for (std::uint32_t k = s_.out_first[vertex]; k < s_.out_first[vertex + 1]; ++k) {
+    const std::uint32_t o = s_.out_edges[k];
+    const Vec2 p = kept[o].b;
+    if (best_any == UINT32_MAX || angle_less(v, kept[best_any].b, p)) best_any = o;
+    if (angle_less(v, p, in.a) && (best_before == UINT32_MAX || angle_less(v, kept[best_before].b, p))) {
+      best_before = o;
+    }
+  }
+  return best_before != UINT32_MAX ? best_before : best_any;
+}
+
+// One loop of kept edges from `start`, into s_.traced (with each piece's
+// edge in s_.ring_edges). Returns true when it may pass through a vertex
+// twice (it left a vertex where two kept edges leave).
+bool CrossingResolver::trace_loop(std::uint32_t start) {
+  const std::vector<Edge>& kept = s_.kept;
+  s_.traced.clear();
+  s_.ring_edges.clear();
+  bool may_repeat = false;
+  std::uint32_t cur = start;
+  for (std::size_t steps = 0; steps <= kept.size(); ++steps) {
+    s_.used[cur] = 1;
+    Piece p;
+    p.a = kept[cur].a;
+    p.conic = kept[cur].conic;
+    p.control = kept[cur].control;
+    p.weight = kept[cur].weight;
+    p.depth = kept[cur].depth;
+    s_.traced.push_back(p);
+    s_.ring_edges.push_back(cur);
+    may_repeat |= out_degree(s_.start_vertex[cur]) > 1;
+    const std::uint32_t nxt = next_edge(cur);
+    if (nxt == UINT32_MAX || nxt == start || s_.used[nxt]) break;
+    cur = nxt;
+  }
+  return may_repeat;
+}
+
+// The traced loop without its straight-through vertices where the boundary
+// passes alone (one kept edge out): they come from splitting at crossings
+// whose other edges turned out interior. A vertex at a conic's control point
+// is kept: there a conic's leg runs exactly along the line (as hull
+// separation aligned it), and the longer line would overlap the leg.
+// Dropping is decided against the original neighbours; consecutive drops are
+// fine because each dropped vertex lies on the line through its neighbours
+// and all of them on one straight run.
+Ring CrossingResolver::drop_straight_vertices() {
+  const Ring& traced = s_.traced;
+  auto is_control_point = [&](Vec2 p) {
+    return std::find(s_.controls.begin(), s_.controls.end(), p) != s_.controls.end();
+  };
+  Ring simple = pool_.take();
+  for (std::size_t i = 0; i < traced.size(); ++i) {
+    const std::size_t prev = (i + traced.size() - 1) % traced.size();
+    if (traced.size() > 3 && !traced[i].conic && !traced[prev].conic &&
+        out_degree(s_.start_vertex[s_.ring_edges[i]]) == 1) {
+      const Vec2 a = traced[prev].a, b = traced[i].a, c = ring_end(traced, i);
+      if (orient2d(a, b, c) == 0 && dot(b - a, c - b) > 0.0 && !is_control_point(b)) continue;
+    }
+    simple.push_back(traced[i]);
+  }
+  return simple;
+}
+
+void CrossingResolver::keep(Ring&& loop, std::vector<Ring>& out) {
+  const bool has_conic = std::any_of(loop.begin(), loop.end(), [](const Piece& p) { return p.conic; });
+  if (loop.size() < 2 || (loop.size() == 2 && !has_conic) || ring_area(loop) == 0.0) {
+    pool_.recycle(std::move(loop));
+    return;
+  }
+  out.push_back(std::move(loop));
+}
+
+}  // namespace
+
+std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, HullState hulls, std::size_t max_pieces,
+                                    RingPool& pool, ResolveScratch& scratch, bool* settled) {
+  return CrossingResolver(hulls, max_pieces, pool, scratch).run(rings, settled);
 }
 
 }  // namespace curvetext::detail

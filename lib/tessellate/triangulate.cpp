@@ -117,30 +117,33 @@ bool hole_inside(const std::vector<Vec2>& hole, const std::vector<Vec2>& outer) 
 
 }  // namespace
 
-std::vector<PolygonLoops> relink_touching_loops(std::vector<Vec2> outer, std::vector<std::vector<Vec2>> holes,
-                                                TriangulateScratch& scratch) {
-  // Quick exit for the usual case: no position occurs twice among all loop
-  // vertices (then none does among the nodes below, a subset), checked on a
-  // sorted copy, without building the node lists.
-  {
-    std::vector<std::pair<double, double>>& sorted = scratch.relink_sorted;
-    sorted.clear();
-    for (const Vec2 p : outer) sorted.emplace_back(p.x, p.y);
-    for (const auto& hole : holes) {
-      for (const Vec2 p : hole) sorted.emplace_back(p.x, p.y);
-    }
-    std::sort(sorted.begin(), sorted.end());
-    if (std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end()) {
-      std::vector<PolygonLoops> unchanged(1);
-      unchanged[0].outer = std::move(outer);
-      unchanged[0].holes = std::move(holes);
-      return unchanged;
-    }
+namespace {
+
+// No position occurs twice among all loop vertices: checked on a sorted copy.
+bool positions_repeat(const std::vector<Vec2>& outer, const std::vector<std::vector<Vec2>>& holes,
+                      std::vector<std::pair<double, double>>& sorted) {
+  sorted.clear();
+  for (const Vec2 p : outer) sorted.emplace_back(p.x, p.y);
+  for (const auto& hole : holes) {
+    for (const Vec2 p : hole) sorted.emplace_back(p.x, p.y);
   }
-  // Every loop vertex is a node; prev/next link the nodes of each loop.
+  std::sort(sorted.begin(), sorted.end());
+  return std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
+}
+
+std::vector<PolygonLoops> unchanged_loops(std::vector<Vec2>&& outer, std::vector<std::vector<Vec2>>&& holes) {
+  std::vector<PolygonLoops> unchanged(1);
+  unchanged[0].outer = std::move(outer);
+  unchanged[0].holes = std::move(holes);
+  return unchanged;
+}
+
+// Every loop vertex is a node; prev/next link the nodes of each loop.
+struct LoopNodes {
   std::vector<Vec2> pos;
   std::vector<std::size_t> prev, next;
-  auto add_loop = [&](const std::vector<Vec2>& loop) {
+
+  void add_loop(const std::vector<Vec2>& loop) {
     const std::size_t first = pos.size();
     for (std::size_t i = 0; i < loop.size(); ++i) {
       // Zero-length edges have no direction to sort by; they carry nothing.
@@ -153,35 +156,21 @@ std::vector<PolygonLoops> relink_touching_loops(std::vector<Vec2> outer, std::ve
       prev.push_back(first + prev_index(k, count));
       next.push_back(first + next_index(k, count));
     }
-  };
-  add_loop(outer);
-  for (const auto& hole : holes) add_loop(hole);
-  const std::size_t n = pos.size();
-
-  // Loops that share no vertex (the usual case) are returned as they are.
-  std::vector<std::size_t> by_position(n);
-  std::iota(by_position.begin(), by_position.end(), std::size_t{0});
-  auto position_less = [&](std::size_t i, std::size_t j) {
-    return pos[i].x < pos[j].x || (pos[i].x == pos[j].x && (pos[i].y < pos[j].y || (pos[i].y == pos[j].y && i < j)));
-  };
-  std::sort(by_position.begin(), by_position.end(), position_less);
-  bool touching = false;
-  for (std::size_t k = 1; k < n && !touching; ++k) touching = pos[by_position[k]] == pos[by_position[k - 1]];
-  if (!touching) {
-    std::vector<PolygonLoops> unchanged(1);
-    unchanged[0].outer = std::move(outer);
-    unchanged[0].holes = std::move(holes);
-    return unchanged;
   }
+};
 
-  // link[c]: having arrived at node c's position along c's incoming edge, the
-  // walk leaves along link[c]'s outgoing edge. At a shared vertex the filled
-  // side of an arrival lies clockwise of its incoming ray (it is on the left
-  // of the travel), so the departure that keeps the filled corner free of
-  // other edges is the first outgoing ray clockwise from the incoming ray.
-  // Around a vertex where non-crossing loops touch, incoming and outgoing rays
-  // alternate, so that is the next ray clockwise; skipping outgoing rays
-  // already taken only matters for garbage input, and keeps link a bijection.
+// link[c]: having arrived at node c's position along c's incoming edge, the
+// walk leaves along link[c]'s outgoing edge. At a shared vertex the filled
+// side of an arrival lies clockwise of its incoming ray (it is on the left of
+// the travel), so the departure that keeps the filled corner free of other
+// edges is the first outgoing ray clockwise from the incoming ray. Around a
+// vertex where non-crossing loops touch, incoming and outgoing rays
+// alternate, so that is the next ray clockwise; skipping outgoing rays
+// already taken only matters for garbage input, and keeps link a bijection.
+// `by_position`: the nodes sorted by position.
+std::vector<std::size_t> relink(const LoopNodes& g, const std::vector<std::size_t>& by_position) {
+  const std::vector<Vec2>& pos = g.pos;
+  const std::size_t n = pos.size();
   std::vector<std::size_t> link(n);
   std::iota(link.begin(), link.end(), std::size_t{0});
   struct Ray {
@@ -203,8 +192,8 @@ std::vector<PolygonLoops> relink_touching_loops(std::vector<Vec2> outer, std::ve
     const Vec2 p = pos[nodes.front()];
     rays.clear();
     for (std::size_t c : nodes) {
-      rays.push_back({pos[prev[c]], c, false});
-      rays.push_back({pos[next[c]], c, true});
+      rays.push_back({pos[g.prev[c]], c, false});
+      rays.push_back({pos[g.next[c]], c, true});
     }
     std::stable_sort(rays.begin(), rays.end(), [&](const Ray& a, const Ray& b) { return angle_less(p, a.to, b.to); });
     taken.assign(rays.size(), 0);
@@ -220,32 +209,12 @@ std::vector<PolygonLoops> relink_touching_loops(std::vector<Vec2> outer, std::ve
       }
     }
   }
+  return link;
+}
 
-  // next[link[.]] is a permutation of the nodes: its cycles are the new loops.
-  std::vector<std::vector<Vec2>> outers, new_holes;
-  std::vector<char> visited(n, 0);
-  for (std::size_t s = 0; s < n; ++s) {
-    if (visited[s]) continue;
-    std::vector<Vec2> loop;
-    for (std::size_t cur = s; !visited[cur]; cur = next[link[cur]]) {
-      visited[cur] = 1;
-      loop.push_back(pos[cur]);
-    }
-    if (loop.size() < 3) continue;  // a back-and-forth between two points: no area
-    const double area = loop_area(loop);
-    if (area > 0.0) {
-      outers.push_back(std::move(loop));
-    } else if (area < 0.0) {
-      new_holes.push_back(std::move(loop));
-    }
-  }
-  if (outers.empty()) {  // not a region with the filled side on the left: leave it to the fallbacks
-    std::vector<PolygonLoops> unchanged(1);
-    unchanged[0].outer = std::move(outer);
-    unchanged[0].holes = std::move(holes);
-    return unchanged;
-  }
-  // Smallest outers first, so a hole goes to the innermost outer around it.
+// Each hole to the innermost of the outers around it (smallest outers first).
+std::vector<PolygonLoops> assign_holes(std::vector<std::vector<Vec2>>&& outers,
+                                       std::vector<std::vector<Vec2>>&& new_holes) {
   std::vector<double> areas;
   for (const auto& loop : outers) areas.push_back(loop_area(loop));
   std::vector<std::size_t> order(outers.size());
@@ -266,6 +235,56 @@ std::vector<PolygonLoops> relink_touching_loops(std::vector<Vec2> outer, std::ve
     polygons[home].holes.push_back(std::move(hole));
   }
   return polygons;
+}
+
+}  // namespace
+
+std::vector<PolygonLoops> relink_touching_loops(std::vector<Vec2> outer, std::vector<std::vector<Vec2>> holes,
+                                                TriangulateScratch& scratch) {
+  // Quick exit for the usual case: no position occurs twice among all loop
+  // vertices (then none does among the nodes below, a subset), without
+  // building the node lists.
+  if (!positions_repeat(outer, holes, scratch.relink_sorted))
+    return unchanged_loops(std::move(outer), std::move(holes));
+  LoopNodes g;
+  g.add_loop(outer);
+  for (const auto& hole : holes) g.add_loop(hole);
+  const std::vector<Vec2>& pos = g.pos;
+  const std::size_t n = pos.size();
+
+  // Loops that share no vertex (the usual case) are returned as they are.
+  std::vector<std::size_t> by_position(n);
+  std::iota(by_position.begin(), by_position.end(), std::size_t{0});
+  auto position_less = [&](std::size_t i, std::size_t j) {
+    return pos[i].x < pos[j].x || (pos[i].x == pos[j].x && (pos[i].y < pos[j].y || (pos[i].y == pos[j].y && i < j)));
+  };
+  std::sort(by_position.begin(), by_position.end(), position_less);
+  bool touching = false;
+  for (std::size_t k = 1; k < n && !touching; ++k) touching = pos[by_position[k]] == pos[by_position[k - 1]];
+  if (!touching) return unchanged_loops(std::move(outer), std::move(holes));
+  const std::vector<std::size_t> link = relink(g, by_position);
+
+  // next[link[.]] is a permutation of the nodes: its cycles are the new loops.
+  std::vector<std::vector<Vec2>> outers, new_holes;
+  std::vector<char> visited(n, 0);
+  for (std::size_t s = 0; s < n; ++s) {
+    if (visited[s]) continue;
+    std::vector<Vec2> loop;
+    for (std::size_t cur = s; !visited[cur]; cur = g.next[link[cur]]) {
+      visited[cur] = 1;
+      loop.push_back(pos[cur]);
+    }
+    if (loop.size() < 3) continue;  // a back-and-forth between two points: no area
+    const double area = loop_area(loop);
+    if (area > 0.0) {
+      outers.push_back(std::move(loop));
+    } else if (area < 0.0) {
+      new_holes.push_back(std::move(loop));
+    }
+  }
+  // Not a region with the filled side on the left: left to the fallbacks.
+  if (outers.empty()) return unchanged_loops(std::move(outer), std::move(holes));
+  return assign_holes(std::move(outers), std::move(new_holes));
 }
 
 std::vector<Vec2> bridge_holes(std::vector<Vec2> outer, std::vector<std::vector<Vec2>> holes) {
@@ -340,163 +359,226 @@ std::vector<Vec2> bridge_holes(std::vector<Vec2> outer, std::vector<std::vector<
   return outer;
 }
 
-bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& triangles, TriangulateScratch& scratch,
-              std::size_t max_visits) {
-  std::size_t n = loop.size();
-  std::size_t visits = 0;
-  auto spend = [&](std::size_t work) {
-    visits += work;
-    if (visits > max_visits) work_budget_exceeded("ear clipping", visits, max_visits);
-  };
-  if (n < 3) return n == 0;
-  if (n >= 0xffffffffu) return false;  // indices are 32-bit
-  std::vector<std::uint32_t>& prev = scratch.ear_prev;
-  std::vector<std::uint32_t>& next = scratch.ear_next;
-  LiveEdges& live = scratch.live;
-  prev.resize(n);
-  next.resize(n);
-  live.reset(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    prev[i] = static_cast<std::uint32_t>(prev_index(i, n));
-    next[i] = static_cast<std::uint32_t>(next_index(i, n));
+namespace {
+
+// A candidate ear (a, b, c) with the boxes its tests skip by.
+struct Ear {
+  std::size_t ia, ib, ic;
+  Vec2 corners[3];                                // a, b, c
+  double min_x, max_x, min_y, max_y;              // the triangle's box
+  double ac_min_x, ac_max_x, ac_min_y, ac_max_y;  // the diagonal's box
+};
+
+// Ear clipping of one loop (ear_clip): the loop as a linked list over
+// `loop`'s indices, the live edges for the ear tests, the work spent.
+class EarClipper {
+ public:
+  EarClipper(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& triangles, TriangulateScratch& scratch,
+             std::size_t max_visits)
+      : loop_(loop),
+        triangles_(triangles),
+        prev_(scratch.ear_prev),
+        next_(scratch.ear_next),
+        live_(scratch.live),
+        max_visits_(max_visits) {}
+
+  bool run();
+
+ private:
+  void spend(std::size_t work) {
+    visits_ += work;
+    if (visits_ > max_visits_) work_budget_exceeded("ear clipping", visits_, max_visits_);
   }
-  std::size_t remaining = n;
-  bool tracking = false;  // `live` is filled after the first clean-up
-  auto unlink = [&](std::size_t i) {
-    next[prev[i]] = next[i];
-    prev[next[i]] = prev[i];
-    --remaining;
-    if (tracking) {
-      live.erase(static_cast<std::uint32_t>(i));
-      live.set(prev[i], loop[prev[i]], loop[next[i]]);  // the edge that replaces i's two
-    }
-  };
-  bool clean = true;
-  // Consecutive repeats (possible after bridging) carry no area: drop them.
+  void unlink(std::size_t i);
+  std::size_t drop_repeats();
+  bool is_ear(std::size_t ia, std::size_t ib, std::size_t ic);
+  bool blocks(const Ear& ear, std::size_t p, const LiveEdges::Entry& e) const;
+  std::size_t clip_any(std::size_t cur);
+
+  const std::vector<Vec2>& loop_;
+  std::vector<std::array<Vec2, 3>>& triangles_;
+  std::vector<std::uint32_t>& prev_;
+  std::vector<std::uint32_t>& next_;
+  LiveEdges& live_;
+  const std::size_t max_visits_;
+  std::size_t visits_ = 0;
+  std::size_t remaining_ = 0;
+  bool tracking_ = false;  // `live_` is filled after the first clean-up
+  bool clean_ = true;
+};
+
+void EarClipper::unlink(std::size_t i) {
+  next_[prev_[i]] = next_[i];
+  prev_[next_[i]] = prev_[i];
+  --remaining_;
+  if (tracking_) {
+    live_.erase(static_cast<std::uint32_t>(i));
+    live_.set(prev_[i], loop_[prev_[i]], loop_[next_[i]]);  // the edge that replaces i's two
+  }
+}
+
+// Consecutive repeats (possible after bridging) carry no area: dropped.
+// Returns where the clipping starts.
+std::size_t EarClipper::drop_repeats() {
+  const std::size_t n = loop_.size();
   std::size_t start = 0;
-  for (std::size_t guard = 0; guard < n && remaining > 2; ++guard) {
+  for (std::size_t guard = 0; guard < n && remaining_ > 2; ++guard) {
     const std::size_t i = start;
-    if (loop[i] == loop[next[i]]) {
-      start = next[i];
+    if (loop_[i] == loop_[next_[i]]) {
+      start = next_[i];
       unlink(i);
     } else {
-      start = next[i];
+      start = next_[i];
     }
   }
-  {
-    std::uint32_t p = static_cast<std::uint32_t>(start);
-    for (std::size_t k = 0; k < remaining; ++k, p = next[p]) live.set(p, loop[p], loop[next[p]]);
-    tracking = true;
-  }
+  return start;
+}
 
-  auto is_ear = [&](std::size_t ia, std::size_t ib, std::size_t ic) {
-    const Vec2 a = loop[ia], b = loop[ib], c = loop[ic];
-    if (orient2d(a, b, c) <= 0) return false;
-    spend(live.entries().size());
-    const double min_x = std::min({a.x, b.x, c.x}), max_x = std::max({a.x, b.x, c.x});
-    const double min_y = std::min({a.y, b.y, c.y}), max_y = std::max({a.y, b.y, c.y});
-    // The new edge a-c must leave a and c into the filled side of their own
-    // corners (at a repeated vertex only one of the copies' wedges is right)
-    // and meet no loop edge except at a or c.
-    // A diagonal that coincides with the edge beside it closes a lobe at a
-    // repeated vertex; that is fine.
-    const Vec2 before_a = loop[prev[ia]], after_c = loop[next[ic]];
-    if (before_a != c && !inside_cone(before_a, a, b, c)) return false;
-    if (after_c != a && !inside_cone(b, c, after_c, a)) return false;
-    // Every other vertex p of the loop and its edge p -> next[p]: the edge
-    // must not meet the diagonal, the vertex must not lie in the triangle.
-    // The diagonal lies in the triangle's box, so edges and vertices outside
-    // it are skipped without predicates.
-    const Vec2 corners[3] = {a, b, c};
-    // An edge can only meet the diagonal inside the diagonal's own box (a
-    // subset of the triangle's): an exact test that skips most predicates.
-    const double ac_min_x = std::min(a.x, c.x), ac_max_x = std::max(a.x, c.x);
-    const double ac_min_y = std::min(a.y, c.y), ac_max_y = std::max(a.y, c.y);
-    auto blocks = [&](std::size_t p, const LiveEdges::Entry& e) {
-      const Vec2 pp = loop[p];
-      const bool p_outside_box = pp.x < min_x || pp.x > max_x || pp.y < min_y || pp.y > max_y;
-      if (!(e.x1 < ac_min_x || e.x0 > ac_max_x || e.y1 < ac_min_y || e.y0 > ac_max_y) &&
-          bridge_blocked_by(a, c, pp, loop[next[p]]))
-        return true;
-      if (p_outside_box) return false;
-      int corner = -1;
-      for (int k = 0; k < 3; ++k) {
-        if (pp == corners[k]) corner = k;
-      }
-      if (corner < 0) {
-        // Any other vertex in the closed triangle blocks (strictness avoids
-        // T-junctions and zero-area triangles).
-        // point_in_triangle(a, b, c, pp) != Outside, with orient2d(a, b, c) > 0
-        // known from the top of is_ear.
-        return orient2d(a, b, pp) >= 0 && orient2d(b, c, pp) >= 0 && orient2d(c, a, pp) >= 0;
-      }
-      // A repeat of a corner (bridge or pinch vertex): its edges must not
-      // enter the triangle from that corner.
-      const Vec2 v = corners[corner];
-      const Vec2 x = corners[(corner + 1) % 3];
-      const Vec2 y = corners[(corner + 2) % 3];
-      for (std::size_t q : {std::size_t{prev[p]}, std::size_t{next[p]}}) {
-        const Vec2 qq = loop[q];
-        if (qq == a || qq == b || qq == c) continue;  // along a triangle edge
-        const int ox = orient2d(v, x, qq), oy = orient2d(v, y, qq);
-        if (ox > 0 && oy < 0) return true;
-        if (ox == 0 && dot(qq - v, x - v) > 0) return true;
-        if (oy == 0 && dot(qq - v, y - v) > 0) return true;
-      }
-      return false;
-    };
-    for (const LiveEdges::Entry& e : live.entries()) {
-      if (e.x1 < min_x || e.x0 > max_x || e.y1 < min_y || e.y0 > max_y) continue;
-      if (e.p == ia || e.p == ib || e.p == ic) continue;
-      if (blocks(e.p, e)) return false;
-    }
+bool EarClipper::is_ear(std::size_t ia, std::size_t ib, std::size_t ic) {
+  const Vec2 a = loop_[ia], b = loop_[ib], c = loop_[ic];
+  if (orient2d(a, b, c) <= 0) return false;
+  spend(live_.entries().size());
+  const Ear ear{ia,
+                ib,
+                ic,
+                {a, b, c},
+                std::min({a.x, b.x, c.x}),
+                std::max({a.x, b.x, c.x}),
+                std::min({a.y, b.y, c.y}),
+                std::max({a.y, b.y, c.y}),
+                std::min(a.x, c.x),
+                std::max(a.x, c.x),
+                std::min(a.y, c.y),
+                std::max(a.y, c.y)};
+  // The new edge a-c must leave a and c into the filled side of their own
+  // corners (at a repeated vertex only one of the copies' wedges is right)
+  // and meet no loop edge except at a or c. A diagonal that coincides with
+  // the edge beside it closes a lobe at a repeated vertex; that is fine.
+  const Vec2 before_a = loop_[prev_[ia]], after_c = loop_[next_[ic]];
+  if (before_a != c && !inside_cone(before_a, a, b, c)) return false;
+  if (after_c != a && !inside_cone(b, c, after_c, a)) return false;
+  // Every other vertex p of the loop and its edge p -> next[p]: the edge
+  // must not meet the diagonal, the vertex must not lie in the triangle. The
+  // diagonal lies in the triangle's box, so edges and vertices outside it
+  // are skipped without predicates.
+  for (const LiveEdges::Entry& e : live_.entries()) {
+    if (e.x1 < ear.min_x || e.x0 > ear.max_x || e.y1 < ear.min_y || e.y0 > ear.max_y) continue;
+    if (e.p == ia || e.p == ib || e.p == ic) continue;
+    if (blocks(ear, e.p, e)) return false;
+  }
+  return true;
+}
+
+// Whether vertex p, or its edge p -> next[p] (live entry e), blocks the ear.
+bool EarClipper::blocks(const Ear& ear, std::size_t p, const LiveEdges::Entry& e) const {
+  const Vec2 a = ear.corners[0], b = ear.corners[1], c = ear.corners[2];
+  const Vec2 pp = loop_[p];
+  const bool p_outside_box = pp.x < ear.min_x || pp.x > ear.max_x || pp.y < ear.min_y || pp.y > ear.max_y;
+  // An edge can only meet the diagonal inside the diagonal's own box (a
+  // subset of the triangle's): an exact test that skips most predicates.
+  if (!(e.x1 < ear.ac_min_x || e.x0 > ear.ac_max_x || e.y1 < ear.ac_min_y || e.y0 > ear.ac_max_y) &&
+      bridge_blocked_by(a, c, pp, loop_[next_[p]]))
     return true;
-  };
+  if (p_outside_box) return false;
+  int corner = -1;
+  for (int k = 0; k < 3; ++k) {
+    if (pp == ear.corners[k]) corner = k;
+  }
+  if (corner < 0) {
+    // Any other vertex in the closed triangle blocks (strictness avoids
+    // T-junctions and zero-area triangles). point_in_triangle(a, b, c, pp) !=
+    // Outside, with orient2d(a, b, c) > 0 known from the top of is_ear.
+    return orient2d(a, b, pp) >= 0 && orient2d(b, c, pp) >= 0 && orient2d(c, a, pp) >= 0;
+  }
+  // A repeat of a corner (bridge or pinch vertex): its edges must not enter
+  // the triangle from that corner.
+  const Vec2 v = ear.corners[corner];
+  const Vec2 x = ear.corners[(corner + 1) % 3];
+  const Vec2 y = ear.corners[(corner + 2) % 3];
+  for (std::size_t q : {std::size_t{prev_[p]}, std::size_t{next_[p]}}) {
+    const Vec2 qq = loop_[q];
+    if (qq == a || qq == b || qq == c) continue;  // along a triangle edge
+    const int ox = orient2d(v, x, qq), oy = orient2d(v, y, qq);
+    if (ox > 0 && oy < 0) return true;
+    if (ox == 0 && dot(qq - v, x - v) > 0) return true;
+    if (oy == 0 && dot(qq - v, y - v) > 0) return true;
+  }
+  return false;
+}
 
+// A full turn without an ear: the loop is not weakly simple. Best effort:
+// clip the first strictly convex corner, or drop a vertex, so that every
+// iteration removes one vertex and the loop terminates. Returns where to go
+// on.
+std::size_t EarClipper::clip_any(std::size_t cur) {
+  clean_ = false;
+  spend(remaining_);
+  std::size_t pick = cur;
+  bool convex_found = false;
+  for (std::size_t i = 0, p = cur; i < remaining_; ++i, p = next_[p]) {
+    if (orient2d(loop_[prev_[p]], loop_[p], loop_[next_[p]]) > 0) {
+      pick = p;
+      convex_found = true;
+      break;
+    }
+  }
+  if (convex_found) triangles_.push_back({loop_[prev_[pick]], loop_[pick], loop_[next_[pick]]});
+  const std::size_t next = next_[pick];
+  unlink(pick);
+  return next;
+}
+
+bool EarClipper::run() {
+  const std::size_t n = loop_.size();
+  if (n < 3) return n == 0;
+  if (n >= 0xffffffffu) return false;  // indices are 32-bit
+  prev_.resize(n);
+  next_.resize(n);
+  live_.reset(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    prev_[i] = static_cast<std::uint32_t>(prev_index(i, n));
+    next_[i] = static_cast<std::uint32_t>(next_index(i, n));
+  }
+  remaining_ = n;
+  const std::size_t start = drop_repeats();
+  std::uint32_t p = static_cast<std::uint32_t>(start);
+  for (std::size_t k = 0; k < remaining_; ++k, p = next_[p]) live_.set(p, loop_[p], loop_[next_[p]]);
+  tracking_ = true;
   std::size_t cur = start;
   std::size_t stall = 0;
-  while (remaining > 3) {
-    const std::size_t a = prev[cur], c = next[cur];
+  while (remaining_ > 3) {
+    const std::size_t a = prev_[cur], c = next_[cur];
     if (is_ear(a, cur, c)) {
-      triangles.push_back({loop[a], loop[cur], loop[c]});
+      triangles_.push_back({loop_[a], loop_[cur], loop_[c]});
       unlink(cur);
       // Closing a lobe at a repeated vertex leaves two copies side by side.
-      if (remaining > 3 && loop[a] == loop[c]) unlink(c);
-      cur = next[c];
+      if (remaining_ > 3 && loop_[a] == loop_[c]) unlink(c);
+      cur = next_[c];
       stall = 0;
       continue;
     }
     cur = c;
-    if (++stall < remaining) continue;
-    // A full turn without an ear: the loop is not weakly simple. Best effort:
-    // clip the first strictly convex corner, or drop a vertex, so that every
-    // iteration removes one vertex and the loop terminates.
-    clean = false;
-    spend(remaining);
-    std::size_t pick = cur;
-    bool convex_found = false;
-    for (std::size_t i = 0, p = cur; i < remaining; ++i, p = next[p]) {
-      if (orient2d(loop[prev[p]], loop[p], loop[next[p]]) > 0) {
-        pick = p;
-        convex_found = true;
-        break;
-      }
-    }
-    if (convex_found) triangles.push_back({loop[prev[pick]], loop[pick], loop[next[pick]]});
-    cur = next[pick];
-    unlink(pick);
+    if (++stall < remaining_) continue;
+    cur = clip_any(cur);
     stall = 0;
   }
-  if (remaining == 3) {
-    const std::size_t a = prev[cur], c = next[cur];
-    const int o = orient2d(loop[a], loop[cur], loop[c]);
+  if (remaining_ == 3) {
+    const std::size_t a = prev_[cur], c = next_[cur];
+    const int o = orient2d(loop_[a], loop_[cur], loop_[c]);
     if (o > 0) {
-      triangles.push_back({loop[a], loop[cur], loop[c]});
+      triangles_.push_back({loop_[a], loop_[cur], loop_[c]});
     } else if (o < 0) {
-      clean = false;
+      clean_ = false;
     }
   }
-  return clean;
+  return clean_;
+}
+
+}  // namespace
+
+bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& triangles, TriangulateScratch& scratch,
+              std::size_t max_visits) {
+  return EarClipper(loop, triangles, scratch, max_visits).run();
 }
 
 void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std::uint32_t, 3>>& triangles,
@@ -599,22 +681,23 @@ void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std:
 // 16-bit entries (128 KiB at most); larger ones hash.
 constexpr std::size_t kDirectVertices = 256;
 
-void delaunay_flips_manifold(const std::vector<Vec2>& points, std::vector<std::array<std::uint32_t, 3>>& triangles,
-                             TriangulateScratch& scratch) {
-  // Half-edge h = 4 t + k (k < 3: a shift and a mask instead of a division)
-  // runs from triangles[t][k] to triangles[t][k + 1]; twin[h] is the
-  // half-edge running back on the other triangle, or -1.
+namespace {
+
+// Half-edge h = 4 t + k (k < 3: a shift and a mask instead of a division)
+// runs from triangles[t][k] to triangles[t][k + 1]; twin[h] is the half-edge
+// running back on the other triangle, or -1.
+constexpr std::uint32_t kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};
+
+// twin[h] for h = a -> b is the half-edge b -> a, found by a table lookup
+// without branches (whether an edge has a twin, inner or boundary, comes in
+// no predictable order; mispredicted branches cost more here than the
+// arithmetic). Up to kDirectVertices points the table is indexed directly by
+// the pair; larger meshes hash it.
+void find_twins(std::size_t n, const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                TriangulateScratch& scratch) {
   const std::size_t m = triangles.size();
-  if (m < 2) return;
-  static constexpr std::uint32_t kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};
   std::vector<std::int32_t>& twin = scratch.twin;
   twin.assign(4 * m, -1);
-  // twin[h] for h = a -> b is the half-edge b -> a, found by a table lookup
-  // without branches (whether an edge has a twin, inner or boundary, comes in
-  // no predictable order; mispredicted branches cost more here than the
-  // arithmetic). Up to kDirectVertices points the table is indexed directly by
-  // the pair; larger meshes hash it.
-  const std::size_t n = points.size();
   if (n <= kDirectVertices && 4 * m < 0xffff) {  // (h + 1 fits in 16 bits)
     // Entry a * n + b holds h + 1 for h = a -> b, 0 for none. Every entry
     // written is reset before returning, so the table is all zero between
@@ -666,6 +749,16 @@ void delaunay_flips_manifold(const std::vector<Vec2>& points, std::vector<std::a
       }
     }
   }
+}
+
+}  // namespace
+
+void delaunay_flips_manifold(const std::vector<Vec2>& points, std::vector<std::array<std::uint32_t, 3>>& triangles,
+                             TriangulateScratch& scratch) {
+  const std::size_t m = triangles.size();
+  if (m < 2) return;
+  find_twins(points.size(), triangles, scratch);
+  std::vector<std::int32_t>& twin = scratch.twin;
   std::vector<std::uint32_t>& stack = scratch.manifold_stack;
   // Every inner edge once (from its first side), written without a branch.
   stack.resize(4 * m);
