@@ -232,6 +232,9 @@ HullSeparation HullSeparator::run() {
     split_rings();
     std::size_t pieces = 0;
     for (const Ring& ring : rings_) pieces += ring.size();
+    // Each piece became the children number_children counted for it (the
+    // partner pass reads them by those numbers).
+    CURVETEXT_ASSERT(pieces == s_.child_first.back());
     if (pieces > max_pieces_) work_budget_exceeded("hull separation", pieces, max_pieces_);
   }
   // Passes used up right after splitting: not known to be separated.
@@ -514,6 +517,7 @@ void HullSeparator::test_partners() {
   const std::vector<std::uint32_t>& child_first = s_.child_first;
   for (const std::uint64_t pair : s_.partners) {
     const std::size_t p = pair >> 32, q = pair & 0xffffffffu;
+    CURVETEXT_ASSERT(child_first[p + 1] <= count_ && child_first[q + 1] <= count_);
     for (std::size_t cp = child_first[p]; cp < child_first[p + 1]; ++cp)
       for (std::size_t cq = child_first[q]; cq < child_first[q + 1]; ++cq) test_pair(refs_[cp], refs_[cq]);
   }
@@ -641,6 +645,8 @@ void HullSeparator::number_children() {
     for (; m < more.size() && more[m].first == k; ++m) ++children;
     child_first[k + 1] = child_first[k] + children;
   }
+  CURVETEXT_ASSERT(
+      std::is_sorted(more.begin(), more.end(), [](const auto& u, const auto& v) { return u.first < v.first; }));
 }
 
 void HullSeparator::split_rings() {

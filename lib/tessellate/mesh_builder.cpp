@@ -138,6 +138,7 @@ class PointIndex {
 
   std::uint32_t operator()(Vec2 p) {
     if (4 * (points.size() + 1) > slots_.size()) grow();
+    CURVETEXT_ASSERT(4 * (points.size() + 1) <= slots_.size());  // at most a quarter full: a free slot ends every probe
     std::size_t slot = this->slot(p);
     while (slots_[slot] != kEmpty) {
       if (points[slots_[slot]] == p) return slots_[slot];
@@ -471,6 +472,7 @@ bool Build::sweep_loops(bool* repeated) {
                              s_.loop_vertices.begin() + last);
     s_.sweep_start.push_back(static_cast<std::uint32_t>(s_.sweep_vertices.size()));
   }
+  CURVETEXT_ASSERT(s_.sweep_start.back() == s_.sweep_vertices.size());
   mesh_.triangles.reserve(s_.sweep_vertices.size() + 4 * s_.sweep_start.size());
   return sweep_triangulate(mesh_.points, s_.sweep_vertices, s_.sweep_start, mesh_.triangles, s_.triangulate, repeated);
 }

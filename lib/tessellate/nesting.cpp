@@ -148,6 +148,7 @@ void nest_rings(std::vector<Ring>& rings, std::vector<std::uint32_t>& region_rin
       if (scratch.role[h] == Role::Hole && scratch.owner[h] == i) region_rings.push_back(static_cast<std::uint32_t>(h));
   }
   region_start.push_back(static_cast<std::uint32_t>(region_rings.size()));
+  CURVETEXT_ASSERT(region_rings.size() <= n);  // each ring in one region at most
 }
 
 }  // namespace curvetext::detail

@@ -30,6 +30,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/assert.hpp"
 #include "curvetext/curves.hpp"
 #include "curvetext/tolerances.hpp"
 #include "tessellate/columns.hpp"
@@ -209,6 +210,114 @@ std::vector<Edge> edges_of(const std::vector<Ring>& rings) {
   return edges;
 }
 
+bool by_x(Vec2 a, Vec2 b) { return a.x != b.x ? a.x < b.x : a.y < b.y; }
+
+// The loose cut points (near no vertex) onto each other, in (x, y) order:
+// each becomes the nearest earlier representative within eps (the last in
+// that order among equally near ones), or a representative itself. (Only
+// equal points compare equal here, and they snap alike: the result does not
+// depend on the order of the cuts.) The representatives come in x order
+// because the loose points do.
+template <class NearestRepresentative>
+void snap_loose(std::vector<Cut>& cuts, ResolveScratch& scratch, NearestRepresentative&& nearest_rep) {
+  using Loose = ResolveScratch::LooseCut;
+  std::vector<Loose>& loose = scratch.loose;
+  std::sort(loose.begin(), loose.end(), [&](const Loose& a, const Loose& b) { return by_x(a.p, b.p); });
+  scratch.representatives.clear();
+  for (const Loose& l : loose) {
+    Vec2 r;
+    if (nearest_rep(l.p, r)) {
+      cuts[l.cut].p = r;
+    } else {
+      scratch.representatives.push_back(l.p);
+    }
+  }
+}
+
+// With few cuts (the usual resolve), each looks for its vertex by scanning
+// them as they are, which costs less than sorting them: the same vertex as
+// snap_many_cuts finds (the nearest within eps, Chebyshev; the last in (x, y)
+// order among equally near ones). Most cut points are crossings near no
+// vertex: a branch-free count of the vertices within eps finds those first.
+// The loose ones then meet each other in a scan too.
+void snap_few_cuts(std::vector<Cut>& cuts, double eps, ResolveScratch& scratch) {
+  const std::vector<Vec2>& vertices = scratch.vertices;
+  const auto [xs, ys] = columns<2>(scratch.coordinates, vertices.size());
+  for (std::size_t k = 0; k < vertices.size(); ++k) {
+    xs[k] = vertices[k].x;
+    ys[k] = vertices[k].y;
+  }
+  for (std::size_t k = 0; k < cuts.size(); ++k) {
+    Cut& c = cuts[k];
+    std::size_t near = 0;
+    for (std::size_t v = 0; v < vertices.size(); ++v)
+      near += static_cast<std::size_t>((std::fabs(xs[v] - c.p.x) <= eps) & (std::fabs(ys[v] - c.p.y) <= eps));
+    if (near == 0) {
+      scratch.loose.push_back({c.p, k});
+      continue;
+    }
+    double best = eps;
+    bool found = false;
+    Vec2 nearest{};
+    for (const Vec2 v : vertices) {
+      const double d = std::max(std::fabs(v.x - c.p.x), std::fabs(v.y - c.p.y));
+      if (d < best || (d == best && (!found || !by_x(v, nearest)))) {
+        best = d;
+        nearest = v;
+        found = true;
+      }
+    }
+    c.p = nearest;
+  }
+  snap_loose(cuts, scratch, [&](Vec2 p, Vec2& out) {
+    double best = eps;
+    bool found = false;
+    for (const Vec2 r : scratch.representatives) {
+      const double d = std::max(std::fabs(r.x - p.x), std::fabs(r.y - p.y));
+      if (d <= best) {
+        best = d;
+        out = r;
+        found = true;
+      }
+    }
+    return found;
+  });
+}
+
+// The nearest point of a list sorted by x within eps (Chebyshev) of p.
+bool nearest_sorted(const std::vector<Vec2>& sorted, Vec2 p, double eps, Vec2& out) {
+  auto it = std::lower_bound(sorted.begin(), sorted.end(), p.x - eps, [](Vec2 v, double x) { return v.x < x; });
+  double best = eps;
+  bool found = false;
+  for (; it != sorted.end() && it->x <= p.x + eps; ++it) {
+    const double d = std::max(std::fabs(it->x - p.x), std::fabs(it->y - p.y));
+    if (d <= best) {
+      best = d;
+      out = *it;
+      found = true;
+    }
+  }
+  return found;
+}
+
+// Many cuts: the vertices sorted by x, each cut looked up there. First onto
+// existing vertices (all of them, whatever the order of discovery), then the
+// remaining cut points onto each other.
+void snap_many_cuts(std::vector<Cut>& cuts, double eps, ResolveScratch& scratch) {
+  std::vector<Vec2>& vertices = scratch.vertices;
+  std::sort(vertices.begin(), vertices.end(), by_x);
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  for (std::size_t k = 0; k < cuts.size(); ++k) {
+    Vec2 v;
+    if (nearest_sorted(vertices, cuts[k].p, eps, v)) {
+      cuts[k].p = v;
+    } else {
+      scratch.loose.push_back({cuts[k].p, k});
+    }
+  }
+  snap_loose(cuts, scratch, [&](Vec2 p, Vec2& out) { return nearest_sorted(scratch.representatives, p, eps, out); });
+}
+
 // Crossing points computed from different pairs of lines through one point
 // differ in their last bits; left apart they make slivers and zero-length
 // loops. Cut points closer than the merge distance to an end point of any
@@ -229,107 +338,12 @@ void snap_cuts(const std::vector<Edge>& edges, std::vector<Cut>& cuts, ResolveSc
   const double largest =
       std::max({std::fabs(all.min.x), std::fabs(all.min.y), std::fabs(all.max.x), std::fabs(all.max.y)});
   const double eps = tolerance::kMergeDistanceRelative * std::max(extent, largest);
-  auto by_x = [](Vec2 a, Vec2 b) { return a.x != b.x ? a.x < b.x : a.y < b.y; };
-  using Loose = ResolveScratch::LooseCut;
-  std::vector<Loose>& loose = scratch.loose;
-  loose.clear();
-  // The loose cut points (near no vertex) onto each other, in (x, y) order:
-  // each becomes the nearest earlier representative within eps (the last in
-  // that order among equally near ones), or a representative itself. (Only
-  // equal points compare equal here, and they snap alike: the result does
-  // not depend on the order of the cuts.) The representatives come in x
-  // order because the loose points do.
-  std::vector<Vec2>& reps = scratch.representatives;
-  auto snap_loose = [&](auto&& nearest_rep) {
-    std::sort(loose.begin(), loose.end(), [&](const Loose& a, const Loose& b) { return by_x(a.p, b.p); });
-    reps.clear();
-    for (const Loose& l : loose) {
-      Vec2 r;
-      if (nearest_rep(l.p, r)) {
-        cuts[l.cut].p = r;
-      } else {
-        reps.push_back(l.p);
-      }
-    }
-  };
-  // With few cuts (the usual resolve), each looks for its vertex by scanning
-  // them as they are, which costs less than sorting them: the same vertex as
-  // below (the nearest within eps, Chebyshev; the last in (x, y) order among
-  // equally near ones). Most cut points are crossings near no vertex: a
-  // branch-free count of the vertices within eps finds those first. The
-  // loose ones then meet each other in a scan too.
+  scratch.loose.clear();
   if (cuts.size() <= 16) {
-    std::vector<double>& coordinates = scratch.coordinates;
-    const auto [xs, ys] = columns<2>(coordinates, vertices.size());
-    for (std::size_t k = 0; k < vertices.size(); ++k) {
-      xs[k] = vertices[k].x;
-      ys[k] = vertices[k].y;
-    }
-    for (std::size_t k = 0; k < cuts.size(); ++k) {
-      Cut& c = cuts[k];
-      std::size_t near = 0;
-      for (std::size_t v = 0; v < vertices.size(); ++v)
-        near += static_cast<std::size_t>((std::fabs(xs[v] - c.p.x) <= eps) & (std::fabs(ys[v] - c.p.y) <= eps));
-      if (near == 0) {
-        loose.push_back({c.p, k});
-        continue;
-      }
-      double best = eps;
-      bool found = false;
-      Vec2 nearest{};
-      for (const Vec2 v : vertices) {
-        const double d = std::max(std::fabs(v.x - c.p.x), std::fabs(v.y - c.p.y));
-        if (d < best || (d == best && (!found || !by_x(v, nearest)))) {
-          best = d;
-          nearest = v;
-          found = true;
-        }
-      }
-      c.p = nearest;
-    }
-    snap_loose([&](Vec2 p, Vec2& out) {
-      double best = eps;
-      bool found = false;
-      for (const Vec2 r : reps) {
-        const double d = std::max(std::fabs(r.x - p.x), std::fabs(r.y - p.y));
-        if (d <= best) {
-          best = d;
-          out = r;
-          found = true;
-        }
-      }
-      return found;
-    });
-    return;
+    snap_few_cuts(cuts, eps, scratch);
+  } else {
+    snap_many_cuts(cuts, eps, scratch);
   }
-  std::sort(vertices.begin(), vertices.end(), by_x);
-  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-  // The nearest point of a list sorted by x within eps (Chebyshev) of p.
-  auto nearest = [eps](const std::vector<Vec2>& sorted, Vec2 p, Vec2& out) {
-    auto it = std::lower_bound(sorted.begin(), sorted.end(), p.x - eps, [](Vec2 v, double x) { return v.x < x; });
-    double best = eps;
-    bool found = false;
-    for (; it != sorted.end() && it->x <= p.x + eps; ++it) {
-      const double d = std::max(std::fabs(it->x - p.x), std::fabs(it->y - p.y));
-      if (d <= best) {
-        best = d;
-        out = *it;
-        found = true;
-      }
-    }
-    return found;
-  };
-  // First onto existing vertices (all of them, whatever the order of
-  // discovery), then the remaining cut points onto each other.
-  for (std::size_t k = 0; k < cuts.size(); ++k) {
-    Vec2 v;
-    if (nearest(vertices, cuts[k].p, v)) {
-      cuts[k].p = v;
-    } else {
-      loose.push_back({cuts[k].p, k});
-    }
-  }
-  snap_loose([&](Vec2 p, Vec2& out) { return nearest(reps, p, out); });
 }
 
 // The cut points two lines i and j (not the same segment) make on each
@@ -554,6 +568,8 @@ void SideWindings::run() {
       }
     }
   }
+  // Every edge got its windings, by a ray or passed on.
+  CURVETEXT_ASSERT(std::all_of(s_.done.begin(), s_.done.end(), [](char d) { return d != 0; }));
 }
 
 // The chains: a position held by exactly two ends of two different edges
@@ -1032,6 +1048,7 @@ void CrossingResolver::number_vertices() {
   // (Filling moved each vertex's first to its end: shift back.)
   for (std::size_t v = vertices; v > 0; --v) out_first[v] = out_first[v - 1];
   out_first[0] = 0;
+  CURVETEXT_ASSERT(out_first[vertices] == kept_count);  // every kept edge leaves one vertex
 }
 
 // At v, coming along u -> v: the next edge is the first outgoing one

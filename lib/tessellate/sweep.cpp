@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/assert.hpp"
 #include "tessellate/positions.hpp"
 #include "tessellate/predicates.hpp"
 #include "tessellate/triangulate.hpp"

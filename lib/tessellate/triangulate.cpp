@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/assert.hpp"
 #include "tessellate/predicates.hpp"
 #include "tessellate/rings.hpp"
 
@@ -547,6 +548,7 @@ bool EarClipper::run() {
   std::size_t cur = start;
   std::size_t stall = 0;
   while (remaining_ > 3) {
+    CURVETEXT_ASSERT(prev_[next_[cur]] == cur && next_[prev_[cur]] == cur);  // cur is still linked
     const std::size_t a = prev_[cur], c = next_[cur];
     if (is_ear(a, cur, c)) {
       triangles_.push_back({loop_[a], loop_[cur], loop_[c]});
@@ -581,8 +583,13 @@ bool ear_clip(const std::vector<Vec2>& loop, std::vector<std::array<Vec2, 3>>& t
   return EarClipper(loop, triangles, scratch, max_visits).run();
 }
 
-void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std::uint32_t, 3>>& triangles,
-                    const std::vector<EdgeKey>& constrained, TriangulateScratch& scratch) {
+namespace {
+
+// The flips' edge table: every edge of the triangles with the faces on its
+// sides, the shared ones stacked as candidates (in triangle order), the
+// constrained ones marked fixed.
+void index_edges(const std::vector<std::array<std::uint32_t, 3>>& triangles, const std::vector<EdgeKey>& constrained,
+                 TriangulateScratch& scratch) {
   EdgeTable& edges = scratch.edges;
   std::vector<EdgeKey>& stack = scratch.flip_stack;
   edges.reset(3 * triangles.size());
@@ -612,6 +619,16 @@ void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std:
       missing.push_back(key);
     }
   }
+}
+
+}  // namespace
+
+void delaunay_flips(const std::vector<Vec2>& points, std::vector<std::array<std::uint32_t, 3>>& triangles,
+                    const std::vector<EdgeKey>& constrained, TriangulateScratch& scratch) {
+  index_edges(triangles, constrained, scratch);
+  EdgeTable& edges = scratch.edges;
+  std::vector<EdgeKey>& stack = scratch.flip_stack;
+  const std::vector<EdgeKey>& missing = scratch.missing;
   // Lawson's algorithm terminates with exact predicates; ours are not exact
   // (incircle_sign falls back to long double near zero), so the flip count is capped to guarantee an end.
   std::size_t flips_left = 16 * triangles.size() + 64;

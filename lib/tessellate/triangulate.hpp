@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/assert.hpp"
 #include "curvetext/geometry.hpp"
 #include "tessellate/positions.hpp"
 
@@ -82,6 +83,7 @@ class LiveEdges {
   void erase(std::uint32_t p) {
     const std::uint32_t k = slot_[p];
     if (k == kNone) return;
+    CURVETEXT_ASSERT(entries_[k].p == p);  // slot_ and entries_ name each other
     entries_[k] = entries_.back();
     slot_[entries_[k].p] = k;
     entries_.pop_back();
