@@ -536,13 +536,17 @@ void Build::flip() {
 void build_checked_mesh(Scratch& scratch, const Outline& outline, const MeshOptions& options, double largest,
                         Mesh& mesh) {
   const double merge_distance = tolerance::kMergeDistanceRelative * largest;
+  // (A first build that finds a ring through a vertex twice where it matters
+  // builds again with the split: Build::run.)
   Build first(scratch, options, merge_distance, RepeatedVertices::Keep, mesh);
-  bool needs_check = first.needs_check();
+  bool needs_check = false;
   if (first.run(outline)) {
     needs_check = first.needs_check();
   } else {
     Build again(scratch, options, merge_distance, RepeatedVertices::Split, mesh);
-    again.run(outline);
+    const bool built = again.run(outline);
+    CURVETEXT_ASSERT(built);  // (with the split it always builds)
+    static_cast<void>(built);
     needs_check = again.needs_check();
   }
   if (!needs_check) return;
