@@ -44,6 +44,8 @@ constexpr int kNone = -1;
 // next vertex in the interval connects to the merge vertex, which is the top
 // of both stacks.
 using Interval = SweepScratch::Interval;
+// The chain of a monotone polygon a vertex joins.
+enum class Chain { Left, Right };
 static_assert(SweepScratch::kNoPolygon == kNone);
 
 class Sweep {
@@ -112,7 +114,8 @@ class Sweep {
   }
 
   // Vertex v joins the polygon's left (or right) chain.
-  void add(int poly, std::uint32_t v, bool right) {
+  void add(int poly, std::uint32_t v, Chain chain) {
+    const bool right = chain == Chain::Right;
     std::vector<std::uint32_t>& st = stacks_[static_cast<std::size_t>(poly)];
     const std::uint32_t entry = v | (right ? kRightSide : 0u);
     if (((st.back() & kRightSide) != 0) != right) {
@@ -213,8 +216,8 @@ void Sweep::split(std::uint32_t v, std::uint32_t u) {
   right_part.left = u;
   right_part.right = iv.right;
   if (iv.merged) {
-    add(iv.poly[0], v, true);
-    add(iv.poly[1], v, false);
+    add(iv.poly[0], v, Chain::Right);
+    add(iv.poly[1], v, Chain::Left);
     left_part.poly[0] = iv.poly[0];
     right_part.poly[0] = iv.poly[1];
   } else {
@@ -223,15 +226,15 @@ void Sweep::split(std::uint32_t v, std::uint32_t u) {
     const std::uint32_t helper = st.back();
     if (helper & kRightSide) {
       // The reflex chain is on the right: it stays with the left part.
-      add(poly, v, true);
+      add(poly, v, Chain::Right);
       left_part.poly[0] = poly;
       right_part.poly[0] = new_poly(helper);
-      add(right_part.poly[0], v, false);
+      add(right_part.poly[0], v, Chain::Left);
     } else {
-      add(poly, v, false);
+      add(poly, v, Chain::Left);
       right_part.poly[0] = poly;
       left_part.poly[0] = new_poly(helper);
-      add(left_part.poly[0], v, true);
+      add(left_part.poly[0], v, Chain::Right);
     }
   }
   iv = left_part;
@@ -265,17 +268,17 @@ void Sweep::merge(std::uint32_t v, std::uint32_t u) {
   int left_poly, right_poly;
   if (a.merged) {
     close(a.poly[1], v);
-    add(a.poly[0], v, true);
+    add(a.poly[0], v, Chain::Right);
   } else {
-    add(a.poly[0], v, true);
+    add(a.poly[0], v, Chain::Right);
   }
   left_poly = a.poly[0];
   if (b.merged) {
     close(b.poly[0], v);
-    add(b.poly[1], v, false);
+    add(b.poly[1], v, Chain::Left);
     right_poly = b.poly[1];
   } else {
-    add(b.poly[0], v, false);
+    add(b.poly[0], v, Chain::Left);
     right_poly = b.poly[0];
   }
   a.right = b.right;
@@ -299,7 +302,7 @@ void Sweep::regular_left(std::uint32_t v, std::uint32_t u) {
     iv.poly[1] = kNone;
     iv.merged = false;
   }
-  add(iv.poly[0], v, false);
+  add(iv.poly[0], v, Chain::Left);
   iv.left = u;
 }
 
@@ -316,7 +319,7 @@ void Sweep::regular_right(std::uint32_t v, std::uint32_t u) {
     iv.poly[1] = kNone;
     iv.merged = false;
   }
-  add(iv.poly[0], v, true);
+  add(iv.poly[0], v, Chain::Right);
   iv.right = v;
 }
 
