@@ -1,5 +1,5 @@
 // Drawing speed and size, side by side with the incumbents in one run and one
-// GL context (DESIGN.md section 7). The scene is one text block of 40 lines of
+// GL context (docs/design.md section 7). The scene is one text block of 40 lines of
 // at most 50 characters (word wrapped English, DejaVu Sans) in a 1920x1080
 // framebuffer, drawn by curvetext in every antialiasing mode and by two atlas
 // renderers written the way apps write them:

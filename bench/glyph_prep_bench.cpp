@@ -1,4 +1,4 @@
-// Glyph preparation, side by side with the incumbent in one run (DESIGN.md
+// Glyph preparation, side by side with the incumbent in one run (docs/design.md
 // section 7): curvetext loads a glyph's outline and builds its GPU-ready mesh
 // (size independent, once per glyph); an atlas renderer loads the glyph with
 // FreeType and renders a 32 px AA bitmap (once per glyph *and size*).
@@ -144,6 +144,7 @@ PrepResult measure(const FontCase& fc, const std::vector<unsigned>& glyphs, int 
   double triangles = 0, bytes = 0;
   curvetext::Outline outline;  // reused, as GlyphCache reuses its scratch outline
   curvetext::Mesh mesh;        // and mesh
+  curvetext::gpu::PackScratch pack_scratch;
   const std::size_t n = glyphs.size();
   // (Only filled with CURVETEXT_STAGE_TIMING: ticks per glyph and stage.)
   std::vector<double> stage_ticks(detail::kStageTiming ? n * kStageColumns : 0, 1e300);
@@ -168,7 +169,7 @@ PrepResult measure(const FontCase& fc, const std::vector<unsigned>& glyphs, int 
       curvetext::build_mesh(outline, {tolerance}, mesh);
       s2 = stage_tick();
       curvetext::gpu::PackedMesh packed;  // new, as the cache stores each glyph's own
-      curvetext::gpu::pack_mesh(mesh, packed);
+      curvetext::gpu::pack_mesh(mesh, packed, pack_scratch);
       benchmark::DoNotOptimize(packed.vertices.data());
       benchmark::DoNotOptimize(packed.indices.data());
       packed_bytes = packed.gpu_bytes();
@@ -299,12 +300,13 @@ void BM_CurvetextMesh(benchmark::State& state, const FontCase* fc) {
   const double tolerance = curvetext::cubic_tolerance_for_lod(curvetext::lod_for_scale(32.0 / upem, upem), upem);
   curvetext::Outline outline;
   curvetext::Mesh mesh;
+  curvetext::gpu::PackScratch pack_scratch;
   std::size_t i = 0;
   for (auto _ : state) {
     font.glyph_outline(glyphs[i++ % glyphs.size()], outline);
     curvetext::build_mesh(outline, {tolerance}, mesh);
     curvetext::gpu::PackedMesh packed;
-    curvetext::gpu::pack_mesh(mesh, packed);
+    curvetext::gpu::pack_mesh(mesh, packed, pack_scratch);
     benchmark::DoNotOptimize(packed.vertices.data());
     benchmark::DoNotOptimize(packed.indices.data());
   }

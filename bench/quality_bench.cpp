@@ -1,4 +1,4 @@
-// Image quality against exact coverage (DESIGN.md section 6), for every
+// Image quality against exact coverage (docs/design.md section 6), for every
 // antialiasing mode and two glyph-atlas baselines implemented the way apps
 // do them:
 //   atlas-bitmap32: FreeType AA bitmaps rendered at 32 px (unhinted), drawn

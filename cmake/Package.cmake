@@ -29,8 +29,16 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/curvetextConfigVersion.cm
 install(FILES ${PROJECT_BINARY_DIR}/curvetextConfig.cmake ${PROJECT_BINARY_DIR}/curvetextConfigVersion.cmake
   DESTINATION ${curvetext_cmake_dir})
 
-# pkg-config: paths relative to ${prefix} where they lie under it, so the
-# installed tree can be moved.
+# pkg-config: the prefix relative to the .pc file's own folder
+# (${pcfiledir}, which pkg-config and pkgconf set), and the paths relative to
+# ${prefix} where they lie under it: right for `cmake --install --prefix`
+# elsewhere than the configured prefix, and after the installed tree is moved.
+if(IS_ABSOLUTE "${CMAKE_INSTALL_LIBDIR}")
+  set(CURVETEXT_PC_PREFIX "${CMAKE_INSTALL_PREFIX}")
+else()
+  file(RELATIVE_PATH pc_to_prefix "/prefix/${CMAKE_INSTALL_LIBDIR}/pkgconfig" "/prefix")
+  set(CURVETEXT_PC_PREFIX "\${pcfiledir}/${pc_to_prefix}")
+endif()
 foreach(kind LIBDIR INCLUDEDIR)
   if(IS_ABSOLUTE "${CMAKE_INSTALL_${kind}}")
     set(CURVETEXT_PC_${kind} "${CMAKE_INSTALL_${kind}}")

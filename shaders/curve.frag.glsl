@@ -1,5 +1,5 @@
 // Curve shader, fragment stage of the single-pass modes: the paper's section
-// 4, with the exact conic test of DESIGN.md section 3. Interior triangles are
+// 4, with the exact conic test of docs/design.md section 3. Interior triangles are
 // solid; curved triangles test (none) or antialias (curves) their arc.
 // Straight edges stay aliased. Full antialiasing is area.frag.glsl.
 #extension GL_OES_standard_derivatives : enable

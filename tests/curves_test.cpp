@@ -151,7 +151,7 @@ TEST(Outline, FiniteCheck) {
   EXPECT_TRUE(huge.is_finite());
 }
 
-// Barycentric implicit form of DESIGN.md section 3: zero on the conic.
+// Barycentric implicit form of docs/design.md section 3: zero on the conic.
 double implicit(const Segment& s, Vec2 p) {
   const Vec2 a = s.p[0], b = s.p[1], c = s.p[2];
   const double det = cross(b - a, c - a);

@@ -3,19 +3,28 @@
 // behind the application's quad is hidden, text in front of it is drawn,
 // a sloped depth plane hides it exactly where the plane passes behind, and
 // where nothing hides it the coverage is the exact coverage of its outline.
+// Text on a plane (Placement::on_plane) drawn after the plane shows (its
+// depth offset), HUD text can be drawn over near geometry (DepthTest::Off),
+// and a TextBlock takes the same Placement.
 #include <GLES3/gl3.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cctype>
 #include <cstdint>
 #include <cstdio>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "curvetext/font.hpp"
 #include "curvetext/headless.hpp"
+#include "curvetext/layout.hpp"
 #include "curvetext/renderer.hpp"
 #include "curvetext/shaping.hpp"
+#include "curvetext/text_block.hpp"
+#include "support/camera.hpp"
 #include "support/coverage.hpp"
 #include "support/fonts.hpp"
 #include "support/gpu.hpp"
@@ -35,8 +44,8 @@ bool desktop() {
 // The application: a framebuffer with a depth buffer, and a program drawing
 // a flat quad at a given normalized device z.
 struct Scene {
-  GLuint fbo = 0, color = 0, depth = 0, program = 0, vao = 0, vbo = 0;
-  GLint u_z = -1;
+  GLuint fbo = 0, color = 0, depth = 0, program = 0, plane_program = 0, vao = 0, vbo = 0;
+  GLint u_z = -1, u_mvp = -1;
 
   Scene() {
     glGenTextures(1, &color);
@@ -58,7 +67,24 @@ struct Scene {
                                "void main() { gl_Position = vec4(p, z, 1.0); }\n";
     const std::string fs = d ? "#version 330 core\nout vec4 c;\nvoid main() { c = vec4(0.5, 0.5, 0.5, 1.0); }\n"
                              : "#version 100\nvoid main() { gl_FragColor = vec4(0.5, 0.5, 0.5, 1.0); }\n";
-    program = glCreateProgram();
+    program = link(vs, fs);
+    u_z = glGetUniformLocation(program, "z");
+    // The plane z = 0 through a model-view-projection, as a 3D app draws it.
+    const std::string plane_vs = d ? "#version 330 core\nlayout(location = 0) in vec2 p;\nuniform mat4 mvp;\n"
+                                     "void main() { gl_Position = mvp * vec4(p, 0.0, 1.0); }\n"
+                                   : "#version 100\nattribute vec2 p;\nuniform mat4 mvp;\n"
+                                     "void main() { gl_Position = mvp * vec4(p, 0.0, 1.0); }\n";
+    plane_program = link(plane_vs, fs);
+    u_mvp = glGetUniformLocation(plane_program, "mvp");
+    if (d) {
+      glGenVertexArrays(1, &vao);
+      glBindVertexArray(vao);
+    }
+    glGenBuffers(1, &vbo);
+  }
+
+  static GLuint link(const std::string& vs, const std::string& fs) {
+    const GLuint program = glCreateProgram();
     for (const auto& [type, src] : {std::pair{GL_VERTEX_SHADER, vs}, std::pair{GL_FRAGMENT_SHADER, fs}}) {
       const GLuint s = glCreateShader(type);
       const char* p = src.c_str();
@@ -68,12 +94,7 @@ struct Scene {
     }
     glBindAttribLocation(program, 0, "p");
     glLinkProgram(program);
-    u_z = glGetUniformLocation(program, "z");
-    if (d) {
-      glGenVertexArrays(1, &vao);
-      glBindVertexArray(vao);
-    }
-    glGenBuffers(1, &vbo);
+    return program;
   }
 
   // White, depth 1 everywhere; the depth test on (GL_LESS, writes on).
@@ -94,6 +115,19 @@ struct Scene {
     const float v[12] = {-1, -1, cx, -1, cx, 1, -1, -1, cx, 1, -1, 1};
     glUseProgram(program);
     glUniform1f(u_z, z);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo);
+    glBufferData(GL_ARRAY_BUFFER, sizeof v, v, GL_STREAM_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glDrawArrays(GL_TRIANGLES, 0, 6);
+    glDisableVertexAttribArray(0);
+  }
+
+  // The grey square [-h, h]^2 of the plane z = 0 seen through `mvp`.
+  void plane(const std::array<float, 16>& mvp, float h) const {
+    const float v[12] = {-h, -h, h, -h, h, h, -h, -h, h, h, -h, h};
+    glUseProgram(plane_program);
+    glUniformMatrix4fv(u_mvp, 1, GL_FALSE, mvp.data());
     glBindBuffer(GL_ARRAY_BUFFER, vbo);
     glBufferData(GL_ARRAY_BUFFER, sizeof v, v, GL_STREAM_DRAW);
     glEnableVertexAttribArray(0);
@@ -210,6 +244,147 @@ TEST_P(Depth, TextIsHiddenBehindTheScenesGeometryAndExactElsewhere) {
     EXPECT_EQ(ink_right, 0) << mode << ": text behind the sloped plane's crossing showed";
     EXPECT_GT(ink_left, 150) << mode;
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR)) << mode;
+  }
+}
+
+// 1 - (the framebuffer with text) / (the same without): the text's coverage
+// over whatever the scene drew there (black text), from the red channel.
+test::Coverage coverage_over(const std::vector<std::uint8_t>& with_text, const std::vector<std::uint8_t>& scene) {
+  test::Coverage c(kW, kH);
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x)
+      c.at(x, y) = red(scene, x, y) == 0 ? 0.0f : 1.0f - static_cast<float>(red(with_text, x, y)) / red(scene, x, y);
+  return c;
+}
+
+// Text lying on a plane, drawn after the plane with the depth test GL_LESS:
+// its depth is the plane's own, so without a depth offset it z-fights (hidden
+// wherever its depth rounds to the plane's or behind it). With on_plane's
+// depth offset its coverage over the plane is the exact coverage of its
+// outline, and without it (the control) ink is missing.
+TEST_P(Depth, TextOnAPlaneDrawnAfterThePlaneShows) {
+  const bool gles2_run = test::expects_gles2();
+  if (gles2_run && GetParam() != ContextKind::Gles2) GTEST_SKIP() << "OpenGL ES 2.0 only in this run";
+  HeadlessContext context = HeadlessContext::create(GetParam());
+  const Font font = Font::open(test::kDejaVuSans);
+  GlyphCache cache;
+  Renderer renderer;
+  const Scene scene;
+  const std::array<float, 16> mvp = test::camera_mvp(static_cast<double>(kW) / kH);
+  const ShapedLine line = shape_line(font, "Plane");
+  const DrawBatch batch = DrawBatch::from_text(cache, font, line, 48.0);
+  const Placement at = Placement::on_plane(mvp.data(), kW, kH, 0.0008, -0.6, 0.1);
+  EXPECT_GT(at.depth_offset, Placement::kOnPlaneDepthOffset);  // plus the plane's slope over a pixel
+  Placement flat = at;
+  flat.transform = Transform{};
+  const test::Coverage exact = test::union_coverage(
+      test::transform_outline(test::place_outline(test::line_outline(font, line), flat), at.transform), kW, kH);
+  scene.clear();
+  scene.plane(mvp, 4.0f);
+  const std::vector<std::uint8_t> plane_only = scene.pixels();
+  for (AntiAliasing aa :
+       {AntiAliasing::None, AntiAliasing::Curves, AntiAliasing::Full, AntiAliasing::Vbaa, AntiAliasing::Msaa}) {
+    const std::string mode = std::string(context_kind_name(GetParam())) + "-" + std::to_string(static_cast<int>(aa));
+    const DrawOptions black(Color{0, 0, 0, 1}, aa);
+    scene.clear();
+    scene.plane(mvp, 4.0f);
+    renderer.draw(batch, at, black);
+    const test::Coverage got = coverage_over(scene.pixels(), plane_only);
+    const test::CoverageStats st = test::compare(got, exact);
+    std::printf("%s: text on the plane: ink %.4f, edge %.4f (%zu edge pixels)\n", mode.c_str(), st.ink_ratio,
+                st.edge_mean_abs, st.edge_pixels);
+    EXPECT_GT(st.edge_pixels, 100u) << mode;
+    // The grey under the text has 128 levels: coverage is known to 1/128.
+    const bool aliased = aa == AntiAliasing::Curves || aa == AntiAliasing::None;
+    test::expect_coverage("on-plane-" + mode, got, exact, st, std::max(edge_limit(aa), 0.01), aliased ? 0.1 : 0.03);
+
+    // The control: the plane's depth as it is, no offset.
+    Placement no_offset = at;
+    no_offset.depth_offset = 0.0;
+    scene.clear();
+    scene.plane(mvp, 4.0f);
+    renderer.draw(batch, no_offset, black);
+    const test::CoverageStats fighting = test::compare(coverage_over(scene.pixels(), plane_only), exact);
+    std::printf("%s: without the depth offset: ink %.4f\n", mode.c_str(), fighting.ink_ratio);
+    EXPECT_LT(fighting.ink_ratio, 0.8) << mode << ": the control drew the text without z-fighting";
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR)) << mode;
+  }
+}
+
+// HUD text while the application's depth test is on: at its default depth 0
+// (window depth 0.5) geometry nearer than that hides it; with
+// DepthTest::Off it is drawn over the geometry, at its exact coverage, and
+// the application's depth test is on again afterwards. A TextBlock takes the
+// same Placement, depth included.
+TEST_P(Depth, HudTextWithTheDepthTestOffIsDrawnOverNearGeometry) {
+  const bool gles2_run = test::expects_gles2();
+  if (gles2_run && GetParam() != ContextKind::Gles2) GTEST_SKIP() << "OpenGL ES 2.0 only in this run";
+  HeadlessContext context = HeadlessContext::create(GetParam());
+  const Font font = Font::open(test::kDejaVuSans);
+  GlyphCache cache;
+  Renderer renderer;
+  const Scene scene;
+  const ShapedLine line = shape_line(font, "HUD text");
+  const DrawBatch batch = DrawBatch::from_text(cache, font, line, kPx);
+  Placement hud(kPx / font.metrics().units_per_em, 8.25, 55.5);
+  const test::Coverage exact = test::union_coverage(test::place_outline(test::line_outline(font, line), hud), kW, kH);
+  constexpr int kHalf = kW / 2;
+  scene.clear();
+  scene.quad(kHalf, -0.9f);  // near geometry over the left half
+  const std::vector<std::uint8_t> scene_only = scene.pixels();
+  auto ink_left = [&](const std::vector<std::uint8_t>& px) {
+    int n = 0;
+    for (int y = 0; y < kH; ++y)
+      for (int x = 0; x < kHalf; ++x) n += red(px, x, y) != red(scene_only, x, y);
+    return n;
+  };
+  for (AntiAliasing aa : {AntiAliasing::Curves, AntiAliasing::Full, AntiAliasing::Msaa}) {
+    const std::string mode = std::string(context_kind_name(GetParam())) + "-" + std::to_string(static_cast<int>(aa));
+    const DrawOptions black(Color{0, 0, 0, 1}, aa);
+    hud.depth_test = DepthTest::Application;
+    scene.clear();
+    scene.quad(kHalf, -0.9f);
+    renderer.draw(batch, hud, black);
+    EXPECT_EQ(ink_left(scene.pixels()), 0) << mode << ": the app's depth test let HUD text at depth 0 through";
+
+    hud.depth_test = DepthTest::Off;
+    scene.clear();
+    scene.quad(kHalf, -0.9f);
+    renderer.draw(batch, hud, black);
+    EXPECT_TRUE(glIsEnabled(GL_DEPTH_TEST)) << mode;
+    const test::Coverage got = coverage_over(scene.pixels(), scene_only);
+    const test::CoverageStats st = test::compare(got, exact);
+    const bool aliased = aa == AntiAliasing::Curves;
+    test::expect_coverage("hud-over-" + mode, got, exact, st, std::max(edge_limit(aa), 0.01), aliased ? 0.1 : 0.03);
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR)) << mode;
+  }
+
+  // A paragraph's TextBlock: behind the quad, in front of it, and over it.
+  FontCollection fonts;
+  ParagraphStyle style;
+  style.default_style.fonts = {test::kDejaVuSans};
+  style.default_style.size_px = kPx;
+  const Paragraph paragraph = Paragraph::layout(fonts, "Block text", {}, style);
+  const TextBlock block = TextBlock::from_paragraph(cache, paragraph);
+  Placement at(1.0, 8.25, 10.5);
+  const DrawOptions full(Color{0, 0, 0, 1}, AntiAliasing::Full);
+  for (const auto& [z, test_mode, drawn_left] :
+       {std::tuple{0.5, DepthTest::Application, false}, std::tuple{-0.95, DepthTest::Application, true},
+        std::tuple{0.5, DepthTest::Off, true}}) {
+    at.depth = {0.0, 0.0, z};
+    at.depth_test = test_mode;
+    scene.clear();
+    scene.quad(kHalf, -0.9f);
+    block.draw(renderer, at, full);
+    const std::vector<std::uint8_t> px = scene.pixels();
+    int ink_right = 0;
+    for (int y = 0; y < kH; ++y)
+      for (int x = kHalf; x < kW; ++x) ink_right += red(px, x, y) < 128;
+    EXPECT_GT(ink_right, 100) << "text block at z " << z;
+    if (drawn_left)
+      EXPECT_GT(ink_left(px), 150) << "text block at z " << z;
+    else
+      EXPECT_EQ(ink_left(px), 0) << "text block at z " << z;
   }
 }
 

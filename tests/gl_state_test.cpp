@@ -1,4 +1,4 @@
-// The library is a guest in the application's GL context (DESIGN.md section
+// The library is a guest in the application's GL context (docs/design.md section
 // 5): in every context kind and every antialiasing mode, a draw leaves the
 // application's GL state as it found it, draws into the application's
 // framebuffer within its viewport and scissor, and does not take an error the
@@ -309,6 +309,46 @@ TEST_P(GlState, EveryModeLeavesTheApplicationsStateAndDrawsInItsViewport) {
     }
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
     expect_same(before, State::read(), "after the pending-error block");
+  }
+}
+
+// An application may delete its program while it is current (GL keeps it
+// until another program is made current). curvetext's draw makes its own
+// current, so the application's is gone afterwards: binding its name again
+// would be GL_INVALID_VALUE (or bind another program that reused the name).
+// The draw leaves no program current and no error; a live program is put back.
+TEST_P(GlState, AProgramDeletedWhileCurrentIsNotBoundAgain) {
+  const bool gles2_run = test::expects_gles2();
+  if (gles2_run && GetParam() != ContextKind::Gles2) GTEST_SKIP() << "OpenGL ES 2.0 only in this run";
+  HeadlessContext context = HeadlessContext::create(GetParam());
+  {
+    const Font font = Font::open(test::kDejaVuSans);
+    GlyphCache cache;
+    Renderer renderer;
+    AppState app;
+    const ShapedLine line = shape_line(font, "Gone");
+    const DrawBatch batch = DrawBatch::from_text(cache, font, line, 48.0);
+    const Placement at(48.0 / font.metrics().units_per_em, 16.0, 100.0);
+    const std::string kind = context_kind_name(GetParam());
+    for (AntiAliasing aa : {AntiAliasing::Curves, AntiAliasing::Full}) {
+      const GLuint program = compile_app_program();
+      glUseProgram(program);
+      glDeleteProgram(program);  // flagged for deletion, still current
+      ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+      renderer.draw(batch, at, DrawOptions(Color{0, 0, 0, 1}, aa));
+      EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR)) << kind << " mode " << static_cast<int>(aa);
+      GLint current = -1;
+      glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+      EXPECT_EQ(current, 0) << kind << " mode " << static_cast<int>(aa);
+      EXPECT_FALSE(glIsProgram(program)) << kind;
+    }
+    // A program that still exists is current again after the draw.
+    glUseProgram(app.program);
+    renderer.draw(batch, at, DrawOptions{});
+    GLint current = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+    EXPECT_EQ(current, static_cast<GLint>(app.program)) << kind;
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR)) << kind;
   }
 }
 

@@ -281,7 +281,7 @@ TEST(Coverage, ConicExactAndPaper) {
       EXPECT_LE(between.max_error, 3.0 / 255.0);
       EXPECT_NEAR(paper.mean_edge, exact.mean_edge, 0.005);
     } else {
-      // Equation 2 draws a different curve for w != 1 (DESIGN.md section 3).
+      // Equation 2 draws a different curve for w != 1 (docs/design.md section 3).
       EXPECT_GT(between.max_error, 0.2);
       EXPECT_GT(paper.mean_edge, 2.0 * exact.mean_edge);
     }

@@ -1,7 +1,7 @@
 // Laid-out paragraphs drawn through the renderer (render_paragraph_image:
 // glyph meshes, GLES2 curve shader on llvmpipe) against the exact area
 // coverage of the union of the same glyph outlines placed where the layout
-// says (DESIGN.md section 6). This checks what the other layout tests cannot:
+// says (docs/design.md section 6). This checks what the other layout tests cannot:
 // that every line, run, font and alignment shift reaches the pixels. Failing
 // cases write result, reference and diff images to build/test-output.
 #include <GLES2/gl2.h>
@@ -378,6 +378,95 @@ TEST(TextBlockDraw, ParagraphInTheAppsViewportMatchesTheImagePath) {
       red_pixels += image.rgba[i] > 150 && image.rgba[i + 1] < 100 && image.rgba[i + 2] < 100;
     EXPECT_GT(red_pixels, 20) << "mode " << static_cast<int>(aa);
   }
+}
+
+// TextBlock::draw with a Placement: the block scaled, moved and rotated (a
+// projective transform too) lands where the exact coverage of its glyph
+// outlines under the same map says; the old call form (x, y, transform) is
+// that Placement with scale 1.
+TEST(TextBlockDraw, PlacementScalesAndTransformsTheBlock) {
+  FontCollection fonts;
+  ParagraphStyle style;
+  style.default_style.fonts = {test::kDejaVuSans};
+  style.default_style.size_px = 16;
+  style.width = 150;
+  const Paragraph p = Paragraph::layout(fonts, "A paragraph placed, scaled and turned.", {}, style);
+  const double scale = 1.75;
+  const TextBlock block = TextBlock::from_paragraph(gpu().cache, p, scale);
+  const int W = 360, H = 220;
+  const Transform turned = Transform::rotation(12.0).about({180.0, 110.0});
+  const Transform tilted = Transform::perspective(25.0, 600.0).about({180.0, 40.0});
+  for (const Transform& transform : {turned, tilted}) {
+    Placement at(scale, 30.0, 24.5, transform);
+    gpu().target.begin(W, H, Color{1, 1, 1, 1});
+    block.draw(gpu().renderer, at, DrawOptions(Color{}, AntiAliasing::Full));
+    const test::Coverage got = test::coverage_from_black_on_white(gpu().target.read_pixels());
+    // Layout pixels (y down from the box's top-left) -> framebuffer pixels.
+    const Transform layout_to_pixels = transform * Transform{{scale, 0, 30.0, 0, scale, 24.5, 0, 0, 1}};
+    const test::Coverage want =
+        test::union_coverage(test::transform_outline(paragraph_outline(p, 0.0), layout_to_pixels), W, H);
+    const test::CoverageStats st = test::compare(got, want);
+    std::printf("text block placed: edge %.4f, ink %.4f (%zu edge pixels)\n", st.edge_mean_abs, st.ink_ratio,
+                st.edge_pixels);
+    EXPECT_GT(st.edge_pixels, 500u);
+    test::expect_coverage(transform.is_affine() ? "block-placed-turned" : "block-placed-tilted", got, want, st,
+                          kEdgeMeanLimit, kInkLimit);
+  }
+  // The old call form is Placement(1, x, y, transform).
+  gpu().target.begin(W, H, Color{1, 1, 1, 1});
+  block.draw(gpu().renderer, 30.0, 24.5, DrawOptions{}, turned);
+  const Image old_form = gpu().target.read_pixels();
+  gpu().target.begin(W, H, Color{1, 1, 1, 1});
+  block.draw(gpu().renderer, Placement(1.0, 30.0, 24.5, turned), DrawOptions{});
+  EXPECT_EQ(old_form.rgba, gpu().target.read_pixels().rgba);
+}
+
+// BlockColors::FromOptions draws every run (a red one, an underlined one) in
+// DrawOptions::color and no background: over white, blue text leaves the
+// blue channel white and the red channel at the exact coverage of all the
+// glyphs and bars. The styles' colours (the control) draw red and the
+// background.
+TEST(TextBlockDraw, ColourOverrideDrawsEveryRunInTheOptionsColour) {
+  FontCollection fonts;
+  ParagraphStyle style;
+  style.default_style.fonts = {test::kDejaVuSans};
+  style.default_style.size_px = 20;
+  style.width = 260;
+  TextStyle red = style.default_style, boxed = style.default_style;
+  red.color = Color{0.9f, 0.05f, 0.05f, 1.0f};
+  boxed.background = Color{0.2f, 0.8f, 0.2f, 1.0f};
+  const std::string text = "Colours overridden: red, boxed, plain.";
+  const Paragraph p = Paragraph::layout(fonts, text, {TextSpan{20, 23, red}, TextSpan{25, 30, boxed}}, style);
+  const TextBlock block = TextBlock::from_paragraph(gpu().cache, p);
+  const int W = 300, H = 60;
+  const Color blue{0.0f, 0.0f, 1.0f, 1.0f};
+  gpu().target.begin(W, H, Color{1, 1, 1, 1});
+  block.draw(gpu().renderer, Placement(1.0, 10.0, 10.0), DrawOptions(blue), BlockColors::FromOptions);
+  const Image image = gpu().target.read_pixels();
+  test::Coverage got(W, H);
+  int not_blue = 0;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const std::uint8_t* px = image.pixel(x, y);
+      got.at(x, y) = 1.0f - px[0] / 255.0f;
+      not_blue += px[2] != 255 || std::abs(px[0] - px[1]) > 1;
+    }
+  EXPECT_EQ(not_blue, 0) << "pixels in another colour than the options' blue";
+  const test::Coverage want = test::union_coverage(paragraph_outline(p, 10.0), W, H);
+  const test::CoverageStats st = test::compare(got, want);
+  test::expect_coverage("block-colour-override", got, want, st, kEdgeMeanLimit, kInkLimit);
+
+  // The control: the styles' colours, the background included.
+  gpu().target.begin(W, H, Color{1, 1, 1, 1});
+  block.draw(gpu().renderer, Placement(1.0, 10.0, 10.0), DrawOptions(blue));
+  const Image styled = gpu().target.read_pixels();
+  int red_pixels = 0, green_pixels = 0;
+  for (std::size_t i = 0; i < styled.rgba.size(); i += 4) {
+    red_pixels += styled.rgba[i] > 150 && styled.rgba[i + 1] < 100 && styled.rgba[i + 2] < 100;
+    green_pixels += styled.rgba[i] < 100 && styled.rgba[i + 1] > 150 && styled.rgba[i + 2] < 100;
+  }
+  EXPECT_GT(red_pixels, 20);
+  EXPECT_GT(green_pixels, 100);
 }
 
 // Underline and strikethrough end at a line's last visible glyph: the

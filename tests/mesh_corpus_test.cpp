@@ -1,7 +1,7 @@
 // Every glyph of real fonts through build_mesh + check_mesh: DejaVu Sans,
 // Noto Sans, Nimbus Roman and the Inter variable font at three weights (whose
 // glyphs overlap their own contours all the time). Every glyph, crossing or
-// not, must pass all the invariants of DESIGN.md section 4; the classifier
+// not, must pass all the invariants of docs/design.md section 4; the classifier
 // below only reports how many glyphs have crossing contours.
 #include <gtest/gtest.h>
 

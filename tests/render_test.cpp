@@ -1,6 +1,6 @@
 // Rendering through the whole pipeline (shaping -> glyph meshes -> GLES2 curve
 // shader on llvmpipe -> pixels), compared with exact area coverage of the same
-// outlines from FreeType's AA rasterizer, supersampled (DESIGN.md section 6).
+// outlines from FreeType's AA rasterizer, supersampled (docs/design.md section 6).
 // Failing cases write result, reference and diff images to build/test-output.
 #include <GLES2/gl2.h>
 #include <gtest/gtest.h>
@@ -22,7 +22,7 @@
 #include "curvetext/mesh.hpp"
 #include "curvetext/renderer.hpp"
 #include "curvetext/text_image.hpp"
-#include "curvetext/tolerances.hpp"
+#include "core/tolerances.hpp"
 #include "support/coverage.hpp"
 #include "support/fonts.hpp"
 #include "support/gpu.hpp"
@@ -149,7 +149,7 @@ TEST(NoAntialiasing, BinaryPixelsWithRightInk) {
   }
 }
 
-// --- Geometry contract (DESIGN.md section 6) ------------------------------------
+// --- Geometry contract (docs/design.md section 6) ------------------------------------
 
 TEST(GeometryContract, ImageSizeAndPenFollowHarfBuzzAtThePixelSize) {
   const double size = 24;
@@ -654,7 +654,7 @@ TEST(Circle, PaperModeIsOffByPercentOfTheRadius) {
   const test::Coverage cov = draw_circle(r, CurveMode::Paper, cx, cy, 864);
   const double offset = max_radial_offset(cov, cx, cy, r);
   // Recorded, not hidden: equation 2 of the paper is exact only for w = 1
-  // (DESIGN.md section 3 predicts up to 2.1% of the radius, ~8 px here).
+  // (docs/design.md section 3 predicts up to 2.1% of the radius, ~8 px here).
   std::printf("circle r=400 paper mode: largest radial offset %.3f px (%.2f%% of r)\n", offset, 100 * offset / r);
   RecordProperty("paper_mode_radial_offset_px", std::to_string(offset));
   EXPECT_GT(offset, 1.0);

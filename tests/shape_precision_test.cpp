@@ -6,7 +6,7 @@
 // the apex. Drawn at 1x and through a 20x zoom window on a flank, every
 // antialiasing mode that computes area (full, vbaa) matches the exact
 // coverage of the region between the chord and the arc, by the conic's
-// implicit form tau1^2 < 4 w^2 tau0 tau2 (DESIGN.md section 3) sampled
+// implicit form tau1^2 < 4 w^2 tau0 tau2 (docs/design.md section 3) sampled
 // 32 x 32 per pixel.
 #include <gtest/gtest.h>
 

@@ -33,7 +33,7 @@ const std::string kFixtures = std::string(CURVETEXT_SOURCE_DIR) + "/tests/fixtur
 // Exact conversions (knot insertion, arcs) agree with direct evaluation to
 // rounding: relative to the shape's size.
 constexpr double kExactRelative = 1e-9;
-// DESIGN.md section 3: the drawn outline within 1/16 px of the true one.
+// docs/design.md section 3: the drawn outline within 1/16 px of the true one.
 constexpr double kBoundPx = tolerance::kCubicApproximationPx;
 // Dense polylines stand in for curves in the Hausdorff measurement; their
 // chords are at most this far (px) from the curves they sample.
@@ -146,7 +146,7 @@ TEST(ShapeJson, BadInputGivesClearErrors) {
   }
 }
 
-// DESIGN.md section 3: a rational quadratic with middle weight 0 (end weights
+// docs/design.md section 3: a rational quadratic with middle weight 0 (end weights
 // > 0) is its chord: the reader keeps it as a line, in a bezier and in a
 // NURBS piece whose middle control point has weight 0.
 TEST(ShapeJson, ZeroMiddleWeightIsTheChord) {

@@ -1,5 +1,5 @@
 // Tessellator: meshes of synthetic outlines checked against the invariants of
-// DESIGN.md section 4 and against areas computed independently here.
+// docs/design.md section 4 and against areas computed independently here.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -158,7 +158,8 @@ TEST(UnionCoverage, FreeTypeOverCoversWhereContoursOverlapAndThisDoesNot) {
     for (Segment& s : k.segments)
       for (Vec2& p : s.p) p.y = 14.0 - p.y;
   const test::Coverage ft = test::freetype_reference(up, Placement{1.0, 0.0, 14.0}, 14, 14, 1);
-  EXPECT_GT(ft.at(10, 5), 0.75) << "FreeType no longer sums overlapping contours; the note in DESIGN.md 6 is stale";
+  EXPECT_GT(ft.at(10, 5), 0.75)
+      << "FreeType no longer sums overlapping contours; the note in docs/design.md section 6 is stale";
 }
 
 TEST(UnionCoverage, SelfIntersectingStarFillsItsCentre) {

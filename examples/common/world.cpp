@@ -51,13 +51,12 @@ WorldLabel world_label(std::shared_ptr<const curvetext::Font> font) {
 }
 
 curvetext::Placement label_placement(const WorldLabel& label, const glm::mat4& view_projection, int width, int height) {
-  curvetext::Placement p = label.text.placement;
-  p.transform = curvetext::Transform::plane_to_viewport(glm::value_ptr(view_projection), width, height);
-  // Depth-tested on the plane, pulled towards the viewer as a decal on the
-  // sign (which the board's own polygon offset pulls forward less).
-  p.depth = curvetext::Transform::plane_depth(glm::value_ptr(view_projection), width, height);
-  p.depth[2] -= 2e-4;
-  return p;
+  // On the plane, depth-tested; on_plane's depth offset keeps the label in
+  // front of the sign it lies on (drawn with glPolygonOffset(-1, -1), which
+  // pulls the sign forward by less).
+  const curvetext::Placement& at = label.text.placement;
+  return curvetext::Placement::on_plane(glm::value_ptr(view_projection), width, height, at.scale, at.origin_x,
+                                        -at.origin_y);
 }
 
 }  // namespace example

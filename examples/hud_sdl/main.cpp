@@ -141,7 +141,6 @@ void Scene2D::prepare(int frame, int width, int height, const example::Hud& hud)
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
 }
 
-// [readme] (README.md shows this part verbatim; tests/readme_code.cmake checks it)
 // curvetext's part: static text uploaded once, the score and FPS counter
 // rebuilt when their text changes.
 class TextLayer {
@@ -193,7 +192,6 @@ void draw_frame(Scene& s, int frame, int width, int height, bool with_text, cons
   if (with_text) s.text.draw_rest();
   example::check_gl("after a frame");
 }
-// [/readme]
 
 struct Window {
   SDL_Window* handle = nullptr;

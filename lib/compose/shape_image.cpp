@@ -140,7 +140,7 @@ Mesh relative_to(Mesh mesh, Vec2 centre, double scale) {
 
 Image render_shape_image(Renderer& renderer, const ShapeDocument& doc, const ShapeImageLayout& layout,
                          const ShapeImageOptions& options) {
-  // DESIGN.md section 3: 1/16 px at the scale drawn, in document units.
+  // docs/design.md section 3: 1/16 px at the scale drawn, in document units.
   const double tolerance = tolerance::kCubicApproximationPx / (layout.placement.scale * layout.largest_stretch);
   // Meshes first: geometry errors surface before anything is drawn.
   // Each mesh relative to the view's centre, the placement moved to match.

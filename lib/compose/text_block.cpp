@@ -155,19 +155,30 @@ TextBlock TextBlock::from_paragraph(GlyphCache& cache, const Paragraph& paragrap
   return block;
 }
 
-void TextBlock::draw(Renderer& renderer, double x, double y, const DrawOptions& options,
-                     const Transform& transform) const {
-  for (const std::vector<Group>* layer : {&backgrounds_, &groups_})
-    for (const Group& g : *layer) draw_group(renderer, g, x, y, options, transform);
+void TextBlock::draw(Renderer& renderer, const Placement& at, const DrawOptions& options, BlockColors colors) const {
+  if (colors == BlockColors::Styles)
+    for (const Group& g : backgrounds_) draw_group(renderer, g, at, options, g.color);
+  for (const Group& g : groups_)
+    draw_group(renderer, g, at, options, colors == BlockColors::Styles ? g.color : options.color);
 }
 
-void TextBlock::draw_group(Renderer& renderer, const Group& g, double x, double y, const DrawOptions& options,
-                           const Transform& transform) const {
+void TextBlock::draw(Renderer& renderer, double x, double y, const DrawOptions& options,
+                     const Transform& transform) const {
+  draw(renderer, Placement(1.0, x, y, transform), options);
+}
+
+void TextBlock::draw_group(Renderer& renderer, const Group& g, const Placement& at, const DrawOptions& options,
+                           const Color& color) const {
   DrawOptions draw = options;
-  draw.color = g.color;
+  draw.color = color;
   draw.antialiasing = resolve_antialiasing(options.antialiasing, g.size_px * on_screen_scale_);
-  if (g.glyphs) renderer.draw(*g.glyphs, Placement(g.scale, x, y, transform), draw);
-  if (g.bars) renderer.draw(*g.bars, Placement(1.0, x, y, transform), draw);
+  // The glyphs are in font units (y up), the bars and backgrounds in layout
+  // pixels with y up, both from the layout box's top-left.
+  Placement p = at;
+  p.scale = at.scale * g.scale;
+  if (g.glyphs) renderer.draw(*g.glyphs, p, draw);
+  p.scale = at.scale;
+  if (g.bars) renderer.draw(*g.bars, p, draw);
 }
 
 std::size_t TextBlock::group_count() const { return groups_.size(); }

@@ -14,15 +14,13 @@
 #include "font/default_font_lookup.hpp"
 
 // Set by lib/CMakeLists.txt: the installed font's place relative to the
-// installed library and programs, and the build tree's copy.
+// installed library and programs (the build tree has the same layout). No
+// absolute path: an installed tree can be moved, and names no build tree.
 #ifndef CURVETEXT_FONT_FROM_LIBDIR
 #define CURVETEXT_FONT_FROM_LIBDIR "../share/curvetext/fonts"
 #endif
 #ifndef CURVETEXT_FONT_FROM_BINDIR
 #define CURVETEXT_FONT_FROM_BINDIR "../share/curvetext/fonts"
-#endif
-#ifndef CURVETEXT_BUILD_FONT_DIR
-#define CURVETEXT_BUILD_FONT_DIR ""
 #endif
 
 namespace curvetext {
@@ -63,7 +61,6 @@ std::vector<std::string> default_font_candidates(const std::string& build_dir_hi
     add(dir / CURVETEXT_FONT_FROM_LIBDIR / kDefaultFontFile);
     add(dir / CURVETEXT_FONT_FROM_BINDIR / kDefaultFontFile);
   }
-  if (*CURVETEXT_BUILD_FONT_DIR != '\0') add(fs::path(CURVETEXT_BUILD_FONT_DIR) / kDefaultFontFile);
   return out;
 }
 

@@ -52,7 +52,7 @@ GlyphCache::Impl::Packed GlyphCache::Impl::get(const Font& font, std::uint32_t g
   }
   if (entry == lru.end()) {
     ++stats.misses;
-    thread_local Outline outline;  // scratch: its storage serves every miss on this thread
+    Outline& outline = scratch.outline;
     font.glyph_outline(glyph_id, outline);
     int lod = 0;
     MeshOptions options;
@@ -62,9 +62,8 @@ GlyphCache::Impl::Packed GlyphCache::Impl::get(const Font& font, std::uint32_t g
     }
     auto glyph = std::make_shared<gpu::CachedGlyph>();
     if (!outline.empty()) {
-      thread_local Mesh mesh;  // scratch: its storage serves every miss on this thread
-      build_mesh(outline, options, mesh);
-      gpu::pack_mesh(mesh, glyph->packed);
+      build_mesh(outline, options, scratch.mesh);
+      gpu::pack_mesh(scratch.mesh, glyph->packed, scratch.pack);
       glyph->bounds = bounds_of(glyph->packed);
     }
     const std::size_t cost = glyph->packed.memory_bytes() + kEntryBookkeepingBytes;

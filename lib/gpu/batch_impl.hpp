@@ -158,6 +158,12 @@ struct GlyphCache::Impl {
   Packed get(const Font& font, std::uint32_t glyph_id, double pixels_per_em, bool upload = false);
 
   std::size_t budget_bytes;
+  // A miss's outline, mesh and packing room: their storage serves every miss.
+  struct Scratch {
+    Outline outline;
+    Mesh mesh;
+    gpu::PackScratch pack;
+  } scratch;
   std::list<Entry> lru;  // most recently used first
   std::unordered_map<Key, std::list<Entry>::iterator, KeyHash> index;
   Stats stats;

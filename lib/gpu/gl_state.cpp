@@ -22,6 +22,11 @@ ContextInfo ContextInfo::current() {
 
 GlStateBackup::GlStateBackup(const ContextInfo& info) : info_(info) {
   glGetIntegerv(GL_CURRENT_PROGRAM, &program_);
+  if (program_ != 0) {
+    GLint deleted = GL_FALSE;
+    glGetProgramiv(static_cast<GLuint>(program_), GL_DELETE_STATUS, &deleted);
+    program_deleted_ = deleted == GL_TRUE;
+  }
   glGetIntegerv(GL_ARRAY_BUFFER_BINDING, &array_buffer_);
   glGetIntegerv(GL_RENDERBUFFER_BINDING, &renderbuffer_);
   if (info_.gl3()) {
@@ -102,7 +107,17 @@ void GlStateBackup::apply_target() const {
 }
 
 GlStateBackup::~GlStateBackup() {
-  glUseProgram(static_cast<GLuint>(program_));
+  // A program the application deleted while it was current lives on only as
+  // long as it stays current: once curvetext switched to its own it is gone
+  // (its name may even be reused), and binding it again would be
+  // GL_INVALID_VALUE. No program is current then, as after the application's
+  // own switch away from it.
+  GLint current = 0;
+  glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+  if (current != program_) {
+    const auto program = static_cast<GLuint>(program_);
+    glUseProgram(program != 0 && !program_deleted_ && glIsProgram(program) ? program : 0);
+  }
   if (info_.gl3()) {
     glBindVertexArray(static_cast<GLuint>(vertex_array_));
     glBindBuffer(GL_PIXEL_UNPACK_BUFFER, static_cast<GLuint>(unpack_buffer_));

@@ -1,4 +1,4 @@
-// The application's GL state around curvetext's calls (DESIGN.md section 5):
+// The application's GL state around curvetext's calls (docs/design.md section 5):
 // everything a draw may change is read first and put back afterwards, also
 // when the call throws, as Dear ImGui's GL backends do. Private to the library.
 #pragma once
@@ -42,6 +42,7 @@ class GlStateBackup {
     GLfloat current[4] = {0, 0, 0, 1};
   };
   ContextInfo info_;
+  bool program_deleted_ = false;  // flagged for deletion by the application while current
   GLint program_ = 0, array_buffer_ = 0, element_buffer_ = 0, vertex_array_ = 0, renderbuffer_ = 0;
   GLint draw_fbo_ = 0, read_fbo_ = 0, unpack_buffer_ = 0;
   GLint active_texture_ = 0, texture0_ = 0;

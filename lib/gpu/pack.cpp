@@ -7,7 +7,7 @@
 // exact area of the pixel box inside the triangle (and, for a curved
 // triangle, on the filled side of its arc) and adds it into a coverage
 // buffer. The mesh tiles the nonzero union of the outline exactly (area
-// identity, watertightness, separated hulls: DESIGN.md section 4), so the
+// identity, watertightness, separated hulls: docs/design.md section 4), so the
 // sums are the pixels' coverage, whatever the triangles' shapes and however
 // many meet in a pixel.
 //
@@ -22,7 +22,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "curvetext/tolerances.hpp"
+#include "core/tolerances.hpp"
 #include "gpu/vertex_format.hpp"
 
 namespace curvetext::gpu {
@@ -91,17 +91,15 @@ std::size_t emit(const std::array<Vec2, 3>& p, int side, float w, std::uint32_t 
 
 }  // namespace
 
-void pack_mesh(const Mesh& mesh, PackedMesh& out) {
+void pack_mesh(const Mesh& mesh, PackedMesh& out, PackScratch& scratch) {
   // Written into scratch with room for the most a triangle can grow into
   // (6 points, 4 fan triangles), then appended at once: `out` gets exactly
   // its vertices and indices, with no zero-filling or growth on the way.
-  thread_local std::vector<Vertex> vertex_scratch;
-  thread_local std::vector<std::uint32_t> index_scratch;
   const std::size_t triangles = mesh.triangles.size() + mesh.curves.size();
-  if (vertex_scratch.size() < 6 * triangles) vertex_scratch.resize(6 * triangles);
-  if (index_scratch.size() < 12 * triangles) index_scratch.resize(12 * triangles);
-  Vertex* const vertices = vertex_scratch.data();
-  std::uint32_t* const indices = index_scratch.data();
+  if (scratch.vertices.size() < 6 * triangles) scratch.vertices.resize(6 * triangles);
+  if (scratch.indices.size() < 12 * triangles) scratch.indices.resize(12 * triangles);
+  Vertex* const vertices = scratch.vertices.data();
+  std::uint32_t* const indices = scratch.indices.data();
   const auto base = static_cast<std::uint32_t>(out.vertices.size());
   std::size_t nv = 0, ni = 0;
   auto add = [&](const std::array<Vec2, 3>& p, int side, float w) {

@@ -16,7 +16,7 @@
 #include "curvetext/renderer.hpp"
 
 #include "curvetext/error.hpp"
-#include "curvetext/tolerances.hpp"
+#include "core/tolerances.hpp"
 #include "gpu/batch_impl.hpp"
 #include "gpu/gl_state.hpp"
 #include "gpu/gl_util.hpp"
@@ -160,6 +160,7 @@ struct Renderer::Impl {
   // The depth plane of the pass being drawn (set_view): the placement's for
   // the pass into the application's framebuffer, 0 offscreen.
   std::array<float, 3> pass_depth{0.0f, 0.0f, 0.0f};
+  DepthTest pass_depth_test = DepthTest::Application;
   Blending target_blending = Blending::Srgb;  // of the framebuffer the current draw targets
   bool gles = true;
   gpu::ContextInfo info;  // of the context current at construction
@@ -295,7 +296,15 @@ struct Renderer::Impl {
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_CULL_FACE);  // triangles come in either orientation
     // The depth test stays the application's for the pass into its
-    // framebuffer; the offscreen passes turn it off.
+    // framebuffer (unless the placement turns it off); the offscreen passes
+    // turn it off.
+    if (pass_depth_test == DepthTest::Off) glDisable(GL_DEPTH_TEST);
+  }
+  // The application's target for the pass into it, with the placement's
+  // depth test.
+  void apply_target(const gpu::GlStateBackup& target) const {
+    target.apply_target();
+    if (pass_depth_test == DepthTest::Off) glDisable(GL_DEPTH_TEST);
   }
 
   // Each program compiled and linked on first use (Error(Gl) if it fails).
@@ -437,8 +446,9 @@ Renderer::~Renderer() = default;
 void Renderer::draw(const DrawBatch& batch, const Placement& placement, const DrawOptions& options) {
   Impl& r = *impl_;
   if (!std::isfinite(placement.scale) || placement.scale == 0.0 || !std::isfinite(placement.origin_x) ||
-      !std::isfinite(placement.origin_y)) {
-    throw Error(ErrorCode::InvalidArgument, "placement needs a finite non-zero scale and a finite origin");
+      !std::isfinite(placement.origin_y) || !std::isfinite(placement.depth_offset)) {
+    throw Error(ErrorCode::InvalidArgument,
+                "placement needs a finite non-zero scale, a finite origin and a finite depth offset");
   }
   const gpu::BatchImpl& b = DrawBatchAccess::impl(batch);
   if (b.empty()) return;
@@ -447,6 +457,7 @@ void Renderer::draw(const DrawBatch& batch, const Placement& placement, const Dr
 
   // The application's state comes back as it was when this returns or throws.
   const gpu::GlStateBackup state(r.info);
+  r.pass_depth_test = placement.depth_test;
   r.bind_own_state();
   // Into the framebuffer and viewport bound now; pixel (0, 0) is the
   // viewport's top left.
@@ -454,6 +465,7 @@ void Renderer::draw(const DrawBatch& batch, const Placement& placement, const Dr
   r.target_blending = gpu::bound_framebuffer_blending(r.info.gles, r.info.gl3(), state.draw_framebuffer());
 
   for (int i = 0; i < 3; ++i) r.pass_depth[i] = static_cast<float>(placement.depth[i]);
+  r.pass_depth[2] -= static_cast<float>(placement.depth_offset);
   const double s = placement.scale;
   // Outline units -> pixels (x_px = s x + ox, y_px = oy - s y), then the
   // projective transform.
@@ -782,7 +794,7 @@ bool Renderer::Impl::draw_offscreen(const gpu::BatchImpl& b, const Transform& fu
         slot.valid = true;
         ++r.offscreen_passes;
       }
-      target.apply_target();
+      r.apply_target(target);
       composite_tile(r, slot, tx, ty, w, h, vw, vh, options, vbaa && factor > 1);
     }
   }

@@ -82,9 +82,20 @@ struct PackedMesh {
   std::size_t memory_bytes() const { return vertices.size() * sizeof(Vertex) + indices.size() * sizeof(std::uint32_t); }
 };
 
+// Room pack_mesh writes a mesh's polygons into before appending them at once;
+// reused from call to call, its storage grows to the largest mesh packed.
+struct PackScratch {
+  std::vector<Vertex> vertices;
+  std::vector<std::uint32_t> indices;
+};
+
 // Appends the packed triangles (interior and curved) of `mesh`, keeping the
 // interior triangles' indices ahead of the curved ones'.
-void pack_mesh(const Mesh& mesh, PackedMesh& out);
+void pack_mesh(const Mesh& mesh, PackedMesh& out, PackScratch& scratch);
+inline void pack_mesh(const Mesh& mesh, PackedMesh& out) {
+  PackScratch scratch;
+  pack_mesh(mesh, out, scratch);
+}
 inline PackedMesh pack_mesh(const Mesh& mesh) {
   PackedMesh out;
   pack_mesh(mesh, out);

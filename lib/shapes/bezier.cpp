@@ -232,7 +232,7 @@ bool fit_conic(const RationalBezier& piece, Segment& conic) {
   const double tau2 = cross(c - p0, m - p0) / area;
   const double tau0 = 1.0 - tau1 - tau2;
   if (!(tau0 > 0.0 && tau1 > 0.0 && tau2 > 0.0)) return false;
-  // The conic through m: tau1^2 = 4 w^2 tau0 tau2 (DESIGN.md section 3).
+  // The conic through m: tau1^2 = 4 w^2 tau0 tau2 (docs/design.md section 3).
   conic = Segment::conic(p0, c, p2, tau1 / (2.0 * std::sqrt(tau0 * tau2)));
   return std::isfinite(conic.weight) && conic.weight > 0.0;
 }
@@ -327,7 +327,7 @@ void append_quadratics(const RationalBezier& curve, double tolerance, std::vecto
       out.push_back(Segment::line(p0, p2));
       return;
     case 2:
-      if (curve.weights[1] == 0.0) {  // DESIGN.md section 3: weight 0 is the chord
+      if (curve.weights[1] == 0.0) {  // docs/design.md section 3: weight 0 is the chord
         out.push_back(Segment::line(p0, p2));
         return;
       }

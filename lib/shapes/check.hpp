@@ -47,7 +47,7 @@ inline void check_weight(double w, const std::string& what) {
                                                 number_text(kMinWeight) + ", " + number_text(kMaxWeight) + "]");
 }
 
-// DESIGN.md section 3: a rational quadratic with middle weight 0 (end
+// docs/design.md section 3: a rational quadratic with middle weight 0 (end
 // weights > 0) is its chord. True when piece `index` of a degree-2 curve
 // with `count` weights may be 0 (the middle one) and is.
 inline bool is_zero_middle_weight(std::size_t degree, std::size_t index, std::size_t count, double w) {

@@ -22,7 +22,7 @@
 #include "curvetext/curves.hpp"
 #include "curvetext/error.hpp"
 #include "curvetext/shapes.hpp"
-#include "curvetext/tolerances.hpp"
+#include "core/tolerances.hpp"
 
 namespace curvetext {
 

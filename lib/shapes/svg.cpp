@@ -14,7 +14,7 @@
 #include "check.hpp"
 #include "curvetext/error.hpp"
 #include "curvetext/shapes.hpp"
-#include "curvetext/tolerances.hpp"
+#include "core/tolerances.hpp"
 
 namespace curvetext {
 

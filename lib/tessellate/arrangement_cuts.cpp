@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "core/assert.hpp"
-#include "curvetext/tolerances.hpp"
+#include "core/tolerances.hpp"
 #include "tessellate/arrangement.hpp"
 #include "tessellate/columns.hpp"
 #include "tessellate/positions.hpp"

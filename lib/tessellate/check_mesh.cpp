@@ -15,7 +15,7 @@
 #include "curvetext/curves.hpp"
 #include "curvetext/error.hpp"
 #include "curvetext/mesh.hpp"
-#include "curvetext/tolerances.hpp"
+#include "core/tolerances.hpp"
 #include "tessellate/predicates.hpp"
 #include "tessellate/rings.hpp"
 

@@ -13,7 +13,7 @@
 
 #include "core/assert.hpp"
 #include "curvetext/curves.hpp"
-#include "curvetext/tolerances.hpp"
+#include "core/tolerances.hpp"
 #include "tessellate/positions.hpp"
 #include "tessellate/predicates.hpp"
 

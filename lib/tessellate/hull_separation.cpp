@@ -15,7 +15,7 @@
 
 #include "core/assert.hpp"
 #include "curvetext/curves.hpp"
-#include "curvetext/tolerances.hpp"
+#include "core/tolerances.hpp"
 #include "tessellate/columns.hpp"
 #include "tessellate/hulls.hpp"
 #include "tessellate/positions.hpp"

@@ -25,7 +25,7 @@
 #include "curvetext/curves.hpp"
 #include "curvetext/error.hpp"
 #include "curvetext/mesh.hpp"
-#include "curvetext/tolerances.hpp"
+#include "core/tolerances.hpp"
 #include "tessellate/cleaning.hpp"
 #include "tessellate/hull_separation.hpp"
 #include "tessellate/nesting.hpp"

@@ -31,8 +31,8 @@
 #include <vector>
 
 #include "core/assert.hpp"
+#include "core/tolerances.hpp"
 #include "curvetext/curves.hpp"
-#include "curvetext/tolerances.hpp"
 #include "tessellate/arrangement.hpp"
 #include "tessellate/columns.hpp"
 #include "tessellate/positions.hpp"

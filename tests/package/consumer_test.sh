@@ -1,15 +1,20 @@
 #!/usr/bin/env bash
-# curvetext as a package: builds and installs the library (shared, then
-# static) into a temporary prefix, deletes the build, and builds and runs a
-# consumer against the installed tree with find_package(curvetext CONFIG)
-# and with pkg-config; checks where the default font is found from, and the
-# error when there is none. Then configures a project that adds curvetext
-# with add_subdirectory (only the library is built there by default).
+# curvetext as a package: builds the library (shared, then static; the CLI
+# with the shared one), installs it with `cmake --install --prefix` into
+# another place than the configured prefix, checks that nothing installed
+# names the build tree, deletes the build tree, moves the installed tree
+# elsewhere, and from there builds and runs consumers with
+# find_package(curvetext CONFIG) and with pkg-config, the installed CLI, and
+# the README's first program (examples/first_window, both ways, under Xvfb
+# where xvfb-run and GLFW are installed); checks where the default font is
+# found from, and the error when there is none. Then configures a project
+# that adds curvetext with add_subdirectory (only the library is built there
+# by default).
 #
 #   consumer_test.sh SOURCE_DIR WORK_DIR      (CMAKE, CXX, JOBS from the environment)
 #
-# The two library builds are unoptimised and build the library target only:
-# this checks packaging, not speed.
+# The two library builds are unoptimised and build the installed targets
+# only: this checks packaging, not speed.
 set -euo pipefail
 src=$(cd "$1" && pwd)
 work=$2
@@ -40,21 +45,68 @@ cat >"$work/no-fonts.conf" <<CONF
 <fontconfig><cachedir>$work/fc-cache</cachedir></fontconfig>
 CONF
 
+# Fails when a file under $1 holds the string $2: text files as they are,
+# programs and libraries stripped of their symbol tables (which may name the
+# source files the compiler was given, generated ones in the build tree; what
+# the code reads must not).
+expect_not_named() {
+  local f copy
+  while IFS= read -r -d '' f; do
+    copy="$work/scan.tmp"
+    cp "$f" "$copy"
+    if head -c 4 "$copy" | grep -q $'\x7fELF' || head -c 7 "$copy" | grep -q '!<arch>'; then
+      strip --strip-all "$copy" 2>/dev/null || strip --strip-debug "$copy" 2>/dev/null || true
+    fi
+    if grep -q -a -F -- "$2" "$copy"; then
+      rm -f "$copy"
+      fail "installed file ${f#"$1"/} names the build tree ($2)"
+    fi
+    rm -f "$copy"
+  done < <(find "$1" -type f -print0)
+}
+
+# The README's first program (examples/first_window) run for 2 frames under
+# Xvfb: it must ink pixels.
+run_first_window() {  # NAME PROGRAM
+  local out
+  out=$("$XVFB_RUN" -a -s "-screen 0 800x600x24" "$2" 2 2>&1) || fail "$1: $out"
+  expect "$1" "$out" "first_window: 2 frames, then [1-9][0-9]* pixels inked"
+  echo "   $1: $out"
+}
+XVFB_RUN=$(command -v xvfb-run || true)
+first_window=yes
+if [ -z "$XVFB_RUN" ] || ! pkg-config --exists glfw3; then
+  first_window=no
+  echo "== xvfb-run or GLFW (libglfw3-dev) missing: examples/first_window is not built here"
+fi
+
 for kind in shared static; do
   shared=$([ $kind = shared ] && echo ON || echo OFF)
   build="$work/build-$kind"
-  prefix="$work/prefix-$kind"
+  staged="$work/staged-$kind"  # where `cmake --install --prefix` puts it
+  prefix="$work/prefix-$kind"  # where it is used from, moved there afterwards
   start=$SECONDS
+  targets=(curvetext)
+  [ $kind = shared ] && targets+=(curvetext_cli)
+  # The configured prefix is never written: --prefix at install time decides.
   run "$work/$kind-configure.log" "$CMAKE" -S "$src" -B "$build" -DBUILD_SHARED_LIBS="$shared" \
-    -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-O0 -DCMAKE_INSTALL_PREFIX="$prefix" \
-    -DCURVETEXT_BUILD_TESTS=OFF -DCURVETEXT_BUILD_BENCH=OFF -DCURVETEXT_BUILD_CLI=OFF -DCURVETEXT_INSTALL=ON
-  run "$work/$kind-build.log" "$CMAKE" --build "$build" -j"$JOBS" --target curvetext
-  run "$work/$kind-install.log" "$CMAKE" --install "$build"
-  rm -rf "$build"  # from here on only the installed tree (its default font too)
-  echo "== $kind: built and installed in $((SECONDS - start)) s"
+    -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-O0 -DCMAKE_INSTALL_PREFIX="$work/configured-prefix" \
+    -DCURVETEXT_BUILD_TESTS=OFF -DCURVETEXT_BUILD_BENCH=OFF -DCURVETEXT_BUILD_EXAMPLES=OFF \
+    -DCURVETEXT_BUILD_CLI="$shared" -DCURVETEXT_INSTALL=ON
+  run "$work/$kind-build.log" "$CMAKE" --build "$build" -j"$JOBS" --target "${targets[@]}"
+  run "$work/$kind-install.log" "$CMAKE" --install "$build" --prefix "$staged"
+  [ ! -e "$work/configured-prefix" ] || fail "$kind: installed into the configured prefix, not --prefix"
+  expect_not_named "$staged" "$build"
+  rm -rf "$build"  # from here on only the installed tree (its default font too) ...
+  mv "$staged" "$prefix"  # ... moved away from where it was installed
+  echo "== $kind: built, installed with --prefix and moved in $((SECONDS - start)) s; no installed file names the build tree"
 
   export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
   libdir=$(pkg-config --variable=libdir curvetext)
+  # The .pc file's paths lead into the moved tree (relative to itself).
+  [ "$(readlink -f "$libdir")" = "$(readlink -f "$prefix/lib")" ] || fail "$kind: pkg-config libdir $libdir"
+  includedir=$(pkg-config --variable=includedir curvetext)
+  [ -f "$includedir/curvetext/curvetext.hpp" ] || fail "$kind: pkg-config includedir $includedir"
   [ -f "$libdir/cmake/curvetext/curvetextConfig.cmake" ] || fail "$kind: no $libdir/cmake/curvetext/curvetextConfig.cmake"
   [ -f "$prefix/share/curvetext/fonts/DejaVuSans.ttf" ] || fail "$kind: default font not installed"
   if [ $kind = shared ]; then
@@ -97,7 +149,26 @@ for kind in shared static; do
     expect "$name" "$out" "16 glyphs"
   done
 
+  if [ $first_window = yes ]; then
+    run "$work/$kind-first-cmake.log" "$CMAKE" -S "$src/examples/first_window" -B "$work/first-cmake-$kind" \
+      -DCMAKE_PREFIX_PATH="$prefix"
+    run "$work/$kind-first-cmake-build.log" "$CMAKE" --build "$work/first-cmake-$kind"
+    read -r -a app_flags <<<"$(pkg-config --cflags --libs glfw3 glesv2)"
+    run "$work/$kind-first-pc.log" "$CXX" -std=c++20 "$src/examples/first_window/main.cpp" -o "$work/first-pc-$kind" \
+      "${pc_flags[@]}" "${app_flags[@]}" "${extra[@]}"
+    run_first_window "$kind, first_window, find_package" "$work/first-cmake-$kind/first_window"
+    run_first_window "$kind, first_window, pkg-config" "$work/first-pc-$kind"
+  fi
+
   if [ $kind = shared ]; then
+    # The installed CLI renders a PNG from the moved tree, with its default
+    # font (fontconfig knows none) and the library found through its RPATH.
+    out=$(FONTCONFIG_FILE="$work/no-fonts.conf" "$prefix/bin/curvetext" render --text "Installed" \
+      -o "$work/cli-shared.png" 2>&1) || fail "installed CLI: $out"
+    [ "$(head -c 8 "$work/cli-shared.png" | od -An -tx1 | tr -d ' ')" = "89504e470d0a1a0a" ] ||
+      fail "installed CLI: $work/cli-shared.png is not a PNG"
+    echo "   shared, installed CLI: rendered $(stat -c %s "$work/cli-shared.png") bytes of PNG"
+
     # The shared library finds its own font wherever the program is, fontconfig or not.
     out=$(FONTCONFIG_FILE="$work/no-fonts.conf" "$work/pc-shared" --default-font) || fail "no fontconfig: $out"
     expect "shared, no fontconfig" "$out" "default font: $prefix/share/curvetext/fonts/DejaVuSans.ttf"
@@ -127,5 +198,5 @@ done
 [ ! -e "$work/subdirectory/curvetext/CTestTestfile.cmake" ] || fail "add_subdirectory: tests configured"
 echo "== add_subdirectory: curvetext::curvetext linked, no tests, benchmarks or CLI"
 
-rm -rf "$work"/cmake-* "$work/subdirectory" "$work/fc-cache"
+rm -rf "$work"/cmake-* "$work"/first-cmake-* "$work/subdirectory" "$work/fc-cache"
 echo "package: passed in $((SECONDS - total_start)) s"

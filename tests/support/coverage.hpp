@@ -1,5 +1,5 @@
 // Test support: coverage images, exact references and their comparison
-// (DESIGN.md section 6), with images written when a comparison fails.
+// (docs/design.md section 6), with images written when a comparison fails.
 #pragma once
 
 #include <functional>

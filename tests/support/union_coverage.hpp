@@ -1,5 +1,5 @@
 // Test support: exact area coverage of the nonzero-winding union of an outline
-// (DESIGN.md section 6), the reference that overlapping contours need.
+// (docs/design.md section 6), the reference that overlapping contours need.
 // FreeType's AA rasterizer sums the windings of overlapping contours per cell
 // and so over-covers edge pixels where contours overlap; this one does not.
 //

@@ -1,5 +1,5 @@
 // curvetext check: builds every glyph's mesh and verifies the invariants of
-// DESIGN.md section 4, so a user can see whether curvetext draws a font right.
+// docs/design.md section 4, so a user can see whether curvetext draws a font right.
 #include <algorithm>
 #include <chrono>
 #include <cmath>

@@ -14,7 +14,7 @@
 //
 // Coordinates: pixels, y down; the layout box's top-left is (0, 0); glyph
 // positions are pen positions of the glyph origin on its baseline. Lines
-// advance by A - D + line gap of the tallest font on the line (DESIGN.md
+// advance by A - D + line gap of the tallest font on the line (docs/design.md
 // section 6), times ParagraphStyle::line_height when set.
 #pragma once
 

@@ -52,7 +52,7 @@ struct MeshOptions {
 // positive and finite, or a coordinate beyond tolerance::kMaxMeshCoordinate;
 // coordinates below tolerance::kFlushCoordinate* are read as 0. Never hangs:
 // hull separation and crossing resolution have a work budget proportional to
-// the input (tolerance::kMeshWorkPerPiece), past which they throw
+// the input (docs/limits.md), past which they throw
 // Error(Geometry), and the other stages are bounded by what those leave. No
 // other exception leaves it (running out of memory is Error(Geometry) too).
 // A mesh that does not come from the self-checking sweep is checked with
@@ -93,7 +93,7 @@ CURVETEXT_API void build_mesh(const Outline& outline, const MeshOptions& options
 // the area of its filled side (chord side for convex, outer side otherwise).
 CURVETEXT_API double mesh_area(const Mesh& mesh);
 
-// The invariants of DESIGN.md section 4, checked on a built mesh.
+// The invariants of docs/design.md section 4, checked on a built mesh.
 struct MeshCheck {
   double area_mesh = 0.0;
   double area_outline = 0.0;          // nonzero area of the quadratic outline

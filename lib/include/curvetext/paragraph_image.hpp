@@ -5,7 +5,7 @@
 // mesh.
 // Geometry: the layout box's origin is at (margin, margin); the image is
 // ceil(2 margin + box width) x ceil(2 margin + total line height), so the
-// first baseline is at margin + A as in DESIGN.md section 6.
+// first baseline is at margin + A as in docs/design.md section 6.
 #pragma once
 
 #include "curvetext/export.hpp"

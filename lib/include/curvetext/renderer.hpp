@@ -1,10 +1,12 @@
 // Drawing meshes and text with the GLES2 curve shader (paper section 4, with
-// the exact conic test of DESIGN.md section 3) into the caller's current GL
+// the exact conic test of docs/design.md section 3) into the caller's current GL
 // context. The library does not own windows; see headless.hpp for a context
 // without one.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <memory>
 
@@ -30,8 +32,16 @@ enum class AntiAliasing {
   Auto,    // per size, what bench/quality_bench measures best (text_image.hpp)
 };
 enum class CurveMode {
-  Exact,  // F = tau1^2 - 4 w^2 tau0 tau2 (DESIGN.md section 3), exact for every weight
+  Exact,  // F = tau1^2 - 4 w^2 tau0 tau2 (docs/design.md section 3), exact for every weight
   Paper,  // the paper's equation 2: exact only for weight 1
+};
+
+// How the pass that writes the application's framebuffer meets the
+// application's depth test (Placement::depth_test).
+enum class DepthTest {
+  Application,  // its depth test, function and mask as they are (on or off)
+  Off,          // not depth-tested, no depth written: drawn over what is there
+                // (a HUD drawn while a 3D scene's depth test is on)
 };
 
 // Maps outline units (y up) to framebuffer pixels (y down, pixel (i,j) covers
@@ -48,9 +58,24 @@ struct Placement {
   // ({0, 0, d}: a constant d in [-1, 1], the GL default depth range mapping
   // it to a window depth of (d + 1) / 2). The pass that writes the
   // application's framebuffer is depth-tested with its depth test, function
-  // and mask as they are; text outside [-1, 1] is clipped, as the app's own
-  // geometry would be.
+  // and mask as they are (unless depth_test is Off); text outside [-1, 1] is
+  // clipped, as the app's own geometry would be. A HUD's default depth 0 is
+  // window depth 0.5: with the application's depth test on, geometry nearer
+  // than that hides it; DepthTest::Off draws it over everything.
   std::array<double, 3> depth{0.0, 0.0, 0.0};
+  // Pulls the text towards the viewer before the depth test, as
+  // glPolygonOffset pulls a decal: subtracted from the normalized device z
+  // above (GL's depth grows away from the viewer). 0 by default; on_plane
+  // sets it so that text on a plane drawn after the plane is not hidden by
+  // the plane's own depth (z-fighting).
+  double depth_offset = 0.0;
+  DepthTest depth_test = DepthTest::Application;
+
+  // on_plane's constant part of depth_offset, in normalized device z: about
+  // 3 steps of a 16-bit depth buffer (800 of a 24-bit one), far above the
+  // rounding between the plane's rasterized depth and the text's. Geometry
+  // that close in front of the plane does not hide its text.
+  static constexpr double kOnPlaneDepthOffset = 1e-4;
 
   Placement() = default;
   Placement(double scale_, double origin_x_, double origin_y_, const Transform& transform_ = {})
@@ -62,11 +87,16 @@ struct Placement {
   // plane units each, the outline's origin at the plane's (x, y), upright
   // along the plane's +y. Throws as Transform::plane_to_viewport.
   // Its depth is the plane's (Transform::plane_depth), so a 3D scene's own
-  // geometry in front of the text hides it.
+  // geometry in front of the text hides it, and its depth_offset the plane's
+  // depth change over one pixel (glPolygonOffset's factor 1) plus
+  // kOnPlaneDepthOffset: drawn after the plane with GL_LESS, the text shows.
+  // (On a decal the application pulls further forward with glPolygonOffset,
+  // add as much, in normalized device z, to depth_offset.)
   static Placement on_plane(const float mvp[16], double viewport_width, double viewport_height,
                             double units_per_outline_unit, double x, double y) {
     Placement p(units_per_outline_unit, x, -y, Transform::plane_to_viewport(mvp, viewport_width, viewport_height));
     p.depth = Transform::plane_depth(mvp, viewport_width, viewport_height);
+    p.depth_offset = std::max(std::abs(p.depth[0]), std::abs(p.depth[1])) + kOnPlaneDepthOffset;
     return p;
   }
 };
@@ -139,7 +169,7 @@ class CURVETEXT_API Renderer {
   // gamma and debug do not apply to it. `batch` must have been built
   // with this context (or one sharing with it). Throws
   // Error(InvalidArgument) for a non-finite or zero scale, a non-finite
-  // origin or a transform Transform::validate refuses, Error(Gl) when a GL
+  // origin or depth offset, or a transform Transform::validate refuses, Error(Gl) when a GL
   // call fails.
   void draw(const DrawBatch& batch, const Placement& placement, const DrawOptions& options);
   // Samples per pixel msaa uses here: GL_MAX_SAMPLES capped at 16 (llvmpipe

@@ -5,7 +5,7 @@
 //    (docs/shapes/README.md gives the format);
 //  - SVG path data (M L H V Q T C S A Z) and a minimal SVG file reader.
 // Exact where it can be: lines, quadratic NURBS/Beziers (rational or not) and
-// SVG elliptical arcs become exact rational quadratics (DESIGN.md section 3).
+// SVG elliptical arcs become exact rational quadratics (docs/design.md section 3).
 // Polynomial cubics use cubic_to_quadratics (curves.hpp); rational cubics and
 // every degree >= 4 are approximated by conics within the caller's tolerance.
 // No GL here: shape_image.hpp draws documents. Everything here is a value
@@ -28,7 +28,7 @@ enum class FillRule { NonZero, EvenOdd };
 // A rational Bezier piece of degree points.size() - 1 >= 1, in homogeneous
 // form sum(w_i B_i(t) p_i) / sum(w_i B_i(t)). Every weight is > 0, except
 // the middle weight of a quadratic, which may be 0 (the piece is its chord,
-// DESIGN.md section 3).
+// docs/design.md section 3).
 struct CURVETEXT_API RationalBezier {
   std::vector<Vec2> points;
   std::vector<double> weights;

@@ -20,6 +20,13 @@
 
 namespace curvetext {
 
+// Where a text block's colours come from when it is drawn.
+enum class BlockColors {
+  Styles,       // each run in its style's colour, backgrounds drawn; DrawOptions::color is not used
+  FromOptions,  // glyphs (each COLR layer too) and decorations in DrawOptions::color, backgrounds
+                // not drawn: a shadow, a selection's text, a disabled label
+};
+
 // Owns GL buffers as DrawBatch does: the context (or one sharing with it)
 // that builds a block must be current when it is drawn or destroyed. Not
 // thread-safe: one thread (and its context) at a time. Holds the paragraph's
@@ -39,12 +46,21 @@ class CURVETEXT_API TextBlock {
   TextBlock& operator=(TextBlock&&) noexcept;
   ~TextBlock();
 
-  // Draws the block with its layout box's top-left at (x, y): pixels from
-  // the top-left of the viewport bound now, y down; then `transform` (pixels
-  // to pixels). Each group in its style's colour (options.color is not used);
-  // antialiasing, with `auto` resolved per group from its pixels per em on
-  // screen, curve mode, vbaa filter, gamma and the debug view from `options`.
-  // Renderer::draw's GL state contract holds. Throws as Renderer::draw.
+  // Draws the block with `at` mapping its layout pixels (x right, y down
+  // from the layout box's top-left) to the framebuffer's: x_px = at.scale x
+  // + at.origin_x, y_px = at.origin_y + at.scale y, then at.transform, with
+  // at's depth, depth offset and depth test (Placement::on_plane(mvp, w, h,
+  // plane units per layout pixel, x, y) lays the box's top-left on the
+  // plane's (x, y), its lines running down the plane's -y). Colours as
+  // `colors` says; antialiasing, with `auto` resolved per group from its
+  // pixels per em on screen, curve mode, vbaa filter, gamma and the debug
+  // view from `options`. Draw with the on_screen_scale the block was built
+  // for (at.scale times the transform's largest stretch). Renderer::draw's
+  // GL state contract holds. Throws as Renderer::draw.
+  void draw(Renderer& renderer, const Placement& at, const DrawOptions& options,
+            BlockColors colors = BlockColors::Styles) const;
+  // The same with Placement(1, x, y, transform): the layout box's top-left
+  // at the viewport's pixel (x, y), each run in its style's colour.
   void draw(Renderer& renderer, double x, double y, const DrawOptions& options, const Transform& transform = {}) const;
 
   std::size_t group_count() const;
@@ -52,8 +68,8 @@ class CURVETEXT_API TextBlock {
  private:
   struct Group;
   TextBlock();
-  void draw_group(Renderer& renderer, const Group& g, double x, double y, const DrawOptions& options,
-                  const Transform& transform) const;
+  void draw_group(Renderer& renderer, const Group& g, const Placement& at, const DrawOptions& options,
+                  const Color& color) const;
   std::vector<Group> backgrounds_;  // drawn first, under every group
   std::vector<Group> groups_;
   double on_screen_scale_ = 1.0;

@@ -1,4 +1,4 @@
-// One line of text to an image, following the geometry contract of DESIGN.md
+// One line of text to an image, following the geometry contract of docs/design.md
 // section 6, so results can be compared with any other renderer:
 //  - HarfBuzz shapes at `size_px` pixels per em; positions are not rounded;
 //  - the pen starts at x = margin, the baseline is at y = margin + A, with A

@@ -1,5 +1,10 @@
-// Every tolerance curvetext uses, in one place, with its unit. Code elsewhere
-// refers to these names instead of writing numbers.
+// The tolerances and limits a user of curvetext can observe, each with its
+// unit: the bound on approximated curves, the input limits past which calls
+// throw curvetext::Error (docs/limits.md), and the constants behind documented
+// defaults. The library's inner tolerances and work budgets (merge distances,
+// mesh-building budgets, offscreen tile sizes) are private, in
+// lib/core/tolerances.hpp. Code refers to these names instead of writing
+// numbers.
 #pragma once
 
 #include <cstddef>
@@ -8,35 +13,14 @@ namespace curvetext::tolerance {
 
 // --- Curves -----------------------------------------------------------------
 // Largest distance, in device pixels, allowed between a cubic and the
-// quadratics that replace it (DESIGN.md section 3: 1/16 px at every scale).
+// quadratics that replace it (docs/design.md section 3: 1/16 px at every scale).
 inline constexpr double kCubicApproximationPx = 1.0 / 16.0;
-// Largest number of quadratics one cubic may become (guards against absurd
-// scales; at this count the bound is still honoured for any glyph-sized cubic
-// drawn below 10,000 px/em).
+// Largest number of quadratics one cubic may become in cubic_to_quadratics
+// (curves.hpp; guards against absurd scales; at this count the bound is still
+// honoured for any glyph-sized cubic drawn below 10,000 px/em).
 inline constexpr int kMaxQuadraticsPerCubic = 64;
 
-// --- Tessellation -------------------------------------------------------------
-// Relative area error allowed by the area identity check (mesh vs outline).
-inline constexpr double kAreaIdentityRelative = 1e-6;
-// Floor of the area the identity's error is relative to, as a fraction of the
-// squared diagonal of the outline's control box (dimensionless). Outlines
-// whose nonzero area is zero (contours that cancel, back-and-forth lines)
-// have reference areas of rounding noise (~1e-16 of diag^2) otherwise
-// compared relatively to nothing.
-inline constexpr double kAreaIdentityFloorOfBox = 1e-6;
-// Deepest de Casteljau subdivision used to separate overlapping curve hulls.
-inline constexpr int kMaxHullSubdivisionDepth = 10;
-// Points closer than this fraction of the outline's largest |coordinate| are
-// merged when building loops (dimensionless; 1e-9 font units for a glyph whose
-// coordinates reach 1000). Relative, so that an outline drawn in tiny units
-// (a triangle of side 1e-9) keeps its pieces.
-inline constexpr double kMergeDistanceRelative = 1e-12;
-// A conic whose control point lies closer to its chord's line than this
-// fraction of the chord length is treated as a straight line (dimensionless;
-// the area this ignores is below 1e-9 of the chord length squared). Also the
-// tolerance for recognising a two-line spike that folds back on itself.
-inline constexpr double kConicFlatnessRelative = 1e-9;
-
+// --- Mesh input (build_mesh, mesh.hpp) ----------------------------------------
 // Coordinates build_mesh accepts and how it reads them (outline units). Every
 // product the exact predicates form must be a finite, normal double: incircle's
 // fourth-degree terms reach (2 * kMaxMeshCoordinate)^4 = 1.6e121, far from
@@ -50,25 +34,6 @@ inline constexpr double kConicFlatnessRelative = 1e-9;
 inline constexpr double kMaxMeshCoordinate = 1e30;
 inline constexpr double kFlushCoordinateRelative = 0x1p-64;
 inline constexpr double kFlushCoordinateAbsolute = 1e-30;
-// Work budget of one build_mesh call: hull separation may make at most this
-// many pieces per piece of the cleaned outline (cubics already replaced), plus
-// kMeshWorkBase, and the crossing resolver as many arrangement edges and as
-// many cut points per round. Past it build_mesh throws Error(Geometry) instead
-// of running on (every glyph of every face of the corpus fonts builds within
-// it: docs/corpus.md). Dimensionless counts.
-inline constexpr std::size_t kMeshWorkPerPiece = 64;
-inline constexpr std::size_t kMeshWorkBase = 4096;
-// Hull separation may test at most this many pairs of pieces whose boxes meet
-// per (kMeshWorkPerPiece) unit of that budget, summed over its passes: a path
-// that runs over itself n times has n^2 / 2 such pairs (dimensionless).
-inline constexpr std::size_t kMeshPairTestsPerPiece = 1024;
-// Ear clipping (the fallback where the sweep gives up) may look at most at
-// n^2 + kEarClipVisitsPerVertex * n + kEarClipVisitsBase vertices over all its
-// ear tests, n the polygon's vertices (dimensionless): each test looks at up
-// to every vertex, so a clip that finds its ears as it goes fits, while a
-// loop whose ears keep failing (about n^2.5 to n^3) stops with Error(Geometry).
-inline constexpr std::size_t kEarClipVisitsPerVertex = 4096;
-inline constexpr std::size_t kEarClipVisitsBase = std::size_t{1} << 24;
 
 // --- Rendering ----------------------------------------------------------------
 // Farthest a vertex may lie from the origin of the coordinates it is drawn
@@ -76,44 +41,6 @@ inline constexpr std::size_t kEarClipVisitsBase = std::size_t{1} << 24;
 // rounds positions below 2^20 px to within 1/16 px. Shape images draw their
 // meshes relative to the view's centre and refuse geometry reaching further.
 inline constexpr double kMaxGpuCoordinatePx = 1048576.0;
-// How far every triangle grows outward for `full` antialiasing (and vbaa's
-// offscreen pass), in pixels: a pixel's box reaches at most sqrt(2)/2 px
-// from its centre, so every pixel that overlaps a triangle gets a fragment of
-// it (shaders/area.frag.glsl). Also the shaders' CURVETEXT_PIXEL_REACH_PX.
-inline constexpr float kFringeWidthPx = 0.7072f;
-
-// Growing a triangle (lib/gpu/pack.cpp): where 1 + cos(angle between the two
-// edges' outward normals) is below this, the miter would reach more than
-// 1 / sqrt(this / 2) = 4 times the growth past the vertex (a corner sharper
-// than about 29 degrees), and the corner is bevelled instead. Dimensionless.
-inline constexpr double kMinMiterDenominator = 0.125;
-
-// Full antialiasing (shaders/area.frag.glsl) finds a triangle's part of a
-// pixel from its barycentrics' screen gradients, and a curved triangle's
-// control points by inverting them. For a triangle thinner than this (its
-// smallest altitude, in pixels) the gradients are huge and nearly parallel,
-// and both lose their digits (seen: 0.2-0.3 of coverage in empty pixels next
-// to a flat piece of a cubic), so it counts as empty instead: it lies within
-// this distance of a line, so it held at most sqrt(2) times this of any pixel
-// (0.0055). Also the shaders' CURVETEXT_THIN_TRIANGLE_PX.
-inline constexpr float kThinTrianglePx = 1.0f / 256.0f;
-
-// Border around a block's projected bounding box in the vbaa / msaa offscreen
-// pass, in pixels: the triangles' growth (kFringeWidthPx) plus the filter's ring
-// of one texel, rounded up.
-inline constexpr double kOffscreenBorderPx = 2.0;
-
-// Offscreen coverage textures of full / vbaa antialiasing (lib/gpu/renderer.cpp):
-// at most kCoverageTileTexels per side (RGBA8: 16 MiB), a larger block drawn
-// tile by tile; up to kCoverageSlots of them keep their passes for reuse, as
-// long as they hold at most kCoverageBudgetBytes together (past that the least
-// recently used one is redrawn). msaa's multisampled renderbuffer: at most
-// kMsaaTileTexels per side (4 samples: 16 MiB).
-inline constexpr int kCoverageTileTexels = 2048;
-inline constexpr std::size_t kCoverageSlots = 8;
-inline constexpr std::size_t kCoverageBudgetBytes = std::size_t{48} << 20;
-inline constexpr int kMsaaTileTexels = 1024;
-
 // `auto` antialiasing uses vbaa up to this many pixels per em (on screen) and
 // full above it, from bench/quality_bench's table: vbaa has the lowest edge
 // error (0.0009-0.0020) and largest error (0.021-0.043) of every mode at each
@@ -136,7 +63,8 @@ inline constexpr double kMaxCoverageGamma = 4.0;
 
 // --- Level of detail ---------------------------------------------------------
 // Meshes of glyphs with cubics are built per power-of-two pixels-per-em band;
-// the band's upper end is used to choose the cubic tolerance.
+// the band's upper end is used to choose the cubic tolerance. The range of
+// lod_for_scale (lod.hpp), as log2 of pixels per em.
 inline constexpr int kMinLodLog2 = 3;   // 8 px/em and below share one mesh
 inline constexpr int kMaxLodLog2 = 14;  // 16,384 px/em
 

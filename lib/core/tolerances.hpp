@@ -1,0 +1,94 @@
+// Private: the tolerances and work budgets of the library's inside, with their
+// units. What a user can see (input limits, the curve bound, defaults of
+// documented behaviour) is in the public curvetext/tolerances.hpp, which this
+// header includes, so code that needs both includes this one.
+#pragma once
+
+#include <cstddef>
+
+#include "curvetext/tolerances.hpp"
+
+namespace curvetext::tolerance {
+
+// --- Mesh building (lib/tessellate) -----------------------------------------
+// Relative area error allowed by the area identity check (mesh vs outline).
+inline constexpr double kAreaIdentityRelative = 1e-6;
+// Floor of the area the identity's error is relative to, as a fraction of the
+// squared diagonal of the outline's control box (dimensionless). Outlines
+// whose nonzero area is zero (contours that cancel, back-and-forth lines)
+// have reference areas of rounding noise (~1e-16 of diag^2) otherwise
+// compared relatively to nothing.
+inline constexpr double kAreaIdentityFloorOfBox = 1e-6;
+// Deepest de Casteljau subdivision used to separate overlapping curve hulls.
+inline constexpr int kMaxHullSubdivisionDepth = 10;
+// Points closer than this fraction of the outline's largest |coordinate| are
+// merged when building loops (dimensionless; 1e-9 font units for a glyph whose
+// coordinates reach 1000). Relative, so that an outline drawn in tiny units
+// (a triangle of side 1e-9) keeps its pieces.
+inline constexpr double kMergeDistanceRelative = 1e-12;
+// A conic whose control point lies closer to its chord's line than this
+// fraction of the chord length is treated as a straight line (dimensionless;
+// the area this ignores is below 1e-9 of the chord length squared). Also the
+// tolerance for recognising a two-line spike that folds back on itself.
+inline constexpr double kConicFlatnessRelative = 1e-9;
+
+// Work budget of one build_mesh call: hull separation may make at most this
+// many pieces per piece of the cleaned outline (cubics already replaced), plus
+// kMeshWorkBase, and the crossing resolver as many arrangement edges and as
+// many cut points per round. Past it build_mesh throws Error(Geometry) instead
+// of running on (every glyph of every face of the corpus fonts builds within
+// it: docs/corpus.md). Dimensionless counts.
+inline constexpr std::size_t kMeshWorkPerPiece = 64;
+inline constexpr std::size_t kMeshWorkBase = 4096;
+// Hull separation may test at most this many pairs of pieces whose boxes meet
+// per (kMeshWorkPerPiece) unit of that budget, summed over its passes: a path
+// that runs over itself n times has n^2 / 2 such pairs (dimensionless).
+inline constexpr std::size_t kMeshPairTestsPerPiece = 1024;
+// Ear clipping (the fallback where the sweep gives up) may look at most at
+// n^2 + kEarClipVisitsPerVertex * n + kEarClipVisitsBase vertices over all its
+// ear tests, n the polygon's vertices (dimensionless): each test looks at up
+// to every vertex, so a clip that finds its ears as it goes fits, while a
+// loop whose ears keep failing (about n^2.5 to n^3) stops with Error(Geometry).
+inline constexpr std::size_t kEarClipVisitsPerVertex = 4096;
+inline constexpr std::size_t kEarClipVisitsBase = std::size_t{1} << 24;
+
+// --- Rendering (lib/gpu, shaders/) -------------------------------------------
+// How far every triangle grows outward for `full` antialiasing (and vbaa's
+// offscreen pass), in pixels: a pixel's box reaches at most sqrt(2)/2 px
+// from its centre, so every pixel that overlaps a triangle gets a fragment of
+// it (shaders/area.frag.glsl). Also the shaders' CURVETEXT_PIXEL_REACH_PX.
+inline constexpr float kFringeWidthPx = 0.7072f;
+
+// Growing a triangle (lib/gpu/pack.cpp): where 1 + cos(angle between the two
+// edges' outward normals) is below this, the miter would reach more than
+// 1 / sqrt(this / 2) = 4 times the growth past the vertex (a corner sharper
+// than about 29 degrees), and the corner is bevelled instead. Dimensionless.
+inline constexpr double kMinMiterDenominator = 0.125;
+
+// Full antialiasing (shaders/area.frag.glsl) finds a triangle's part of a
+// pixel from its barycentrics' screen gradients, and a curved triangle's
+// control points by inverting them. For a triangle thinner than this (its
+// smallest altitude, in pixels) the gradients are huge and nearly parallel,
+// and both lose their digits (seen: 0.2-0.3 of coverage in empty pixels next
+// to a flat piece of a cubic), so it counts as empty instead: it lies within
+// this distance of a line, so it held at most sqrt(2) times this of any pixel
+// (0.0055). Also the shaders' CURVETEXT_THIN_TRIANGLE_PX.
+inline constexpr float kThinTrianglePx = 1.0f / 256.0f;
+
+// Border around a block's projected bounding box in the vbaa / msaa offscreen
+// pass, in pixels: the triangles' growth (kFringeWidthPx) plus the filter's ring
+// of one texel, rounded up.
+inline constexpr double kOffscreenBorderPx = 2.0;
+
+// Offscreen coverage textures of full / vbaa antialiasing (lib/gpu/renderer.cpp):
+// at most kCoverageTileTexels per side (RGBA8: 16 MiB), a larger block drawn
+// tile by tile; up to kCoverageSlots of them keep their passes for reuse, as
+// long as they hold at most kCoverageBudgetBytes together (past that the least
+// recently used one is redrawn). msaa's multisampled renderbuffer: at most
+// kMsaaTileTexels per side (4 samples: 16 MiB).
+inline constexpr int kCoverageTileTexels = 2048;
+inline constexpr std::size_t kCoverageSlots = 8;
+inline constexpr std::size_t kCoverageBudgetBytes = std::size_t{48} << 20;
+inline constexpr int kMsaaTileTexels = 1024;
+
+}  // namespace curvetext::tolerance
