@@ -16,6 +16,9 @@
 #include "curvetext/outline.hpp"
 #include "curvetext/tolerances.hpp"
 #include "support/expect_error.hpp"
+#include "tessellate/cleaning.hpp"
+#include "tessellate/hull_separation.hpp"
+#include "tessellate/resolve.hpp"
 #include "tessellate/rings.hpp"
 
 namespace curvetext {
@@ -270,9 +273,11 @@ std::vector<detail::Ring> star_rings(int points, int step) {
 
 TEST(MeshLimits, CrossingResolutionStopsAtItsWorkBudget) {
   const std::vector<detail::Ring> rings = star_rings(31, 13);  // 31 edges, hundreds of crossings
-  EXPECT_FALSE(detail::resolve_crossings(rings, false, nullptr).empty());
+  detail::RingPool pool;
+  detail::ResolveScratch scratch;
+  EXPECT_FALSE(detail::resolve_crossings(rings, detail::HullState::NotSeparated, SIZE_MAX, pool, scratch).empty());
   try {
-    (void)detail::resolve_crossings(rings, false, nullptr, 40);
+    (void)detail::resolve_crossings(rings, detail::HullState::NotSeparated, 40, pool, scratch);
     ADD_FAILURE() << "no error past the budget";
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ErrorCode::Geometry);
@@ -294,9 +299,11 @@ TEST(MeshLimits, HullSeparationStopsAtItsWorkBudget) {
     o.close();
   }
   std::vector<detail::Ring> rings;
-  ASSERT_TRUE(detail::clean_rings(o, 0.25, 1e-12, rings));
-  bool crossing = false;
-  EXPECT_THROW(detail::separate_hulls(rings, &crossing, true, 9), Error);
+  detail::RingPool pool;
+  detail::CleanScratch clean_scratch;
+  ASSERT_TRUE(detail::clean_rings(o, 0.25, 1e-12, rings, pool, clean_scratch));
+  detail::HullScratch hull_scratch;
+  EXPECT_THROW(detail::separate_hulls(rings, detail::CrossingSplits::Split, 9, hull_scratch, pool), Error);
   // Within the real budget the mesh is built and checked.
   const MeshCheck check = build_and_check(o, 0.25);
   EXPECT_TRUE(check.ok());

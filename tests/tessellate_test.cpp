@@ -992,6 +992,10 @@ TEST(Crossing, RandomOverlappingCircles) {
 namespace curvetext {
 namespace {
 
+// The polygon stage's scratch memory, shared by the tests below (as a mesh
+// builder shares it between meshes).
+detail::TriangulateScratch scratch;
+
 // Polygon loops for sweep_triangulate: every loop's filled side on its left
 // (outers counter-clockwise, holes clockwise), all positions in `points`.
 struct Loops {
@@ -1090,7 +1094,7 @@ TEST(Sweep, RandomStarsWithHolesAndIslands) {
     if (loops.outers == 0) continue;
     SCOPED_TRACE("trial " + std::to_string(trial));
     std::vector<std::array<std::uint32_t, 3>> triangles;
-    if (!detail::sweep_triangulate(loops.points, loops.vertices, loops.start, triangles)) {
+    if (!detail::sweep_triangulate(loops.points, loops.vertices, loops.start, triangles, scratch)) {
       // Integer rounding can put three star vertices on a line through an
       // extreme vertex; only then may the sweep give up.
       EXPECT_TRUE(integer);
@@ -1118,7 +1122,7 @@ TEST(Sweep, AxisAlignedShapesWithEqualHeights) {
   frame.add(square(6, 1, 3, false), true);
   for (const Loops* loops : {&e, &comb, &frame}) {
     std::vector<std::array<std::uint32_t, 3>> triangles;
-    ASSERT_TRUE(detail::sweep_triangulate(loops->points, loops->vertices, loops->start, triangles));
+    ASSERT_TRUE(detail::sweep_triangulate(loops->points, loops->vertices, loops->start, triangles, scratch));
     expect_triangulation(*loops, triangles);
   }
 }
@@ -1146,7 +1150,7 @@ TEST(Sweep, HeightsClusteredByAFarVertexOrIsland) {
     spread.add(random_star(rng, {0, 0}, 12 + trial, 100, 150, integer), false);
     for (const Loops* loops : {&spike, &island, &spread}) {
       std::vector<std::array<std::uint32_t, 3>> triangles;
-      if (!detail::sweep_triangulate(loops->points, loops->vertices, loops->start, triangles)) {
+      if (!detail::sweep_triangulate(loops->points, loops->vertices, loops->start, triangles, scratch)) {
         EXPECT_TRUE(integer);  // (three rounded vertices on a line through an extreme one)
         continue;
       }
@@ -1158,7 +1162,7 @@ TEST(Sweep, HeightsClusteredByAFarVertexOrIsland) {
 TEST(Sweep, GivesUpOnTouchingAndDegenerateLoops) {
   auto gives_up = [](const Loops& loops) {
     std::vector<std::array<std::uint32_t, 3>> triangles{{7, 8, 9}};
-    const bool ok = detail::sweep_triangulate(loops.points, loops.vertices, loops.start, triangles);
+    const bool ok = detail::sweep_triangulate(loops.points, loops.vertices, loops.start, triangles, scratch);
     EXPECT_EQ(triangles.size(), 1u);  // nothing appended
     return !ok;
   };
@@ -1185,7 +1189,7 @@ TEST(Sweep, GivesUpOnLoopsOrientedAgainstTheirNesting) {
   auto gives_up = [](const Loops& loops) {
     std::vector<std::array<std::uint32_t, 3>> triangles;
     bool repeated = true;
-    const bool ok = detail::sweep_triangulate(loops.points, loops.vertices, loops.start, triangles, &repeated);
+    const bool ok = detail::sweep_triangulate(loops.points, loops.vertices, loops.start, triangles, scratch, &repeated);
     EXPECT_FALSE(repeated);
     EXPECT_TRUE(triangles.empty());
     return !ok;
@@ -1208,7 +1212,7 @@ TEST(Sweep, GivesUpOnLoopsOrientedAgainstTheirNesting) {
   island.add(square(2, 2, 6, false), true);
   island.add(square(4, 4, 2, true), false);
   std::vector<std::array<std::uint32_t, 3>> triangles;
-  ASSERT_TRUE(detail::sweep_triangulate(island.points, island.vertices, island.start, triangles));
+  ASSERT_TRUE(detail::sweep_triangulate(island.points, island.vertices, island.start, triangles, scratch));
   expect_triangulation(island, triangles);
 }
 
@@ -1256,7 +1260,7 @@ TEST(DelaunayFlipsManifold, AgreesWithTheGeneralFlips) {
     }
     SCOPED_TRACE("trial " + std::to_string(trial));
     std::vector<std::array<std::uint32_t, 3>> swept;
-    if (!detail::sweep_triangulate(loops.points, loops.vertices, loops.start, swept)) continue;
+    if (!detail::sweep_triangulate(loops.points, loops.vertices, loops.start, swept, scratch)) continue;
     std::vector<detail::EdgeKey> constrained;
     for (std::size_t l = 0; l + 1 < loops.start.size(); ++l) {
       for (std::uint32_t k = loops.start[l]; k < loops.start[l + 1]; ++k) {
@@ -1266,8 +1270,8 @@ TEST(DelaunayFlipsManifold, AgreesWithTheGeneralFlips) {
     }
     std::sort(constrained.begin(), constrained.end());
     auto general = swept, manifold = swept;
-    detail::delaunay_flips(loops.points, general, constrained);
-    detail::delaunay_flips_manifold(loops.points, manifold);
+    detail::delaunay_flips(loops.points, general, constrained, scratch);
+    detail::delaunay_flips_manifold(loops.points, manifold, scratch);
     expect_triangulation(loops, manifold);
     auto canonical = [](std::vector<std::array<std::uint32_t, 3>> ts) {
       for (auto& t : ts) std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
@@ -1315,12 +1319,13 @@ std::vector<Vec2> crossing_star(int n) {
 TEST(EarClip, StopsAtItsWorkBudget) {
   std::vector<std::array<Vec2, 3>> triangles;
   const std::vector<Vec2> small = crossing_star(101);
-  (void)detail::ear_clip(small, triangles);  // (best effort; finishes)
+  (void)detail::ear_clip(small, triangles, scratch);  // (best effort; finishes)
   EXPECT_FALSE(triangles.empty());
   const std::vector<Vec2> star = crossing_star(4001);
   triangles.clear();
   const std::size_t budget = detail::ear_clip_budget(star.size());
-  testing::expect_error([&] { (void)detail::ear_clip(star, triangles, budget); }, ErrorCode::Geometry, "ear clipping");
+  testing::expect_error([&] { (void)detail::ear_clip(star, triangles, scratch, budget); }, ErrorCode::Geometry,
+                        "ear clipping");
 }
 
 }  // namespace

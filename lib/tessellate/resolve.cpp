@@ -1,4 +1,4 @@
-// Resolving crossing contours into non-crossing rings (DESIGN.md section 4:
+// Resolving crossing contours into non-crossing rings (docs/design.md section 4:
 // overlapping, self-intersecting and edge-sharing contours, nonzero rule).
 //
 // Strategy. Hull separation (separate_hulls) has already subdivided conics
@@ -30,36 +30,20 @@
 #include <utility>
 #include <vector>
 
-#include "curvetext/curves.hpp"
+#include "core/assert.hpp"
 #include "core/tolerances.hpp"
+#include "curvetext/curves.hpp"
+#include "tessellate/arrangement.hpp"
 #include "tessellate/columns.hpp"
 #include "tessellate/positions.hpp"
+#include "tessellate/resolve.hpp"
 #include "tessellate/rings.hpp"
 
 namespace curvetext::detail {
 namespace {
 
-// A piece of the arrangement: a line or a conic whose hull nothing enters.
-struct Edge {
-  Vec2 a, b;
-  Vec2 control;
-  double weight = 1.0;
-  bool conic = false;
-  int depth = 0;
-  int count = 1;  // net number of times the outline runs a -> b
-  Box box;
-  // New since the last conflict sweep (resolve_crossings): only pairs with a
-  // fresh edge can conflict in a way that sweep has not seen.
-  bool fresh = true;
-};
-
-Box edge_box(const Edge& e) {
-  Box box;
-  box.add(e.a);
-  box.add(e.b);
-  if (e.conic) box.add(e.control);
-  return box;
-}
+using Edge = ArrangementEdge;
+using Cut = CutPoint;
 
 int hull_points(const Edge& e, Vec2* out) {
   out[0] = e.a;
@@ -116,7 +100,7 @@ bool lines_conflict(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
 // them in a row. The pairs come in no particular order and either way round:
 // every caller's answer is independent of both.
 template <class F>
-bool for_each_close_pair(const std::vector<Edge>& edges, F&& f) {
+bool for_each_close_pair(const std::vector<Edge>& edges, ResolveScratch& scratch, F&& f) {
   const std::size_t n = edges.size();
   Box all;
   for (const Edge& e : edges) {
@@ -124,13 +108,9 @@ bool for_each_close_pair(const std::vector<Edge>& edges, F&& f) {
     all.add(e.box.max);
   }
   const bool along_y = all.max.y - all.min.y > all.max.x - all.min.x;
-  struct Key {
-    double low;
-    std::uint32_t edge;
-  };
-  // Scratch reused across calls (callers never nest this loop).
-  thread_local std::vector<Key> keys;
-  thread_local std::vector<double> sides;
+  using Key = ResolveScratch::CloseKey;
+  std::vector<Key>& keys = scratch.close_keys;  // (callers never nest this loop)
+  std::vector<double>& sides = scratch.close_sides;
   keys.resize(n);
   for (std::size_t k = 0; k < n; ++k)
     keys[k] = {along_y ? edges[k].box.min.y : edges[k].box.min.x, static_cast<std::uint32_t>(k)};
@@ -147,7 +127,7 @@ bool for_each_close_pair(const std::vector<Edge>& edges, F&& f) {
   // no pattern a predictor could learn; a branch per candidate cost more
   // than the pairs' tests for a glyph whose long stems overlap most edges
   // along a).
-  thread_local std::vector<std::uint32_t> candidates;
+  std::vector<std::uint32_t>& candidates = scratch.candidates;
   candidates.resize(n);
   std::uint32_t* const candidate = candidates.data();
   for (std::size_t i = 0; i < n; ++i) {
@@ -168,9 +148,9 @@ bool for_each_close_pair(const std::vector<Edge>& edges, F&& f) {
 // against every other (no sort): after a round of splits the fresh pieces are
 // few. Each pair once.
 template <class F>
-bool for_each_fresh_pair(const std::vector<Edge>& edges, F&& f) {
+bool for_each_fresh_pair(const std::vector<Edge>& edges, ResolveScratch& scratch, F&& f) {
   const std::size_t n = edges.size();
-  thread_local std::vector<std::uint32_t> candidates;
+  std::vector<std::uint32_t>& candidates = scratch.candidates;
   candidates.resize(n);
   std::uint32_t* const candidate = candidates.data();
   for (std::uint32_t i = 0; i < n; ++i) {
@@ -223,137 +203,6 @@ std::vector<Edge> edges_of(const std::vector<Ring>& rings) {
   return edges;
 }
 
-// Crossing points computed from different pairs of lines through one point
-// differ in their last bits; left apart they make slivers and zero-length
-// loops. Cut points closer than the merge distance to an end point of any
-// edge become that end point, and to each other the first of them (the merge
-// distance is 1e-12 of the outline's size or largest coordinate, far above the
-// rounding error of a crossing of lines that are not nearly parallel).
-struct Cut {
-  std::uint32_t edge;
-  Vec2 p;
-};
-
-void snap_cuts(const std::vector<Edge>& edges, std::vector<Cut>& cuts) {
-  thread_local std::vector<Vec2> vertices;
-  vertices.clear();
-  Box all;
-  for (const Edge& e : edges) {
-    vertices.push_back(e.a);
-    vertices.push_back(e.b);
-    all.add(e.a);
-    all.add(e.b);
-  }
-  const double extent = std::max(all.max.x - all.min.x, all.max.y - all.min.y);
-  const double largest =
-      std::max({std::fabs(all.min.x), std::fabs(all.min.y), std::fabs(all.max.x), std::fabs(all.max.y)});
-  const double eps = tolerance::kMergeDistanceRelative * std::max(extent, largest);
-  auto by_x = [](Vec2 a, Vec2 b) { return a.x != b.x ? a.x < b.x : a.y < b.y; };
-  struct Loose {
-    Vec2 p;
-    std::size_t cut;
-  };
-  thread_local std::vector<Loose> loose;
-  loose.clear();
-  // The loose cut points (near no vertex) onto each other, in (x, y) order:
-  // each becomes the nearest earlier representative within eps (the last in
-  // that order among equally near ones), or a representative itself. (Only
-  // equal points compare equal here, and they snap alike: the result does
-  // not depend on the order of the cuts.) The representatives come in x
-  // order because the loose points do.
-  thread_local std::vector<Vec2> reps;
-  auto snap_loose = [&](auto&& nearest_rep) {
-    std::sort(loose.begin(), loose.end(), [&](const Loose& a, const Loose& b) { return by_x(a.p, b.p); });
-    reps.clear();
-    for (const Loose& l : loose) {
-      Vec2 r;
-      if (nearest_rep(l.p, r)) {
-        cuts[l.cut].p = r;
-      } else {
-        reps.push_back(l.p);
-      }
-    }
-  };
-  // With few cuts (the usual resolve), each looks for its vertex by scanning
-  // them as they are, which costs less than sorting them: the same vertex as
-  // below (the nearest within eps, Chebyshev; the last in (x, y) order among
-  // equally near ones). Most cut points are crossings near no vertex: a
-  // branch-free count of the vertices within eps finds those first. The
-  // loose ones then meet each other in a scan too.
-  if (cuts.size() <= 16) {
-    thread_local std::vector<double> coordinates;
-    const auto [xs, ys] = columns<2>(coordinates, vertices.size());
-    for (std::size_t k = 0; k < vertices.size(); ++k) {
-      xs[k] = vertices[k].x;
-      ys[k] = vertices[k].y;
-    }
-    for (std::size_t k = 0; k < cuts.size(); ++k) {
-      Cut& c = cuts[k];
-      std::size_t near = 0;
-      for (std::size_t v = 0; v < vertices.size(); ++v)
-        near += static_cast<std::size_t>((std::fabs(xs[v] - c.p.x) <= eps) & (std::fabs(ys[v] - c.p.y) <= eps));
-      if (near == 0) {
-        loose.push_back({c.p, k});
-        continue;
-      }
-      double best = eps;
-      bool found = false;
-      Vec2 nearest{};
-      for (const Vec2 v : vertices) {
-        const double d = std::max(std::fabs(v.x - c.p.x), std::fabs(v.y - c.p.y));
-        if (d < best || (d == best && (!found || !by_x(v, nearest)))) {
-          best = d;
-          nearest = v;
-          found = true;
-        }
-      }
-      c.p = nearest;
-    }
-    snap_loose([&](Vec2 p, Vec2& out) {
-      double best = eps;
-      bool found = false;
-      for (const Vec2 r : reps) {
-        const double d = std::max(std::fabs(r.x - p.x), std::fabs(r.y - p.y));
-        if (d <= best) {
-          best = d;
-          out = r;
-          found = true;
-        }
-      }
-      return found;
-    });
-    return;
-  }
-  std::sort(vertices.begin(), vertices.end(), by_x);
-  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-  // The nearest point of a list sorted by x within eps (Chebyshev) of p.
-  auto nearest = [eps](const std::vector<Vec2>& sorted, Vec2 p, Vec2& out) {
-    auto it = std::lower_bound(sorted.begin(), sorted.end(), p.x - eps, [](Vec2 v, double x) { return v.x < x; });
-    double best = eps;
-    bool found = false;
-    for (; it != sorted.end() && it->x <= p.x + eps; ++it) {
-      const double d = std::max(std::fabs(it->x - p.x), std::fabs(it->y - p.y));
-      if (d <= best) {
-        best = d;
-        out = *it;
-        found = true;
-      }
-    }
-    return found;
-  };
-  // First onto existing vertices (all of them, whatever the order of
-  // discovery), then the remaining cut points onto each other.
-  for (std::size_t k = 0; k < cuts.size(); ++k) {
-    Vec2 v;
-    if (nearest(vertices, cuts[k].p, v)) {
-      cuts[k].p = v;
-    } else {
-      loose.push_back({cuts[k].p, k});
-    }
-  }
-  snap_loose([&](Vec2 p, Vec2& out) { return nearest(reps, p, out); });
-}
-
 // The cut points two lines i and j (not the same segment) make on each
 // other: their crossing, or the end points of one lying inside the other.
 void line_pair_cuts(const std::vector<Edge>& edges, std::uint32_t i, std::uint32_t j, std::vector<Cut>& cuts) {
@@ -394,381 +243,12 @@ void line_pair_cuts(const std::vector<Edge>& edges, std::uint32_t i, std::uint32
   if (o4 == 0 && point_on_segment(f.a, f.b, e.b)) cut(j, e.b);
 }
 
-// Splits line edges at the cut points found on them (line_pair_cuts), after
-// snapping the points together (snap_cuts). The pieces of a split edge are
-// fresh; other edges keep their flag. Returns true when some edge was split.
-bool split_at_cuts(std::vector<Edge>& edges, std::vector<Cut>& cuts) {
-  if (cuts.empty()) return false;
-  thread_local std::vector<Vec2> along;  // scratch
-  thread_local std::vector<Edge> next;
-  snap_cuts(edges, cuts);
-  // Each edge's cuts together, in the order found.
-  std::stable_sort(cuts.begin(), cuts.end(), [](const Cut& a, const Cut& b) { return a.edge < b.edge; });
-  next.clear();
-  next.reserve(edges.size() + cuts.size());
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < edges.size(); ++i) {
-    if (k == cuts.size() || cuts[k].edge != i) {
-      next.push_back(edges[i]);
-      continue;
-    }
-    const Edge& e = edges[i];
-    const Vec2 dir = e.b - e.a;
-    along.clear();
-    for (; k < cuts.size() && cuts[k].edge == i; ++k) along.push_back(cuts[k].p);
-    std::sort(along.begin(), along.end(), [&](Vec2 p, Vec2 q) { return dot(p - e.a, dir) < dot(q - e.a, dir); });
-    along.erase(std::unique(along.begin(), along.end()), along.end());
-    Vec2 from = e.a;
-    along.push_back(e.b);
-    for (const Vec2 p : along) {
-      if (p == from) continue;
-      Edge piece = e;
-      piece.a = from;
-      piece.b = p;
-      piece.box = edge_box(piece);
-      piece.fresh = true;
-      next.push_back(piece);
-      from = p;
-    }
-  }
-  edges.swap(next);
-  return true;
-}
-
-// Coincident edges become one with the sum of their directed counts; edges
-// whose count cancels (a contour running back over another) disappear. Each
-// edge is directed from its smaller end and looked up in a hash table of the
-// edges kept so far: the merged edges come in the order of their first
-// occurrence.
-void merge_coincident(const std::vector<Edge>& edges, std::vector<Edge>& merged) {
-  auto same_key = [](const Edge& e, const Edge& f) {
-    return e.a == f.a && e.b == f.b && e.conic == f.conic &&
-           (!e.conic || (e.control == f.control && e.weight == f.weight));
-  };
-  merged.clear();
-  merged.reserve(edges.size());
-  const int bits = position_table_bits(edges.size());
-  thread_local std::vector<std::int32_t> slots;  // index into merged, or -1
-  slots.assign(std::size_t{1} << bits, -1);
-  const std::size_t mask = (std::size_t{1} << bits) - 1;
-  for (const Edge& e0 : edges) {
-    Edge e = e0;
-    if (std::make_pair(e.b.x, e.b.y) < std::make_pair(e.a.x, e.a.y)) {
-      std::swap(e.a, e.b);
-      e.count = -e.count;
-    }
-    if (e.a == e.b) continue;
-    std::size_t slot = (position_hash(canonical(e.a), bits) ^ position_hash(canonical(e.b), bits) * 3) & mask;
-    for (;; slot = (slot + 1) & mask) {
-      const std::int32_t k = slots[slot];
-      if (k < 0) {
-        slots[slot] = static_cast<std::int32_t>(merged.size());
-        merged.push_back(e);
-        break;
-      }
-      if (same_key(merged[static_cast<std::size_t>(k)], e)) {
-        merged[static_cast<std::size_t>(k)].count += e.count;
-        break;
-      }
-    }
-  }
-  merged.erase(std::remove_if(merged.begin(), merged.end(), [](const Edge& e) { return e.count == 0; }), merged.end());
-}
-
-// Angular order of directions from a common vertex v (exact: signs of
-// coordinate differences are exact in floating point, cross signs by orient2d).
-bool angle_less(Vec2 v, Vec2 p, Vec2 q) {
-  auto half = [v](Vec2 r) { return (r.y < v.y || (r.y == v.y && r.x < v.x)) ? 1 : 0; };
-  const int hp = half(p), hq = half(q);
-  if (hp != hq) return hp < hq;
-  return orient2d(v, p, q) > 0;
-}
-
-// Winding numbers just left and right of each edge. A ray from the edge's
-// midpoint m along +x (or +y for edges closer to horizontal, done by rotating
-// every point by -90 degrees, which is exact) crosses the other edges; the
-// half-open rule with exact orient2d counts each crossing once. Other edges
-// do not pass within the edge's interior (the arrangement does not cross),
-// so the rounded m is on the same side of all of them as the true midpoint;
-// conic caps are not entered by the ray's start (hulls are separated), and a
-// ray through a cap crosses chord and arc with the same net count.
-//
-// One ray per chain: where exactly two edges meet at a vertex, the faces on
-// either side of one continue on the same sides of the other (the plane
-// around the vertex is cut in two), so their windings are equal, sides
-// swapped when the two edges point both into or both out of the vertex.
-// Most vertices are such joints; only crossings and touches end a chain, and
-// there the windings pass from chain to chain too (below), so one ray is cast
-// per connected part of the arrangement instead of one per edge.
-void side_windings(const std::vector<Edge>& edges, std::vector<int>& left, std::vector<int>& right) {
-  const std::size_t n = edges.size();
-  left.assign(n, 0);
-  right.assign(n, 0);
-  if (n == 0) return;
-
-  // The chains: a position held by exactly two ends of two different edges
-  // joins them. End k is edge k / 2's start (k even) or end (k odd); a hash
-  // table of positions holds each position's first end, with how many ends
-  // it has and its second.
-  // Up to two joins per edge (at a and at b): the other edge, and whether its
-  // sides are swapped.
-  struct Join {
-    std::uint32_t other = UINT32_MAX;
-    bool swapped = false;
-  };
-  thread_local std::vector<Join> joins;
-  joins.assign(2 * n, Join{});
-  auto end_point = [&](std::size_t k) { return (k & 1) != 0 ? edges[k / 2].b : edges[k / 2].a; };
-  // Each end's position's first end; per first end, how many ends are there.
-  thread_local std::vector<std::uint32_t> first_of, ends_at;
-  first_of.resize(2 * n);
-  {
-    thread_local std::vector<std::int32_t> slots;        // scratch
-    thread_local std::vector<std::uint32_t> second_end;  // per first end
-    FirstAtPosition ends(slots, 2 * n, end_point);
-    ends_at.assign(2 * n, 0);
-    second_end.resize(2 * n);
-    for (std::uint32_t k = 0; k < 2 * n; ++k) {
-      const std::uint32_t first = ends.add(k);
-      first_of[k] = first;
-      if (++ends_at[first] == 2) second_end[first] = k;
-    }
-    for (std::size_t k = 0; k < 2 * n; ++k) {
-      if (ends_at[k] != 2) continue;
-      const std::size_t u = k, v = second_end[k];
-      const std::uint32_t eu = static_cast<std::uint32_t>(u / 2), ev = static_cast<std::uint32_t>(v / 2);
-      if (eu == ev) continue;
-      const bool u_at_b = (u & 1) != 0, v_at_b = (v & 1) != 0;
-      const bool swapped = u_at_b == v_at_b;
-      joins[u] = {ev, swapped};
-      joins[v] = {eu, swapped};
-    }
-  }
-
-  // Only edges whose span in the ray's perpendicular coordinate contains the
-  // midpoint's can be crossed: the rays test every edge when they are few,
-  // and otherwise look at one bin of edges (of y for horizontal rays, of x
-  // for vertical ones, by their closed spans; about n / 2 bins, one array
-  // each, counted then filled).
-  struct Bins {
-    double lo = 0.0, scale = 0.0;
-    std::size_t count = 1;
-    std::vector<std::uint32_t> start;  // bin k's edges: members[start[k] .. start[k + 1])
-    std::vector<std::uint32_t> members;
-    std::size_t bin(double v) const {
-      const double k = (v - lo) * scale;
-      if (!(k > 0.0)) return 0;
-      return std::min(count - 1, static_cast<std::size_t>(k));
-    }
-  };
-  Box all;
-  for (const Edge& e : edges) {
-    all.add(e.a);
-    all.add(e.b);
-  }
-  const std::size_t count = std::clamp<std::size_t>(n / 2, 1, 4096);
-  auto make_bins = [&](bool use_x) {
-    Bins b;
-    b.count = count;
-    b.lo = use_x ? all.min.x : all.min.y;
-    const double hi = use_x ? all.max.x : all.max.y;
-    b.scale = hi > b.lo ? static_cast<double>(count) / (hi - b.lo) : 0.0;
-    auto span = [&](std::uint32_t j) {
-      const double v0 = use_x ? std::min(edges[j].a.x, edges[j].b.x) : std::min(edges[j].a.y, edges[j].b.y);
-      const double v1 = use_x ? std::max(edges[j].a.x, edges[j].b.x) : std::max(edges[j].a.y, edges[j].b.y);
-      return std::pair{b.bin(v0), b.bin(v1)};
-    };
-    b.start.assign(count + 1, 0);
-    for (std::uint32_t j = 0; j < n; ++j) {
-      const auto [first, last] = span(j);
-      for (std::size_t k = first; k <= last; ++k) ++b.start[k + 1];
-    }
-    for (std::size_t k = 0; k < count; ++k) b.start[k + 1] += b.start[k];
-    b.members.resize(b.start[count]);
-    std::vector<std::uint32_t> fill(b.start.begin(), b.start.end() - 1);
-    for (std::uint32_t j = 0; j < n; ++j) {
-      const auto [first, last] = span(j);
-      for (std::size_t k = first; k <= last; ++k) b.members[fill[k]++] = j;
-    }
-    return b;
-  };
-  std::optional<Bins> by_y, by_x;
-  std::size_t rays = 0;
-  // The ends' heights in either frame, one array each: y, and for rotated
-  // rays -x (the rotated frame's y, exact).
-  thread_local std::vector<double> heights;
-  // Named pointers, not a structured binding: the lambda below captures
-  // them, which clang before 16 does not allow for bindings.
-  const auto height_columns = columns<4>(heights, n);
-  double *const a_y = height_columns[0], *const b_y = height_columns[1], *const a_rotated = height_columns[2],
-                *const b_rotated = height_columns[3];
-  for (std::size_t j = 0; j < n; ++j) {
-    a_y[j] = edges[j].a.y;
-    b_y[j] = edges[j].b.y;
-    a_rotated[j] = -edges[j].a.x;
-    b_rotated[j] = -edges[j].b.x;
-  }
-  thread_local std::vector<std::uint32_t> straddling;
-  straddling.resize(n);
-  // Left and right winding of edge i by its own ray.
-  auto cast = [&](std::size_t i) {
-    const Edge& e = edges[i];
-    const bool rotate = std::fabs(e.b.x - e.a.x) > std::fabs(e.b.y - e.a.y);
-    auto tf = [rotate](Vec2 p) { return rotate ? Vec2{p.y, -p.x} : p; };
-    const Vec2 mid = (e.a + e.b) * 0.5;
-    const Vec2 m = tf(mid);
-    int w = 0;
-    // Only an edge whose span straddles the ray's line can be crossed: those
-    // are gathered first, without a branch per edge (most do not straddle,
-    // in no order a predictor could learn).
-    const double* const a_height = rotate ? a_rotated : a_y;
-    const double* const b_height = rotate ? b_rotated : b_y;
-    std::size_t found = 0;
-    auto gather = [&](std::uint32_t j) {
-      straddling[found] = j;
-      found += static_cast<std::size_t>(((a_height[j] <= m.y) != (b_height[j] <= m.y)) & (j != i));
-    };
-    auto test = [&](std::uint32_t j) {
-      const Edge& f = edges[j];
-      const Vec2 a = tf(f.a), b = tf(f.b);
-      // For an edge sharing an end point with e, every point of e's open
-      // interior is on the side of f's line where e's other end is; asking
-      // that end instead of the rounded midpoint is exact even for a tiny e.
-      Vec2 probe = m;
-      if (f.a == e.a || f.b == e.a) probe = tf(e.b);
-      if (f.a == e.b || f.b == e.b) probe = tf(e.a);
-      if (a.y <= m.y) {
-        if (b.y > m.y && orient2d(a, b, probe) > 0) w += f.count;
-      } else if (b.y <= m.y && orient2d(a, b, probe) < 0) {
-        w -= f.count;
-      }
-    };
-    // The first 16 rays (or all of them, for fewer than 64 edges) test every
-    // edge, about what making the bins costs; later ones use the bins.
-    if (++rays <= 16 || n < 64) {
-      for (std::uint32_t j = 0; j < n; ++j) gather(j);
-    } else {
-      std::optional<Bins>& slot = rotate ? by_x : by_y;
-      if (!slot) slot = make_bins(rotate);
-      const std::size_t k = slot->bin(rotate ? mid.x : mid.y);
-      for (std::uint32_t c = slot->start[k]; c < slot->start[k + 1]; ++c) gather(slot->members[c]);
-    }
-    for (std::size_t c = 0; c < found; ++c) test(straddling[c]);
-    const bool upward = tf(e.b).y > tf(e.a).y;
-    left[i] = upward ? w + e.count : w;
-    right[i] = upward ? w : w - e.count;
-  };
-
-  // The nodes: positions where other than two ends meet (crossings,
-  // touches, merged edges), which end chains. Around a node the faces
-  // between consecutive edges (in angular order) differ by the count of the
-  // edge between them, so one edge's windings there give all the others':
-  // the windings spread from chain to chain through the nodes, and a ray is
-  // cast only for a chain none of that reaches (one per connected part of
-  // the arrangement). Node m's ends are node_ends[node_start[m] ..
-  // node_start[m + 1]), sorted by angle when the node is first used.
-  thread_local std::vector<std::uint32_t> node_of, node_start, node_ends;
-  node_of.assign(2 * n, UINT32_MAX);  // per first end: its node
-  node_start.assign(1, 0);
-  for (std::size_t k = 0; k < 2 * n; ++k) {
-    if (first_of[k] != k || ends_at[k] == 2) continue;
-    node_of[k] = static_cast<std::uint32_t>(node_start.size() - 1);
-    node_start.push_back(node_start.back() + ends_at[k]);
-  }
-  const std::size_t nodes = node_start.size() - 1;
-  node_ends.resize(node_start.back());
-  thread_local std::vector<std::uint32_t> fill;
-  fill.assign(node_start.begin(), node_start.end() - 1);
-  for (std::size_t k = 0; k < 2 * n; ++k) {
-    const std::uint32_t m = node_of[first_of[k]];
-    if (m != UINT32_MAX) node_ends[fill[m]++] = static_cast<std::uint32_t>(k);
-  }
-  thread_local std::vector<char> done, node_done;
-  done.assign(n, 0);
-  node_done.assign(nodes, 0);
-  thread_local std::vector<std::uint32_t> pending;  // edges whose windings are set, ends not yet looked at
-  pending.clear();
-  // Along the chain of `first` (windings set) both ways.
-  auto walk_chain = [&](std::size_t first) {
-    pending.push_back(static_cast<std::uint32_t>(first));
-    for (int way = 0; way < 2; ++way) {
-      std::size_t from = first;
-      bool at_b = way == 0;  // leave `from` through this end
-      for (;;) {
-        const Join join = joins[2 * from + at_b];
-        if (join.other == UINT32_MAX || done[join.other]) break;
-        const std::size_t to = join.other;
-        left[to] = join.swapped ? right[from] : left[from];
-        right[to] = join.swapped ? left[from] : right[from];
-        done[to] = 1;
-        pending.push_back(static_cast<std::uint32_t>(to));
-        // `to` was entered through its end at the join: at b when the sides
-        // were not swapped and we left `from` through b, and so on; leave it
-        // through the other end.
-        const bool entered_at_b = join.swapped ? at_b : !at_b;
-        at_b = !entered_at_b;
-        from = to;
-      }
-    }
-  };
-  // Node m, where some edge's windings are known: every other edge there.
-  auto spread_at = [&](std::uint32_t m) {
-    node_done[m] = 1;
-    std::uint32_t* const first_end = node_ends.data() + node_start[m];
-    std::uint32_t* const last_end = node_ends.data() + node_start[m + 1];
-    const Vec2 v = end_point(*first_end);
-    // Counter-clockwise by the direction to each edge's other end (a conic's
-    // chord: hulls are separated, so chords and arcs leave v in one order).
-    auto other_end = [&](std::uint32_t k) { return end_point(k ^ 1u); };
-    std::sort(first_end, last_end,
-              [&](std::uint32_t x, std::uint32_t y) { return angle_less(v, other_end(x), other_end(y)); });
-    const std::size_t degree = static_cast<std::size_t>(last_end - first_end);
-    std::size_t known = degree;
-    for (std::size_t j = 0; j < degree; ++j)
-      if (done[first_end[j] / 2]) {
-        known = j;
-        break;
-      }
-    if (known == degree) return;
-    // sector = the winding just counter-clockwise of the current end. An
-    // edge leaving v has its left side counter-clockwise of it, one
-    // arriving its right side.
-    auto leaves = [](std::uint32_t k) { return (k & 1) == 0; };
-    std::uint32_t k = first_end[known];
-    int sector = leaves(k) ? left[k / 2] : right[k / 2];
-    for (std::size_t step = 1; step < degree; ++step) {
-      k = first_end[(known + step) % degree];
-      const std::size_t e = k / 2;
-      const int before = sector;
-      sector += leaves(k) ? edges[e].count : -edges[e].count;
-      if (done[e]) continue;
-      left[e] = leaves(k) ? sector : before;
-      right[e] = leaves(k) ? before : sector;
-      done[e] = 1;
-      walk_chain(e);
-    }
-  };
-  for (std::size_t first = 0; first < n; ++first) {
-    if (done[first]) continue;
-    cast(first);
-    done[first] = 1;
-    walk_chain(first);
-    while (!pending.empty()) {
-      const std::uint32_t e = pending.back();
-      pending.pop_back();
-      for (std::uint32_t k = 2 * e; k < 2 * e + 2; ++k) {
-        const std::uint32_t m = node_of[first_of[k]];
-        if (m != UINT32_MAX && !node_done[m]) spread_at(m);
-      }
-    }
-  }
-}
-
 }  // namespace
 
-bool rings_cross(const std::vector<Ring>& rings, bool hulls_separated) {
+bool rings_cross(const std::vector<Ring>& rings, HullState hulls, ResolveScratch& scratch) {
+  const bool hulls_separated = hulls == HullState::Separated;
   const std::vector<Edge> edges = edges_of(rings);
-  return for_each_close_pair(edges, [&](std::uint32_t i, std::uint32_t j) {
+  return for_each_close_pair(edges, scratch, [&](std::uint32_t i, std::uint32_t j) {
     const Edge& e = edges[i];
     const Edge& f = edges[j];
     if (e.conic || f.conic) {
@@ -789,261 +269,330 @@ bool lines_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   return orient2d(shared, p, q) == 0 && dot(p - shared, q - shared) > 0.0;
 }
 
-std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, bool hulls_separated, bool* settled,
-                                    std::size_t max_pieces) {
+namespace {
+
+// One call of resolve_crossings: the arrangement of the rings' pieces made
+// free of conflicts (rounds of splits), its edges' windings, and the loops
+// of the edges that bound the fill.
+class CrossingResolver {
+ public:
+  CrossingResolver(HullState hulls, std::size_t max_pieces, RingPool& pool, ResolveScratch& scratch)
+      : hulls_separated_(hulls == HullState::Separated), max_pieces_(max_pieces), pool_(pool), s_(scratch) {}
+
+  std::vector<Ring> run(const std::vector<Ring>& rings, bool* settled);
+
+ private:
+  // Rounded crossing points can make new crossings round after round; the
+  // budget stops an arrangement that keeps growing.
+  void within_budget(const char* what, std::size_t used) const {
+    if (used > max_pieces_) work_budget_exceeded(what, used, max_pieces_);
+  }
+  bool remove_conflicts();
+  bool find_conflicts(int round);
+  void split_marked_conics();
+  void keep_boundary_edges();
+  void number_vertices();
+  std::uint32_t out_degree(std::uint32_t v) const {
+    return v == kNoVertex ? 0u : s_.out_first[v + 1] - s_.out_first[v];
+  }
+  std::uint32_t next_edge(std::uint32_t incoming) const;
+  bool trace_loop(std::uint32_t start);
+  Ring drop_straight_vertices();
+  void keep(Ring&& loop, std::vector<Ring>& out);
+
+  static constexpr std::uint32_t kNoVertex = UINT32_MAX;
+  const bool hulls_separated_;
+  const std::size_t max_pieces_;
+  RingPool& pool_;
+  ResolveScratch& s_;
+  std::vector<Edge> edges_;
+  std::vector<char> marked_;  // conics in conflict, to be halved
+  std::vector<Edge> next_;
+};
+
+std::vector<Ring> CrossingResolver::run(const std::vector<Ring>& rings, bool* settled) {
   // Coincident edges (a path that retraces itself, contours sharing edges)
   // are merged first: n runs over one edge are one edge with a count, not
   // n^2 / 2 pairs to cut.
-  std::vector<Edge> edges;
-  merge_coincident(edges_of(rings), edges);
-  // Rounded crossing points can make new crossings round after round; the
-  // budget stops an arrangement that keeps growing.
-  auto within_budget = [&](const char* what, std::size_t used) {
-    if (used > max_pieces) work_budget_exceeded(what, used, max_pieces);
-  };
+  merge_coincident(edges_of(rings), edges_, s_.slots);
+  const bool conflicts_left = remove_conflicts();
+  keep_boundary_edges();
+  number_vertices();
+  s_.controls.clear();
+  for (const Edge& e : s_.kept)
+    if (e.conic) s_.controls.push_back(e.control);
+  s_.used.assign(s_.kept.size(), 0);
+  std::vector<Ring> out;
+  for (std::uint32_t start = 0; start < s_.kept.size(); ++start) {
+    if (s_.used[start]) continue;
+    const bool may_repeat = trace_loop(start);
+    Ring simple = drop_straight_vertices();
+    // A loop passes through a vertex twice only where two kept edges leave it.
+    if (!may_repeat) {
+      keep(std::move(simple), out);
+      continue;
+    }
+    for (Ring& sub : split_at_repeated_vertices(simple, s_.slots)) keep(std::move(sub), out);
+    pool_.recycle(std::move(simple));
+  }
+  if (settled != nullptr) *settled = !conflicts_left;
+  return out;
+}
 
-  // Conics in conflict with another piece (sharing a point other than a
-  // common vertex, or both end points) are halved, and flattened once at the
-  // subdivision limit, where their arcs are within ~1e-6 of the curve's size
-  // of their chords. Lines are split at their cut points (crossings, and end
-  // points lying inside them). Each crossing point is rounded to doubles,
-  // which can move a piece by an ulp into a new crossing, or near a conic's
-  // vertex into the conic's hull, so conflicts are looked for again after
-  // every round of splits. Each round with a conic in conflict deepens every
-  // such conic, so there are at most kMaxHullSubdivisionDepth + 2 of them;
-  // line splits settle in a few rounds (the cap is generous).
+// Conics in conflict with another piece (sharing a point other than a common
+// vertex, or both end points) are halved, and flattened once at the
+// subdivision limit, where their arcs are within ~1e-6 of the curve's size of
+// their chords. Lines are split at their cut points (crossings, and end
+// points lying inside them). Each crossing point is rounded to doubles, which
+// can move a piece by an ulp into a new crossing, or near a conic's vertex
+// into the conic's hull, so conflicts are looked for again after every round
+// of splits. Each round with a conic in conflict deepens every such conic, so
+// there are at most kMaxHullSubdivisionDepth + 2 of them; line splits settle
+// in a few rounds (the cap is generous). Returns true when conflicts were
+// left when the rounds ran out.
+bool CrossingResolver::remove_conflicts() {
   constexpr int kMaxConicRounds = tolerance::kMaxHullSubdivisionDepth + 2;
   constexpr int kMaxRounds = 4 * (kMaxConicRounds + 1);
-  // One sweep per round finds both the conics in conflict and the lines'
-  // cut points. Pairs of edges that are both unchanged since the last sweep
-  // are skipped: it found them apart, or one of them would have been split
-  // and so be new.
-  thread_local std::vector<Cut> cuts;
-  // Up to this many box tests (fresh edges times all), testing the fresh
-  // edges against all costs less than the sweep's sort.
-  constexpr std::size_t kFreshPairsDirect = 4096;
-  std::vector<char> marked;
-  std::vector<Edge> next;
   int conic_rounds = 0;
-  bool conflicts_left = true;
   for (int round = 0; round < kMaxRounds; ++round) {
-    marked.assign(edges.size(), 0);
-    cuts.clear();
-    bool any = false;
-    auto test_pair = [&](std::uint32_t i, std::uint32_t j) {
-      const Edge& e = edges[i];
-      const Edge& f = edges[j];
-      if (!e.fresh && !f.fresh) return false;
-      if (!e.conic && !f.conic) {
-        if (!same_ends(e, f)) line_pair_cuts(edges, i, j, cuts);
-        within_budget("crossing resolution (cut points)", cuts.size());
-        return false;
-      }
-      // Hull separation has kept the conics apart from every piece they
-      // share no vertex with; where it split two curves at their crossing,
-      // the pieces meet at that vertex with their hulls across each other.
-      if (round == 0 && hulls_separated && !shares_an_end(e, f)) return false;
-      if (same_curve(e, f) || !pieces_conflict(e, f)) return false;
-      if (e.conic) marked[i] = 1;
-      if (f.conic) marked[j] = 1;
-      any = true;
-      return false;
-    };
-    // (Every edge is fresh in the first round.)
-    std::size_t fresh = 0;
-    for (const Edge& e : edges) fresh += static_cast<std::size_t>(e.fresh);
-    if (round > 0 && fresh * edges.size() <= kFreshPairsDirect) {
-      for_each_fresh_pair(edges, test_pair);
-    } else {
-      for_each_close_pair(edges, test_pair);
-    }
-    for (Edge& e : edges) e.fresh = false;
-    if (!any) {
+    if (!find_conflicts(round)) {
       // (The last round's cuts are still made, not looked at again.)
-      if (!split_at_cuts(edges, cuts)) {
-        conflicts_left = false;
-        break;
-      }
-      within_budget("crossing resolution (edges)", edges.size());
+      if (!split_at_cuts(edges_, s_.cuts, s_)) return false;
+      within_budget("crossing resolution (edges)", edges_.size());
       continue;
     }
     if (conic_rounds++ == kMaxConicRounds) {
-      split_at_cuts(edges, cuts);
-      within_budget("crossing resolution (edges)", edges.size());
-      break;
+      split_at_cuts(edges_, s_.cuts, s_);
+      within_budget("crossing resolution (edges)", edges_.size());
+      return true;
     }
     // Conics first; the lines' cuts are found again in the next round (the
     // lines they were on stay fresh for it).
-    for (const Cut& c : cuts) edges[c.edge].fresh = true;
-    next.clear();
-    next.reserve(edges.size() + 16);
-    for (std::size_t i = 0; i < edges.size(); ++i) {
-      const Edge& e = edges[i];
-      if (!marked[i]) {
-        next.push_back(e);
-      } else if (e.depth >= tolerance::kMaxHullSubdivisionDepth) {
-        Edge flat = e;
-        flat.conic = false;
-        flat.weight = 1.0;
-        flat.box = edge_box(flat);
-        flat.fresh = true;
-        next.push_back(flat);
-      } else {
-        const auto halves = split(Segment::conic(e.a, e.control, e.b, e.weight), 0.5);
-        for (const Segment& h : {halves.first, halves.second}) {
-          Edge half = e;
-          half.a = canonical(h.p[0]);
-          half.control = canonical(h.p[1]);
-          half.b = canonical(h.p[2]);
-          half.weight = h.weight;
-          half.depth = e.depth + 1;
-          half.box = edge_box(half);
-          half.fresh = true;
-          next.push_back(half);
-        }
+    for (const Cut& c : s_.cuts) edges_[c.edge].fresh = true;
+    split_marked_conics();
+    within_budget("crossing resolution (edges)", edges_.size());
+  }
+  return true;
+}
+
+// One sweep per round finds both the conics in conflict (marked_; returns
+// true when there is one) and the lines' cut points (s_.cuts). Pairs of
+// edges that are both unchanged since the last sweep are skipped: it found
+// them apart, or one of them would have been split and so be new.
+bool CrossingResolver::find_conflicts(int round) {
+  // Up to this many box tests (fresh edges times all), testing the fresh
+  // edges against all costs less than the sweep's sort.
+  constexpr std::size_t kFreshPairsDirect = 4096;
+  std::vector<Edge>& edges = edges_;
+  std::vector<Cut>& cuts = s_.cuts;
+  marked_.assign(edges.size(), 0);
+  cuts.clear();
+  bool any = false;
+  auto test_pair = [&](std::uint32_t i, std::uint32_t j) {
+    const Edge& e = edges[i];
+    const Edge& f = edges[j];
+    if (!e.fresh && !f.fresh) return false;
+    if (!e.conic && !f.conic) {
+      if (!same_ends(e, f)) line_pair_cuts(edges, i, j, cuts);
+      within_budget("crossing resolution (cut points)", cuts.size());
+      return false;
+    }
+    // Hull separation has kept the conics apart from every piece they share
+    // no vertex with; where it split two curves at their crossing, the pieces
+    // meet at that vertex with their hulls across each other.
+    if (round == 0 && hulls_separated_ && !shares_an_end(e, f)) return false;
+    if (same_curve(e, f) || !pieces_conflict(e, f)) return false;
+    if (e.conic) marked_[i] = 1;
+    if (f.conic) marked_[j] = 1;
+    any = true;
+    return false;
+  };
+  // (Every edge is fresh in the first round.)
+  std::size_t fresh = 0;
+  for (const Edge& e : edges) fresh += static_cast<std::size_t>(e.fresh);
+  if (round > 0 && fresh * edges.size() <= kFreshPairsDirect) {
+    for_each_fresh_pair(edges, s_, test_pair);
+  } else {
+    for_each_close_pair(edges, s_, test_pair);
+  }
+  for (Edge& e : edges) e.fresh = false;
+  return any;
+}
+
+// The marked conics halved, or made their chords at the subdivision limit.
+void CrossingResolver::split_marked_conics() {
+  next_.clear();
+  next_.reserve(edges_.size() + 16);
+  for (std::size_t i = 0; i < edges_.size(); ++i) {
+    const Edge& e = edges_[i];
+    if (!marked_[i]) {
+      next_.push_back(e);
+    } else if (e.depth >= tolerance::kMaxHullSubdivisionDepth) {
+      Edge flat = e;
+      flat.conic = false;
+      flat.weight = 1.0;
+      flat.box = edge_box(flat);
+      flat.fresh = true;
+      next_.push_back(flat);
+    } else {
+      const auto halves = split(Segment::conic(e.a, e.control, e.b, e.weight), 0.5);
+      for (const Segment& h : {halves.first, halves.second}) {
+        Edge half = e;
+        half.a = canonical(h.p[0]);
+        half.control = canonical(h.p[1]);
+        half.b = canonical(h.p[2]);
+        half.weight = h.weight;
+        half.depth = e.depth + 1;
+        half.box = edge_box(half);
+        half.fresh = true;
+        next_.push_back(half);
       }
     }
-    edges.swap(next);
-    within_budget("crossing resolution (edges)", edges.size());
   }
-  // (Scratch reused across calls from here on: no allocation once warm.)
-  thread_local std::vector<Edge> merged, kept;
-  thread_local std::vector<int> left, right;
-  merge_coincident(edges, merged);
-  side_windings(merged, left, right);
+  edges_.swap(next_);
+}
 
-  // Kept edges, directed with the fill on the left.
-  kept.clear();
-  kept.reserve(merged.size());
+// Kept edges (s_.kept): those with the fill on exactly one side, directed
+// with the fill on the left.
+void CrossingResolver::keep_boundary_edges() {
+  std::vector<Edge>& merged = s_.merged;
+  merge_coincident(edges_, merged, s_.slots);
+  side_windings(merged, s_.left, s_.right, s_);
+  s_.kept.clear();
+  s_.kept.reserve(merged.size());
   for (std::size_t i = 0; i < merged.size(); ++i) {
-    const bool l = left[i] != 0, r = right[i] != 0;
+    const bool l = s_.left[i] != 0, r = s_.right[i] != 0;
     if (l == r) continue;
     Edge e = merged[i];
     if (!l) std::swap(e.a, e.b);
     e.count = 1;
-    kept.push_back(e);
+    s_.kept.push_back(e);
   }
+}
 
-  // Vertices of the kept edges, numbered: each edge's start and end vertex
-  // (an end where no kept edge starts has none), found in a hash table of
-  // positions, and per vertex its outgoing edges in increasing index order
-  // (counted, then filled in edge order).
+// Vertices of the kept edges, numbered: each edge's start and end vertex (an
+// end where no kept edge starts has none), found in a hash table of
+// positions, and per vertex its outgoing edges in increasing index order
+// (counted, then filled in edge order).
+void CrossingResolver::number_vertices() {
+  const std::vector<Edge>& kept = s_.kept;
   const std::size_t kept_count = kept.size();
-  constexpr std::uint32_t kNoVertex = UINT32_MAX;
-  thread_local std::vector<std::int32_t> slots;  // scratch
-  thread_local std::vector<std::uint32_t> start_vertex, end_vertex, out_first, out_edges;
-  {
-    FirstAtPosition starts(slots, kept_count, [&](std::uint32_t i) { return kept[i].a; });
-    std::uint32_t vertices = 0;
-    start_vertex.resize(kept_count);
-    for (std::uint32_t i = 0; i < kept_count; ++i) {
-      const std::uint32_t first = starts.add(i);
-      start_vertex[i] = first == i ? vertices++ : start_vertex[first];
-    }
-    end_vertex.resize(kept_count);
-    for (std::size_t i = 0; i < kept_count; ++i) {
-      const std::int32_t first = starts.find(kept[i].b);
-      end_vertex[i] = first < 0 ? kNoVertex : start_vertex[static_cast<std::size_t>(first)];
-    }
-    out_first.assign(vertices + 1, 0);
-    for (std::size_t i = 0; i < kept_count; ++i) ++out_first[start_vertex[i] + 1];
-    for (std::size_t v = 0; v < vertices; ++v) out_first[v + 1] += out_first[v];
-    out_edges.resize(kept_count);
-    for (std::size_t i = 0; i < kept_count; ++i)
-      out_edges[out_first[start_vertex[i]]++] = static_cast<std::uint32_t>(i);
-    // (Filling moved each vertex's first to its end: shift back.)
-    for (std::size_t v = vertices; v > 0; --v) out_first[v] = out_first[v - 1];
-    out_first[0] = 0;
+  std::vector<std::uint32_t>& start_vertex = s_.start_vertex;
+  std::vector<std::uint32_t>& end_vertex = s_.end_vertex;
+  std::vector<std::uint32_t>& out_first = s_.out_first;
+  std::vector<std::uint32_t>& out_edges = s_.out_edges;
+  FirstAtPosition starts(s_.slots, kept_count, [&](std::uint32_t i) { return kept[i].a; });
+  std::uint32_t vertices = 0;
+  start_vertex.resize(kept_count);
+  for (std::uint32_t i = 0; i < kept_count; ++i) {
+    const std::uint32_t first = starts.add(i);
+    start_vertex[i] = first == i ? vertices++ : start_vertex[first];
   }
-  auto out_degree = [&](std::uint32_t v) { return v == kNoVertex ? 0u : out_first[v + 1] - out_first[v]; };
-
-  // At v, coming along u -> v: the next edge is the first outgoing one
-  // clockwise from the direction back to u. Fill-on-left edges alternate in
-  // and out around v, so this pairs each incoming edge with one outgoing edge.
-  auto next_edge = [&](std::uint32_t incoming) -> std::uint32_t {
-    const Edge& in = kept[incoming];
-    const Vec2 v = in.b;
-    const std::uint32_t vertex = end_vertex[incoming];
-    std::uint32_t best_before = UINT32_MAX, best_any = UINT32_MAX;
-    if (vertex == kNoVertex) return best_any;
-    for (std::uint32_t k = out_first[vertex]; k < out_first[vertex + 1]; ++k) {
-      const std::uint32_t o = out_edges[k];
-      const Vec2 p = kept[o].b;
-      if (best_any == UINT32_MAX || angle_less(v, kept[best_any].b, p)) best_any = o;
-      if (angle_less(v, p, in.a) && (best_before == UINT32_MAX || angle_less(v, kept[best_before].b, p))) {
-        best_before = o;
-      }
-    }
-    return best_before != UINT32_MAX ? best_before : best_any;
-  };
-
-  thread_local std::vector<Vec2> controls;  // of the kept conics
-  controls.clear();
-  for (const Edge& e : kept)
-    if (e.conic) controls.push_back(e.control);
-  auto is_control_point = [&](Vec2 p) { return std::find(controls.begin(), controls.end(), p) != controls.end(); };
-  thread_local std::vector<char> used;
-  used.assign(kept_count, 0);
-  thread_local Ring traced;                            // scratch: one loop as traced
-  thread_local std::vector<std::uint32_t> ring_edges;  // the kept edge of each piece
-  std::vector<Ring> out;
-  // A loop passes through a vertex twice only where two kept edges leave it.
-  auto keep = [&](Ring&& loop) {
-    const bool has_conic = std::any_of(loop.begin(), loop.end(), [](const Piece& p) { return p.conic; });
-    if (loop.size() < 2 || (loop.size() == 2 && !has_conic) || ring_area(loop) == 0.0) {
-      recycle_ring(std::move(loop));
-      return;
-    }
-    out.push_back(std::move(loop));
-  };
-  for (std::uint32_t start = 0; start < kept_count; ++start) {
-    if (used[start]) continue;
-    traced.clear();
-    ring_edges.clear();
-    bool may_repeat = false;
-    std::uint32_t cur = start;
-    for (std::size_t steps = 0; steps <= kept_count; ++steps) {
-      used[cur] = 1;
-      Piece p;
-      p.a = kept[cur].a;
-      p.conic = kept[cur].conic;
-      p.control = kept[cur].control;
-      p.weight = kept[cur].weight;
-      p.depth = kept[cur].depth;
-      traced.push_back(p);
-      ring_edges.push_back(cur);
-      may_repeat |= out_degree(start_vertex[cur]) > 1;
-      const std::uint32_t nxt = next_edge(cur);
-      if (nxt == UINT32_MAX || nxt == start || used[nxt]) break;
-      cur = nxt;
-    }
-    // Straight-through vertices where the boundary passes alone (one kept
-    // edge out) are dropped: they come from splitting at crossings whose
-    // other edges turned out interior. A vertex at a conic's control point is
-    // kept: there a conic's leg runs exactly along the line (as hull
-    // separation aligned it), and the longer line would overlap the leg.
-    Ring simple = take_ring();
-    for (std::size_t i = 0; i < traced.size(); ++i) {
-      const std::size_t prev = (i + traced.size() - 1) % traced.size();
-      if (traced.size() > 3 && !traced[i].conic && !traced[prev].conic &&
-          out_degree(start_vertex[ring_edges[i]]) == 1) {
-        const Vec2 a = traced[prev].a, b = traced[i].a, c = ring_end(traced, i);
-        if (orient2d(a, b, c) == 0 && dot(b - a, c - b) > 0.0 && !is_control_point(b)) continue;
-      }
-      simple.push_back(traced[i]);
-    }
-    // Dropping is decided against the original neighbours; consecutive drops
-    // are fine because each dropped vertex lies on the line through its
-    // neighbours and all of them on one straight run.
-    if (!may_repeat) {
-      keep(std::move(simple));
-      continue;
-    }
-    for (Ring& sub : split_at_repeated_vertices(simple)) keep(std::move(sub));
-    recycle_ring(std::move(simple));
+  end_vertex.resize(kept_count);
+  for (std::size_t i = 0; i < kept_count; ++i) {
+    const std::int32_t first = starts.find(kept[i].b);
+    end_vertex[i] = first < 0 ? kNoVertex : start_vertex[static_cast<std::size_t>(first)];
   }
-  if (settled != nullptr) *settled = !conflicts_left;
-  return out;
+  out_first.assign(vertices + 1, 0);
+  for (std::size_t i = 0; i < kept_count; ++i) ++out_first[start_vertex[i] + 1];
+  for (std::size_t v = 0; v < vertices; ++v) out_first[v + 1] += out_first[v];
+  out_edges.resize(kept_count);
+  for (std::size_t i = 0; i < kept_count; ++i) out_edges[out_first[start_vertex[i]]++] = static_cast<std::uint32_t>(i);
+  // (Filling moved each vertex's first to its end: shift back.)
+  for (std::size_t v = vertices; v > 0; --v) out_first[v] = out_first[v - 1];
+  out_first[0] = 0;
+  CURVETEXT_ASSERT(out_first[vertices] == kept_count);  // every kept edge leaves one vertex
+}
+
+// At v, coming along u -> v: the next edge is the first outgoing one
+// clockwise from the direction back to u. Fill-on-left edges alternate in
+// and out around v, so this pairs each incoming edge with one outgoing edge.
+std::uint32_t CrossingResolver::next_edge(std::uint32_t incoming) const {
+  const std::vector<Edge>& kept = s_.kept;
+  const Edge& in = kept[incoming];
+  const Vec2 v = in.b;
+  const std::uint32_t vertex = s_.end_vertex[incoming];
+  std::uint32_t best_before = UINT32_MAX, best_any = UINT32_MAX;
+  if (vertex == kNoVertex) return best_any;
+  for (std::uint32_t k = s_.out_first[vertex]; k < s_.out_first[vertex + 1]; ++k) {
+    const std::uint32_t o = s_.out_edges[k];
+    const Vec2 p = kept[o].b;
+    if (best_any == UINT32_MAX || arrangement_angle_less(v, kept[best_any].b, p)) best_any = o;
+    if (arrangement_angle_less(v, p, in.a) &&
+        (best_before == UINT32_MAX || arrangement_angle_less(v, kept[best_before].b, p))) {
+      best_before = o;
+    }
+  }
+  return best_before != UINT32_MAX ? best_before : best_any;
+}
+
+// One loop of kept edges from `start`, into s_.traced (with each piece's
+// edge in s_.ring_edges). Returns true when it may pass through a vertex
+// twice (it left a vertex where two kept edges leave).
+bool CrossingResolver::trace_loop(std::uint32_t start) {
+  const std::vector<Edge>& kept = s_.kept;
+  s_.traced.clear();
+  s_.ring_edges.clear();
+  bool may_repeat = false;
+  std::uint32_t cur = start;
+  for (std::size_t steps = 0; steps <= kept.size(); ++steps) {
+    s_.used[cur] = 1;
+    Piece p;
+    p.a = kept[cur].a;
+    p.conic = kept[cur].conic;
+    p.control = kept[cur].control;
+    p.weight = kept[cur].weight;
+    p.depth = kept[cur].depth;
+    s_.traced.push_back(p);
+    s_.ring_edges.push_back(cur);
+    may_repeat |= out_degree(s_.start_vertex[cur]) > 1;
+    const std::uint32_t nxt = next_edge(cur);
+    if (nxt == UINT32_MAX || nxt == start || s_.used[nxt]) break;
+    cur = nxt;
+  }
+  return may_repeat;
+}
+
+// The traced loop without its straight-through vertices where the boundary
+// passes alone (one kept edge out): they come from splitting at crossings
+// whose other edges turned out interior. A vertex at a conic's control point
+// is kept: there a conic's leg runs exactly along the line (as hull
+// separation aligned it), and the longer line would overlap the leg.
+// Dropping is decided against the original neighbours; consecutive drops are
+// fine because each dropped vertex lies on the line through its neighbours
+// and all of them on one straight run.
+Ring CrossingResolver::drop_straight_vertices() {
+  const Ring& traced = s_.traced;
+  auto is_control_point = [&](Vec2 p) {
+    return std::find(s_.controls.begin(), s_.controls.end(), p) != s_.controls.end();
+  };
+  Ring simple = pool_.take();
+  for (std::size_t i = 0; i < traced.size(); ++i) {
+    const std::size_t prev = (i + traced.size() - 1) % traced.size();
+    if (traced.size() > 3 && !traced[i].conic && !traced[prev].conic &&
+        out_degree(s_.start_vertex[s_.ring_edges[i]]) == 1) {
+      const Vec2 a = traced[prev].a, b = traced[i].a, c = ring_end(traced, i);
+      if (orient2d(a, b, c) == 0 && dot(b - a, c - b) > 0.0 && !is_control_point(b)) continue;
+    }
+    simple.push_back(traced[i]);
+  }
+  return simple;
+}
+
+void CrossingResolver::keep(Ring&& loop, std::vector<Ring>& out) {
+  const bool has_conic = std::any_of(loop.begin(), loop.end(), [](const Piece& p) { return p.conic; });
+  if (loop.size() < 2 || (loop.size() == 2 && !has_conic) || ring_area(loop) == 0.0) {
+    pool_.recycle(std::move(loop));
+    return;
+  }
+  out.push_back(std::move(loop));
+}
+
+}  // namespace
+
+std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, HullState hulls, std::size_t max_pieces,
+                                    RingPool& pool, ResolveScratch& scratch, bool* settled) {
+  return CrossingResolver(hulls, max_pieces, pool, scratch).run(rings, settled);
 }
 
 }  // namespace curvetext::detail

@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/assert.hpp"
 #include "tessellate/positions.hpp"
 #include "tessellate/predicates.hpp"
 #include "tessellate/triangulate.hpp"
@@ -42,17 +43,17 @@ constexpr int kNone = -1;
 // interval holds two, left (poly[0]) and right (poly[1]) of it, until the
 // next vertex in the interval connects to the merge vertex, which is the top
 // of both stacks.
-struct Interval {
-  std::uint32_t left = 0, right = 0;
-  int poly[2] = {kNone, kNone};
-  bool merged = false;
-};
+using Interval = SweepScratch::Interval;
+// The chain of a monotone polygon a vertex joins.
+enum class Chain { Left, Right };
+static_assert(SweepScratch::kNoPolygon == kNone);
 
 class Sweep {
  public:
   Sweep(const std::vector<Vec2>& points, const std::vector<std::uint32_t>& loop_vertices,
-        const std::vector<std::uint32_t>& loop_start, std::vector<std::array<std::uint32_t, 3>>& triangles)
-      : points_(points), vertices_(loop_vertices), start_(loop_start), out_(triangles) {}
+        const std::vector<std::uint32_t>& loop_start, std::vector<std::array<std::uint32_t, 3>>& triangles,
+        SweepScratch& scratch)
+      : points_(points), vertices_(loop_vertices), start_(loop_start), out_(triangles), s_(scratch) {}
 
   bool run();
   // After run(): the number of triangles a valid input gives, and whether it
@@ -65,34 +66,22 @@ class Sweep {
   const std::vector<std::uint32_t>& vertices_;
   const std::vector<std::uint32_t>& start_;
   std::vector<std::array<std::uint32_t, 3>>& out_;
+  SweepScratch& s_;
   bool ok_ = true;
   bool repeated_ = false;
   std::size_t expected_ = 0;
 
   // Per loop position: the neighbours in its loop, and the rank in sweep order.
-  std::vector<std::uint32_t>& prev_ = scratch_u32(0);
-  std::vector<std::uint32_t>& next_ = scratch_u32(1);
-  std::vector<std::uint32_t>& rank_ = scratch_u32(2);
-  std::vector<std::uint32_t>& order_ = scratch_u32(3);
-  std::vector<std::uint32_t>& loop_of_ = scratch_u32(4);  // per loop position: its loop
-  // Per loop position: its point (one indirection fewer than points_[vertices_[i]]).
-  std::vector<Vec2>& position_ = scratch<Vec2>();
-  std::vector<Interval>& status_ = scratch<Interval>();
-  // Monotone polygon stacks: loop positions, kRightSide on right-chain entries.
-  std::vector<std::vector<std::uint32_t>>& stacks_ = scratch<std::vector<std::uint32_t>>();
-  std::vector<int>& free_stacks_ = scratch<int>();
+  std::vector<std::uint32_t>& prev_ = s_.prev;
+  std::vector<std::uint32_t>& next_ = s_.next;
+  std::vector<std::uint32_t>& rank_ = s_.rank;
+  std::vector<std::uint32_t>& order_ = s_.order;
+  std::vector<std::uint32_t>& loop_of_ = s_.loop_of;
+  std::vector<Vec2>& position_ = s_.position;
+  std::vector<Interval>& status_ = s_.status;
+  std::vector<std::vector<std::uint32_t>>& stacks_ = s_.stacks;
+  std::vector<int>& free_stacks_ = s_.free_stacks;
   std::size_t stacks_used_ = 0;
-
-  // Scratch reused across calls (no allocation per glyph once warm).
-  template <class T>
-  static std::vector<T>& scratch() {
-    thread_local std::vector<T> v;
-    return v;
-  }
-  static std::vector<std::uint32_t>& scratch_u32(int k) {
-    thread_local std::vector<std::uint32_t> v[5];
-    return v[k];
-  }
 
   Vec2 at(std::uint32_t position) const { return position_[position & kIndexMask]; }
 
@@ -125,7 +114,8 @@ class Sweep {
   }
 
   // Vertex v joins the polygon's left (or right) chain.
-  void add(int poly, std::uint32_t v, bool right) {
+  void add(int poly, std::uint32_t v, Chain chain) {
+    const bool right = chain == Chain::Right;
     std::vector<std::uint32_t>& st = stacks_[static_cast<std::size_t>(poly)];
     const std::uint32_t entry = v | (right ? kRightSide : 0u);
     if (((st.back() & kRightSide) != 0) != right) {
@@ -226,8 +216,8 @@ void Sweep::split(std::uint32_t v, std::uint32_t u) {
   right_part.left = u;
   right_part.right = iv.right;
   if (iv.merged) {
-    add(iv.poly[0], v, true);
-    add(iv.poly[1], v, false);
+    add(iv.poly[0], v, Chain::Right);
+    add(iv.poly[1], v, Chain::Left);
     left_part.poly[0] = iv.poly[0];
     right_part.poly[0] = iv.poly[1];
   } else {
@@ -236,15 +226,15 @@ void Sweep::split(std::uint32_t v, std::uint32_t u) {
     const std::uint32_t helper = st.back();
     if (helper & kRightSide) {
       // The reflex chain is on the right: it stays with the left part.
-      add(poly, v, true);
+      add(poly, v, Chain::Right);
       left_part.poly[0] = poly;
       right_part.poly[0] = new_poly(helper);
-      add(right_part.poly[0], v, false);
+      add(right_part.poly[0], v, Chain::Left);
     } else {
-      add(poly, v, false);
+      add(poly, v, Chain::Left);
       right_part.poly[0] = poly;
       left_part.poly[0] = new_poly(helper);
-      add(left_part.poly[0], v, true);
+      add(left_part.poly[0], v, Chain::Right);
     }
   }
   iv = left_part;
@@ -278,17 +268,17 @@ void Sweep::merge(std::uint32_t v, std::uint32_t u) {
   int left_poly, right_poly;
   if (a.merged) {
     close(a.poly[1], v);
-    add(a.poly[0], v, true);
+    add(a.poly[0], v, Chain::Right);
   } else {
-    add(a.poly[0], v, true);
+    add(a.poly[0], v, Chain::Right);
   }
   left_poly = a.poly[0];
   if (b.merged) {
     close(b.poly[0], v);
-    add(b.poly[1], v, false);
+    add(b.poly[1], v, Chain::Left);
     right_poly = b.poly[1];
   } else {
-    add(b.poly[0], v, false);
+    add(b.poly[0], v, Chain::Left);
     right_poly = b.poly[0];
   }
   a.right = b.right;
@@ -312,7 +302,7 @@ void Sweep::regular_left(std::uint32_t v, std::uint32_t u) {
     iv.poly[1] = kNone;
     iv.merged = false;
   }
-  add(iv.poly[0], v, false);
+  add(iv.poly[0], v, Chain::Left);
   iv.left = u;
 }
 
@@ -329,7 +319,7 @@ void Sweep::regular_right(std::uint32_t v, std::uint32_t u) {
     iv.poly[1] = kNone;
     iv.merged = false;
   }
-  add(iv.poly[0], v, true);
+  add(iv.poly[0], v, Chain::Right);
   iv.right = v;
 }
 
@@ -342,7 +332,8 @@ void Sweep::regular_right(std::uint32_t v, std::uint32_t u) {
 // holds more than one event (equal y, mostly: a horizontal edge's ends).
 // Key k is that of position k, whose y lies in [low, high].
 template <class Key>
-void sort_by_key(std::vector<Key>& keys, const std::vector<Vec2>& position, double low, double high) {
+void sort_by_key(std::vector<Key>& keys, const std::vector<Vec2>& position, double low, double high,
+                 std::vector<std::uint32_t>& bucket_of, std::vector<std::uint32_t>& first, std::vector<Key>& sorted) {
   const std::size_t n = keys.size();
   auto by_key = [](const Key& a, const Key& b) { return a.yx < b.yx; };
   // (Too few events to gain: the comparison sort.)
@@ -358,8 +349,6 @@ void sort_by_key(std::vector<Key>& keys, const std::vector<Vec2>& position, doub
     return;
   }
   const std::size_t buckets = 2 * n;
-  thread_local std::vector<std::uint32_t> bucket_of, first;
-  thread_local std::vector<Key> sorted;
   bucket_of.resize(n);
   first.assign(buckets + 1, 0);
   for (std::size_t i = 0; i < n; ++i) {
@@ -399,12 +388,7 @@ bool Sweep::run() {
   loop_of_.resize(n);
   rank_.resize(n);
   position_.resize(n);
-  // Sorted as (y, x) keys (position_key) with their positions.
-  struct Key {
-    Uint128 yx;
-    std::uint32_t position;
-  };
-  thread_local std::vector<Key> keys;
+  std::vector<SweepScratch::Key>& keys = s_.keys;
   keys.clear();
   double low = n == 0 ? 0.0 : points_[vertices_[0]].y, high = low;
   for (std::size_t l = 0; l + 1 < start_.size(); ++l) {
@@ -421,7 +405,7 @@ bool Sweep::run() {
       high = std::max(high, p.y);
     }
   }
-  sort_by_key(keys, position_, low, high);
+  sort_by_key(keys, position_, low, high, s_.bucket_of, s_.first, s_.sorted);
   order_.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
     if (k > 0 && keys[k - 1].yx == keys[k].yx) {
@@ -438,7 +422,7 @@ bool Sweep::run() {
   // loop around fill (n - 2 triangles), a split vertex for a hole (n + 2:
   // its two "bridges"). Any other count means the loops broke the contract.
   const std::size_t loops = start_.size() - 1;
-  thread_local std::vector<char> loop_seen;
+  std::vector<char>& loop_seen = s_.loop_seen;
   loop_seen.assign(loops, 0);
   expected_ = n - 2 * loops;
   for (std::size_t k = 0; k < order_.size() && ok_; ++k) {
@@ -477,9 +461,10 @@ bool Sweep::run() {
 
 bool sweep_triangulate(const std::vector<Vec2>& points, const std::vector<std::uint32_t>& loop_vertices,
                        const std::vector<std::uint32_t>& loop_start,
-                       std::vector<std::array<std::uint32_t, 3>>& triangles, bool* repeated_position) {
+                       std::vector<std::array<std::uint32_t, 3>>& triangles, TriangulateScratch& scratch,
+                       bool* repeated_position) {
   const std::size_t first_triangle = triangles.size();
-  Sweep sweep(points, loop_vertices, loop_start, triangles);
+  Sweep sweep(points, loop_vertices, loop_start, triangles, scratch.sweep);
   const bool ok = sweep.run() && triangles.size() - first_triangle == sweep.expected_triangles();
   if (repeated_position != nullptr) *repeated_position = sweep.repeated_position();
   if (ok) return true;

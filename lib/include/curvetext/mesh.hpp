@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -56,11 +57,37 @@ struct MeshOptions {
 // other exception leaves it (running out of memory is Error(Geometry) too).
 // A mesh that does not come from the self-checking sweep is checked with
 // check_mesh before it is returned; one that fails is Error(Geometry).
-// Thread-safe (scratch memory is per thread).
+// Thread-safe (scratch memory is per thread, or the caller's MeshBuilder).
 CURVETEXT_API Mesh build_mesh(const Outline& outline, const MeshOptions& options = {});
 // The same into `mesh`, whose contents are replaced and whose storage is
 // reused (a glyph cache building many meshes in a row allocates less).
 CURVETEXT_API void build_mesh(const Outline& outline, const MeshOptions& options, Mesh& mesh);
+
+// The scratch memory of build_mesh, kept from one mesh to the next (no
+// allocation per mesh once warm). build_mesh without a builder uses one of
+// its own per thread; a caller that builds meshes on threads of its own, or
+// wants the memory back when done, keeps one per thread and passes it. One
+// builder serves one build at a time.
+class CURVETEXT_API MeshBuilder {
+ public:
+  MeshBuilder();
+  ~MeshBuilder();
+  MeshBuilder(MeshBuilder&&) noexcept;
+  MeshBuilder& operator=(MeshBuilder&&) noexcept;
+  MeshBuilder(const MeshBuilder&) = delete;
+  MeshBuilder& operator=(const MeshBuilder&) = delete;
+
+  // build_mesh(outline, options, mesh) with this builder's memory.
+  void build(const Outline& outline, const MeshOptions& options, Mesh& mesh);
+
+  struct Scratch;  // (defined inside the library)
+
+ private:
+  std::unique_ptr<Scratch> scratch_;
+};
+
+// build_mesh into `mesh` with the memory of `builder` (builder.build).
+CURVETEXT_API void build_mesh(const Outline& outline, const MeshOptions& options, Mesh& mesh, MeshBuilder& builder);
 
 // Area enclosed by the mesh: interior triangles plus, for each curved triangle,
 // the area of its filled side (chord side for convex, outer side otherwise).
