@@ -144,7 +144,8 @@ TEST(Png, DecodeOfOtherBytesIsIoError) {
   testing::expect_error([&] { decode_png(text.data(), text.size()); }, ErrorCode::Io, "in memory");
   testing::expect_error([] { decode_png(nullptr, 0); }, ErrorCode::Io, "in memory");
   // A PNG cut short: its header reads, its pixels do not.
-  std::vector<std::uint8_t> bytes = encode_png(sample([](std::uint8_t* p, int x, int) { p[1] = 3 * x; }));
+  std::vector<std::uint8_t> bytes =
+      encode_png(sample([](std::uint8_t* p, int x, int) { p[1] = static_cast<std::uint8_t>(3 * x); }));
   bytes.resize(bytes.size() / 2);
   testing::expect_error([&] { decode_png(bytes.data(), bytes.size()); }, ErrorCode::Io, "in memory");
 }
