@@ -1,8 +1,9 @@
-// Private to lib/: CURVETEXT_ASSERT(condition) states an invariant of the
-// code itself (never of its input: bad input is an Error). It is checked in
-// debug, sanitizer and fuzz builds (CURVETEXT_ASSERTIONS, set by the top-level
-// CMakeLists.txt), where a failure prints the condition and aborts; in release
-// builds the condition is not evaluated.
+// Private interface of core/ for every stage: CURVETEXT_ASSERT(condition)
+// states an invariant of the code itself (never of its input: bad input is an
+// Error). It is checked in debug, sanitizer and fuzz builds
+// (CURVETEXT_ASSERTIONS, set by the top-level CMakeLists.txt), where a failure
+// prints the condition and aborts; in release builds the condition is not
+// evaluated.
 #pragma once
 
 #if defined(CURVETEXT_ASSERTIONS) && CURVETEXT_ASSERTIONS
