@@ -229,6 +229,24 @@ TEST(MeshLimits, RetracedPathIsBuilt) {
   EXPECT_TRUE(empty.empty());
 }
 
+// A circle of 4 conics run over itself: its identical conics all meet and
+// hull separation still tests their n^2 / 2 pairs, so 1,024 runs stop at the
+// pair-test budget (a limit docs/limits.md states; conics would need their
+// copies merged before hull separation).
+TEST(MeshLimits, RetracedConicsStopAtThePairTestBudget) {
+  Outline o;
+  const double w = std::sqrt(0.5);
+  o.move_to({1000, 0});
+  for (int k = 0; k < 1024; ++k) {
+    o.conic_to({1000, 1000}, {0, 1000}, w);
+    o.conic_to({-1000, 1000}, {-1000, 0}, w);
+    o.conic_to({-1000, -1000}, {0, -1000}, w);
+    o.conic_to({1000, -1000}, {1000, 0}, w);
+  }
+  o.close();
+  testing::expect_error([&] { (void)build_mesh(o); }, ErrorCode::Geometry, "pair tests");
+}
+
 // Hull separation halves a nearly straight arc until its last piece's
 // control point lies exactly on the piece's chord: that piece is a line, not
 // a curved triangle of zero area (a fuzz finding, from the outline below and
