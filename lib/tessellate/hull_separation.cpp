@@ -155,6 +155,8 @@ class HullSeparator {
   void test_fresh_against_all();
   void test_all_pairs();
   void sweep_and_prune();
+  void sort_boxes();
+  void scan_line_pairs(std::size_t first_i, std::size_t first_j);
   bool align_all_tangent_legs();
   void number_children();
   void split_rings();
@@ -571,6 +573,50 @@ void HullSeparator::test_all_pairs() {
 // on the order among equal keys, and the answers are combined
 // order-independently.
 void HullSeparator::sweep_and_prune() {
+  sort_boxes();
+  const auto [s_min_a, s_max_a, s_min_b, s_max_b] = columns<4>(s_.sorted_sides, count_);
+  const std::vector<HullScratch::SortKey>& keys = s_.keys;
+  std::uint32_t* const candidate = s_.candidates.data();
+  const std::vector<std::uint32_t>& conics = s_.sorted_conics;
+  // The first pair (in this scan's order) that set cross_seen_, for the
+  // scan of line pairs below.
+  std::size_t first_i = SIZE_MAX, first_j = SIZE_MAX;
+  for (std::size_t i = 0, next_conic = 0; i < count_; ++i) {
+    while (next_conic < conics.size() && conics[next_conic] <= i) ++next_conic;
+    // Boxes after box i in the order start at or after its lower side along
+    // a: they overlap it along a while they start before its upper side, and
+    // then in both when their b ranges meet. (Pieces with the same end points
+    // have overlapping boxes.) A line is paired here with the conics only:
+    // two lines have no hull to separate (see scan_line_pairs).
+    const bool conic = refs_[keys[i].ref].n == 3;
+    const double upper = s_max_a[i], low_b = s_min_b[i], high_b = s_max_b[i];
+    std::size_t found = 0, scanned = 0;
+    for (std::size_t c = next_conic, j = i + 1;; ++scanned) {
+      if (!conic) j = c < conics.size() ? conics[c++] : count_;
+      if (j >= count_ || s_min_a[j] > upper) break;
+      candidate[found] = static_cast<std::uint32_t>(j);
+      found += static_cast<std::size_t>((s_min_b[j] <= high_b) & (low_b <= s_max_b[j]));
+      if (conic) ++j;
+    }
+    // The boxes scanned count against the pair budget too (those tested are
+    // counted by test_pair): pieces stacked on each other (a contour drawn
+    // twice) make every pass's scan quadratic.
+    count_box_tests(scanned - found);
+    for (std::size_t f = 0; f < found; ++f) {
+      const bool seen = cross_seen_;
+      test_pair(refs_[keys[i].ref], refs_[keys[candidate[f]].ref]);
+      if (!seen && cross_seen_) {
+        first_i = i;
+        first_j = candidate[f];
+      }
+    }
+  }
+  scan_line_pairs(first_i, first_j);
+}
+
+// The boxes sorted along a (keys), their sides in that order (sorted_sides),
+// and the positions of the conics in it (sorted_conics).
+void HullSeparator::sort_boxes() {
   Box all;
   for (std::size_t k = 0; k < count_; ++k) {
     all.add(refs_[k].box.min);
@@ -586,9 +632,9 @@ void HullSeparator::sweep_and_prune() {
   for (std::size_t k = 0; k < count_; ++k) keys[k] = {min_a[k], static_cast<std::uint32_t>(k)};
   std::sort(keys.begin(), keys.end(),
             [](const HullScratch::SortKey& a, const HullScratch::SortKey& b) { return a.min_a < b.min_a; });
-  // The sides again in sorted order (the scan reads them in a row).
+  // The sides again in sorted order (the scans read them in a row).
   s_.candidates.resize(count_);
-  std::uint32_t* const candidate = s_.candidates.data();
+  s_.sorted_conics.clear();
   const auto [s_min_a, s_max_a, s_min_b, s_max_b] = columns<4>(s_.sorted_sides, count_);
   for (std::size_t k = 0; k < count_; ++k) {
     const std::uint32_t r = keys[k].ref;
@@ -596,23 +642,35 @@ void HullSeparator::sweep_and_prune() {
     s_max_a[k] = max_a[r];
     s_min_b[k] = min_b[r];
     s_max_b[k] = max_b[r];
+    if (refs_[r].n == 3) s_.sorted_conics.push_back(static_cast<std::uint32_t>(k));
   }
-  for (std::size_t i = 0; i < count_; ++i) {
-    // Boxes after box i in the order start at or after its lower side along
-    // a: they overlap it along a while they start before its upper side, and
-    // then in both when their b ranges meet. (Pieces with the same end points
-    // have overlapping boxes.)
+}
+
+// Pairs of lines matter only for rings_cross's answer: whether some two
+// lines cross (cross_seen_), and whether the first such pair in the order of
+// the sweep comes before the pair (first_i, first_j) at which cross_seen_
+// was set (lines_crossed_). The scan stops at the first line crossing, so a
+// path run over itself many times (its lines stacked, each crossing the
+// next) costs no more than its first crossing.
+void HullSeparator::scan_line_pairs(std::size_t first_i, std::size_t first_j) {
+  const auto [s_min_a, s_max_a, s_min_b, s_max_b] = columns<4>(s_.sorted_sides, count_);
+  const std::vector<HullScratch::SortKey>& keys = s_.keys;
+  for (std::size_t i = 0; i < count_ && i <= first_i; ++i) {
+    const HullRef& ri = refs_[keys[i].ref];
+    if (ri.n == 3) continue;
     const double upper = s_max_a[i], low_b = s_min_b[i], high_b = s_max_b[i];
-    std::size_t found = 0, j = i + 1;
-    for (; j < count_ && s_min_a[j] <= upper; ++j) {
-      candidate[found] = keys[j].ref;
-      found += static_cast<std::size_t>((s_min_b[j] <= high_b) & (low_b <= s_max_b[j]));
+    std::size_t j = i + 1;
+    for (; j < count_ && s_min_a[j] <= upper && (i < first_i || j < first_j); ++j) {
+      const HullRef& rj = refs_[keys[j].ref];
+      if (rj.n == 3 || s_min_b[j] > high_b || low_b > s_max_b[j]) continue;
+      if (lines_cross(ri.hull[0], ri.hull[1], rj.hull[0], rj.hull[1])) {
+        cross_seen_ = true;
+        lines_crossed_ = true;
+        count_box_tests(j - i);
+        return;
+      }
     }
-    // The boxes scanned count against the pair budget too (those tested are
-    // counted by test_pair): pieces stacked on each other (a contour drawn
-    // twice) make every pass's scan quadratic.
-    count_box_tests(j - i - 1 - found);
-    for (std::size_t f = 0; f < found; ++f) test_pair(refs_[keys[i].ref], refs_[candidate[f]]);
+    count_box_tests(j - i - 1);
   }
 }
 

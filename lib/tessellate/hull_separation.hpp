@@ -55,6 +55,7 @@ struct HullScratch {
   std::vector<char> apart_from_next;
   std::vector<double> box_sides, sorted_sides;  // columns<4>: min x, max x, min y, max y
   std::vector<std::uint32_t> fresh_refs, candidates;
+  std::vector<std::uint32_t> sorted_conics;  // positions of the conics in the sweep's order
   std::vector<std::uint64_t> fresh_words;
   std::vector<SortKey> keys;
   std::vector<Vec2> line_points;  // one line's split points, in order along it
