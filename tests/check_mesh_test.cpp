@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <random>
 #include <set>
 #include <utility>
@@ -146,9 +147,9 @@ struct Polygon {
     }
     sizes.push_back(points.size());
   }
-  double area(bool& touching) {
+  double area(bool& touching, FillRule rule = FillRule::NonZero) {
     AreaSweep sweep;
-    return sweep.run(edges, sizes, touching);
+    return sweep.run(edges, sizes, rule, touching);
   }
 };
 
@@ -186,6 +187,35 @@ TEST(CheckMesh, SweptAreaOfShapesKnownInClosedForm) {
     bool touching = false;
     EXPECT_NEAR(p.area(touching), c.area, 1e-12) << c.name;
     EXPECT_EQ(touching, c.touching) << c.name;
+  }
+}
+
+// The same sweep under the even-odd rule: the windings 2 of a bow tie drawn
+// twice, of nested squares drawn alike and of a pentagram's centre are not
+// filled.
+TEST(CheckMesh, SweptAreaUnderTheEvenOddRule) {
+  struct Case {
+    const char* name;
+    std::vector<std::vector<Vec2>> contours;
+    double nonzero, even_odd;
+  };
+  const double pi = std::numbers::pi;
+  std::vector<Vec2> star;
+  for (int k = 0; k < 5; ++k)
+    star.push_back({std::cos((90 + 144 * k) * pi / 180), std::sin((90 + 144 * k) * pi / 180)});
+  const double ri = std::cos(2 * pi / 5) / std::cos(pi / 5);
+  const double star_area = 10 * 0.5 * ri * std::sin(pi / 5), pentagon = 2.5 * ri * ri * std::sin(2 * pi / 5);
+  const std::vector<Case> cases = {
+      {"two overlapping squares", {{{0, 0}, {2, 0}, {2, 2}, {0, 2}}, {{1, 1}, {3, 1}, {3, 3}, {1, 3}}}, 7, 6},
+      {"nested squares drawn alike", {{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {{1, 1}, {3, 1}, {3, 3}, {1, 3}}}, 16, 12},
+      {"pentagram", {star}, star_area, star_area - pentagon},
+  };
+  for (const Case& c : cases) {
+    Polygon p;
+    for (const auto& contour : c.contours) p.add(contour);
+    bool touching = false;
+    EXPECT_NEAR(p.area(touching), c.nonzero, 1e-12) << c.name;
+    EXPECT_NEAR(p.area(touching, FillRule::EvenOdd), c.even_odd, 1e-12) << c.name;
   }
 }
 

@@ -314,9 +314,11 @@ TEST(MeshLimits, CrossingResolutionStopsAtItsWorkBudget) {
   const std::vector<detail::Ring> rings = star_rings(31, 13);  // 31 edges, hundreds of crossings
   detail::RingPool pool;
   detail::ResolveScratch scratch;
-  EXPECT_FALSE(detail::resolve_crossings(rings, detail::HullState::NotSeparated, SIZE_MAX, pool, scratch).empty());
+  EXPECT_FALSE(
+      detail::resolve_crossings(rings, detail::HullState::NotSeparated, FillRule::NonZero, SIZE_MAX, pool, scratch)
+          .empty());
   try {
-    (void)detail::resolve_crossings(rings, detail::HullState::NotSeparated, 40, pool, scratch);
+    (void)detail::resolve_crossings(rings, detail::HullState::NotSeparated, FillRule::NonZero, 40, pool, scratch);
     ADD_FAILURE() << "no error past the budget";
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ErrorCode::Geometry);

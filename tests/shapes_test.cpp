@@ -647,6 +647,71 @@ TEST(EvenOdd, AreasAgainstClosedForms) {
   EXPECT_NEAR(mixed_out.signed_area(), mesh_area(build_mesh(mixed_out)), 1e-6 * star);
 }
 
+Outline repeated(const Outline& o, int times) {
+  Outline out;
+  for (int k = 0; k < times; ++k)
+    for (const Contour& c : o.contours()) out.contours().push_back(c);
+  return out;
+}
+
+// Pieces on top of each other cancel in pairs under the even-odd rule: a
+// contour drawn an even number of times fills nothing, an odd number of
+// times fills itself (the nonzero fill is the disc every time).
+TEST(EvenOdd, RetracedContoursCancelInPairs) {
+  const double pi = std::numbers::pi;
+  for (int times = 1; times <= 4; ++times) {
+    const Outline disc = repeated(circle({3, 1}, 10), times);
+    const double want = times % 2 ? pi * 100 : 0.0;
+    const Outline out = even_odd_to_nonzero(disc);
+    EXPECT_NEAR(out.signed_area(), want, 1e-9 * pi * 100) << times << " times";
+    MeshOptions options;
+    options.fill_rule = FillRule::EvenOdd;
+    EXPECT_NEAR(mesh_area(build_mesh(disc, options)), want, 1e-6 * pi * 100) << times << " times";
+    EXPECT_NEAR(mesh_area(build_mesh(disc)), pi * 100, 1e-6 * pi * 100) << times << " times";
+  }
+}
+
+// build_mesh takes the rule itself, and check_mesh takes the outline's area
+// under the rule the mesh was built with.
+TEST(EvenOdd, BuildMeshAndCheckMeshTakeTheRule) {
+  const double R = 100, ri = R * std::cos(2 * std::numbers::pi / 5) / std::cos(std::numbers::pi / 5);
+  const double star = 10 * 0.5 * R * ri * std::sin(std::numbers::pi / 5);
+  const double pentagon = 2.5 * ri * ri * std::sin(2 * std::numbers::pi / 5);
+  MeshOptions options;
+  options.fill_rule = FillRule::EvenOdd;
+  const Mesh odd = build_mesh(pentagram(R), options);
+  EXPECT_NEAR(mesh_area(odd), star - pentagon, 1e-9 * star);
+  EXPECT_TRUE(check_mesh(odd, pentagram(R), FillRule::EvenOdd).ok());
+  EXPECT_FALSE(check_mesh(odd, pentagram(R)).ok());  // the nonzero area has the pentagon too
+  const Mesh nonzero = build_mesh(pentagram(R));
+  EXPECT_TRUE(check_mesh(nonzero, pentagram(R)).ok());
+  EXPECT_FALSE(check_mesh(nonzero, pentagram(R), FillRule::EvenOdd).ok());
+}
+
+// fill_boundary's contours neither cross nor overlap and carry the fill on
+// their left: their nonzero and even-odd fills are the region, and each
+// contour's signed area is the area it adds.
+TEST(FillBoundary, ContoursBoundTheFillUnderEitherRule) {
+  const double pi = std::numbers::pi, r = 40, d = 30;
+  const double lens = 2 * r * r * std::acos(d / (2 * r)) - 0.5 * d * std::sqrt(4 * r * r - d * d);
+  const Outline discs = merged(circle({0, 0}, r), circle({d, 0}, r));
+  const struct {
+    FillRule rule;
+    double area;
+  } cases[] = {{FillRule::NonZero, 2 * pi * r * r - lens}, {FillRule::EvenOdd, 2 * pi * r * r - 2 * lens}};
+  for (const auto& c : cases) {
+    const Outline boundary = fill_boundary(discs, c.rule);
+    EXPECT_NEAR(boundary.signed_area(), c.area, 1e-9 * c.area);
+    MeshOptions odd;
+    odd.fill_rule = FillRule::EvenOdd;
+    EXPECT_NEAR(mesh_area(build_mesh(boundary)), c.area, 1e-6 * c.area);
+    EXPECT_NEAR(mesh_area(build_mesh(boundary, odd)), c.area, 1e-6 * c.area);
+  }
+  // Oriented with the fill on the left: a clockwise disc comes back counter-clockwise.
+  EXPECT_NEAR(fill_boundary(circle({0, 0}, r, true), FillRule::NonZero).signed_area(), pi * r * r, 1e-9 * r * r);
+  EXPECT_TRUE(fill_boundary(Outline{}, FillRule::EvenOdd).empty());
+}
+
 TEST(EvenOdd, BadInput) {
   Outline o;
   o.move_to({0, 0});

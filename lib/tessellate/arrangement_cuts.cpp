@@ -92,38 +92,68 @@ void snap_few_cuts(std::vector<Cut>& cuts, double eps, ResolveScratch& scratch) 
   });
 }
 
-// The nearest point of a list sorted by x within eps (Chebyshev) of p.
-bool nearest_sorted(const std::vector<Vec2>& sorted, Vec2 p, double eps, Vec2& out) {
-  auto it = std::lower_bound(sorted.begin(), sorted.end(), p.x - eps, [](Vec2 v, double x) { return v.x < x; });
-  double best = eps;
-  bool found = false;
-  for (; it != sorted.end() && it->x <= p.x + eps; ++it) {
-    const double d = std::max(std::fabs(it->x - p.x), std::fabs(it->y - p.y));
-    if (d <= best) {
-      best = d;
-      out = *it;
-      found = true;
-    }
+// The nearest point within eps (Chebyshev) of p among those inserted, the
+// greatest in (x, y) order among equally near ones. Points are kept in square
+// cells of side eps, so a query reads the 3 x 3 cells around p whatever the
+// outline's shape (a window over one sorted axis holds every point of a thin
+// outline lying along the other). Cell keys may collide; distances decide.
+class SnapGrid {
+ public:
+  SnapGrid(ResolveScratch::SnapCells& cells, double eps) : cells_(cells), eps_(eps), side_(eps > 0 ? eps : 1.0) {
+    cells_.clear();
   }
-  return found;
-}
+  void insert(Vec2 p) { cells_[key(cell(p.x), cell(p.y))].push_back(p); }
+  bool nearest(Vec2 p, Vec2& out) const {
+    const std::int64_t cx = cell(p.x), cy = cell(p.y);
+    double best = eps_;
+    bool found = false;
+    for (std::int64_t i = cx - 1; i <= cx + 1; ++i) {
+      for (std::int64_t j = cy - 1; j <= cy + 1; ++j) {
+        const auto it = cells_.find(key(i, j));
+        if (it == cells_.end()) continue;
+        for (const Vec2 v : it->second) {
+          const double d = std::max(std::fabs(v.x - p.x), std::fabs(v.y - p.y));
+          if (d < best || (d == best && (!found || by_x(out, v)))) {
+            best = d;
+            out = v;
+            found = true;
+          }
+        }
+      }
+    }
+    return found;
+  }
 
-// Many cuts: the vertices sorted by x, each cut looked up there. First onto
+ private:
+  std::int64_t cell(double v) const { return static_cast<std::int64_t>(std::floor(v / side_)); }
+  static std::uint64_t key(std::int64_t i, std::int64_t j) {
+    return static_cast<std::uint64_t>(i) * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint64_t>(j);
+  }
+  ResolveScratch::SnapCells& cells_;
+  double eps_;
+  double side_;
+};
+
+// Many cuts: the vertices in a SnapGrid, each cut looked up there. First onto
 // existing vertices (all of them, whatever the order of discovery), then the
 // remaining cut points onto each other.
 void snap_many_cuts(std::vector<Cut>& cuts, double eps, ResolveScratch& scratch) {
-  std::vector<Vec2>& vertices = scratch.vertices;
-  std::sort(vertices.begin(), vertices.end(), by_x);
-  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  SnapGrid vertices(scratch.vertex_cells, eps);
+  for (const Vec2 v : scratch.vertices) vertices.insert(v);
   for (std::size_t k = 0; k < cuts.size(); ++k) {
     Vec2 v;
-    if (nearest_sorted(vertices, cuts[k].p, eps, v)) {
+    if (vertices.nearest(cuts[k].p, v)) {
       cuts[k].p = v;
     } else {
       scratch.loose.push_back({cuts[k].p, k});
     }
   }
-  snap_loose(cuts, scratch, [&](Vec2 p, Vec2& out) { return nearest_sorted(scratch.representatives, p, eps, out); });
+  SnapGrid representatives(scratch.representative_cells, eps);
+  snap_loose(cuts, scratch, [&](Vec2 p, Vec2& out) {
+    if (representatives.nearest(p, out)) return true;
+    representatives.insert(p);
+    return false;
+  });
 }
 
 // Crossing points computed from different pairs of lines through one point

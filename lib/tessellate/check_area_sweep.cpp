@@ -93,7 +93,9 @@ void AreaSweep::prepare(const std::vector<Edge>& edges) {
   centre_x_ = box.empty() ? 0.0 : 0.5 * (box.min.x + box.max.x);
 }
 
-double AreaSweep::run(const std::vector<Edge>& edges, const std::vector<std::size_t>& contour_size, bool& touching) {
+double AreaSweep::run(const std::vector<Edge>& edges, const std::vector<std::size_t>& contour_size, FillRule rule,
+                      bool& touching) {
+  rule_ = rule;
   edges_ = &edges;
   contour_size_ = &contour_size;
   prepare(edges);
@@ -254,16 +256,16 @@ void AreaSweep::swap_adjacent(Tree::iterator left, Tree::iterator right, Vec2 at
 }
 
 // Adds the run of p from p.from to `to`: where p bounds the nonzero region
-// (exactly one side nonzero), the integral of x dy, and the cap's share.
+// (exactly one side filled), the integral of x dy, and the cap's share.
 void AreaSweep::close(Piece& p, Vec2 to) {
   const int w_plus = p.w_minus - p.up;
   const double dy = to.y - p.from.y;
-  const double bound = static_cast<double>(p.w_minus != 0) - static_cast<double>(w_plus != 0);
+  const double bound = static_cast<double>(fills(rule_, p.w_minus)) - static_cast<double>(fills(rule_, w_plus));
   area_ += bound * (0.5 * (p.from.x + to.x) - centre_x_) * dy;
   if (p.cap != 0.0 && p.dy > 0.0) {
     // Left of the contour's direction: the -x side when it runs upwards.
     const int left = p.up > 0 ? p.w_minus : w_plus, right = p.up > 0 ? w_plus : p.w_minus;
-    caps_ += p.cap * (dy / p.dy) * (static_cast<double>(left != 0) - static_cast<double>(right != 0));
+    caps_ += p.cap * (dy / p.dy) * (static_cast<double>(fills(rule_, left)) - static_cast<double>(fills(rule_, right)));
   }
   p.from = to;
 }

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "curvetext/geometry.hpp"
+#include "tessellate/rings.hpp"
 
 namespace curvetext::detail {
 
@@ -35,11 +36,12 @@ class AreaSweep {
   AreaSweep(const AreaSweep&) = delete;
   AreaSweep& operator=(const AreaSweep&) = delete;
 
-  // Nonzero area of the edges (each contour closed). `touching` is set when
+  // Area of the edges' fill under `rule` (each contour closed). `touching` is set when
   // two edges meet other than as consecutive pieces of one contour at their
   // common end that are not collinear: a crossing, a vertex on another edge,
   // a shared vertex, a collinear overlap.
-  double run(const std::vector<Edge>& edges, const std::vector<std::size_t>& contour_size, bool& touching);
+  double run(const std::vector<Edge>& edges, const std::vector<std::size_t>& contour_size, FillRule rule,
+             bool& touching);
 
  private:
   struct Slot {
@@ -99,6 +101,7 @@ class AreaSweep {
   std::priority_queue<Crossing, std::vector<Crossing>, LaterKey> crossings_;
   Vec2 now_;
   double centre_x_ = 0.0, area_ = 0.0, caps_ = 0.0;
+  FillRule rule_ = FillRule::NonZero;
   bool touching_ = false;
 };
 

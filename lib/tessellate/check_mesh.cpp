@@ -97,10 +97,10 @@ int winding_around(const Contour& contour, const Box& box, const std::vector<Vec
   return 0;
 }
 
-// Contours that do not touch: each adds its area where the others' winding
-// around it changes from zero to nonzero. Only contours whose boxes overlap
-// can wind around each other.
-double nonzero_outline_area(const Outline& outline, CheckScratch& scratch) {
+// Contours that do not touch: each adds its area where the winding across it
+// changes from unfilled to filled (the others' winding around it, and its
+// own added). Only contours whose boxes overlap can wind around each other.
+double outline_area(const Outline& outline, FillRule rule, CheckScratch& scratch) {
   const auto& contours = outline.contours();
   const std::size_t n = contours.size();
   std::vector<double> area(n);
@@ -125,7 +125,8 @@ double nonzero_outline_area(const Outline& outline, CheckScratch& scratch) {
   for (std::size_t i = 0; i < n; ++i) {
     if (area[i] == 0.0) continue;
     const int inside = outside[i] + (area[i] > 0 ? 1 : -1);
-    total += (static_cast<double>(inside != 0) - static_cast<double>(outside[i] != 0)) * std::fabs(area[i]);
+    total += (static_cast<double>(detail::fills(rule, inside)) - static_cast<double>(detail::fills(rule, outside[i]))) *
+             std::fabs(area[i]);
   }
   return total;
 }
@@ -340,11 +341,11 @@ Contact edge_contacts(const std::vector<detail::AreaSweep::Edge>& edges, const s
   return found ? Contact::Some : Contact::None;
 }
 
-// Nonzero area by the sweep over the flattened outline; `crossing` is set
+// Area under `rule` by the sweep over the flattened outline; `crossing` is set
 // when two edges meet other than as consecutive pieces of one contour (then
 // only this method is right). Without a crossing NaN is returned (and the
 // sweep skipped where a scan of the edges' box pairs shows there is none).
-double swept_nonzero_area(const Outline& outline, bool& crossing, CheckScratch& scratch) {
+double swept_area(const Outline& outline, FillRule rule, bool& crossing, CheckScratch& scratch) {
   const std::vector<std::vector<FlatEdge>> contours = flattened(outline, scratch);
   std::vector<detail::AreaSweep::Edge> edges;
   std::vector<std::size_t> contour_size;
@@ -360,7 +361,7 @@ double swept_nonzero_area(const Outline& outline, bool& crossing, CheckScratch& 
   }
   crossing = false;
   if (edge_contacts(edges, contour_size, scratch) == Contact::None) return std::numeric_limits<double>::quiet_NaN();
-  const double area = scratch.sweep.run(edges, contour_size, crossing);
+  const double area = scratch.sweep.run(edges, contour_size, rule, crossing);
   return crossing ? area : std::numeric_limits<double>::quiet_NaN();
 }
 
@@ -433,13 +434,13 @@ bool collect_faces(const Mesh& mesh, MeshCheck& check, std::vector<Face>& faces)
   return true;
 }
 
-void check_area(const Mesh& mesh, const Outline& outline, MeshCheck& check, CheckScratch& scratch) {
+void check_area(const Mesh& mesh, const Outline& outline, FillRule rule, MeshCheck& check, CheckScratch& scratch) {
   check.area_mesh = mesh_area(mesh);
   // Contours that meet other than at vertices need the sweep; otherwise the
   // exact per-contour method (closed-form conic areas) is used.
   bool crossing = false;
-  const double swept = swept_nonzero_area(outline, crossing, scratch);
-  check.area_outline = crossing ? swept : nonzero_outline_area(outline, scratch);
+  const double swept = swept_area(outline, rule, crossing, scratch);
+  check.area_outline = crossing ? swept : outline_area(outline, rule, scratch);
   const Box control_box = outline.control_box();
   const Vec2 diagonal = control_box.empty() ? Vec2{} : control_box.max - control_box.min;
   const double floor = tolerance::kAreaIdentityFloorOfBox * dot(diagonal, diagonal);
@@ -556,12 +557,12 @@ void check_hull_overlaps(const Mesh& mesh, const std::vector<Face>& faces, MeshC
   }
 }
 
-MeshCheck check_mesh_of(const Mesh& mesh, const Outline& quadratic_outline) {
+MeshCheck check_mesh_of(const Mesh& mesh, const Outline& quadratic_outline, FillRule rule) {
   MeshCheck check;
   CheckScratch scratch;
   std::vector<Face> faces;
   if (!collect_faces(mesh, check, faces)) return check;
-  check_area(mesh, quadratic_outline, check, scratch);
+  check_area(mesh, quadratic_outline, rule, check, scratch);
   check_degenerate(mesh, faces, check);
   check_watertight(mesh, faces, check);
   check_hull_overlaps(mesh, faces, check, scratch);
@@ -570,7 +571,7 @@ MeshCheck check_mesh_of(const Mesh& mesh, const Outline& quadratic_outline) {
 
 }  // namespace
 
-MeshCheck check_mesh(const Mesh& mesh, const Outline& quadratic_outline) {
+MeshCheck check_mesh(const Mesh& mesh, const Outline& quadratic_outline, FillRule rule) {
   try {
     // The outline as build_mesh reads it (tiny coordinates as 0), so that
     // the areas compared are of the same outline.
@@ -582,7 +583,7 @@ MeshCheck check_mesh(const Mesh& mesh, const Outline& quadratic_outline) {
       add_problem(check, "outline coordinates beyond the largest build_mesh accepts");
       return check;
     }
-    return check_mesh_of(mesh, flush ? flushed : quadratic_outline);
+    return check_mesh_of(mesh, flush ? flushed : quadratic_outline, rule);
   } catch (const std::bad_alloc&) {
     throw Error(ErrorCode::Geometry, "check_mesh: out of memory while checking the mesh");
   }

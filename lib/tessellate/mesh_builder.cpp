@@ -193,6 +193,9 @@ class Build {
   // RepeatedVertices::Keep, a ring through a vertex twice made the sweep give
   // up: the caller then builds again with RepeatedVertices::Split.
   bool run(const Outline& outline);
+  // The outline's cleaned rings after crossing resolution under the fill
+  // rule (always resolved, so oriented with the fill on their left).
+  Outline boundary(const Outline& outline);
   // The mesh does not come from the self-checking sweep, or the outline was
   // approximated: check_mesh must pass before it is returned.
   bool needs_check() const { return needs_check_; }
@@ -225,6 +228,7 @@ class Build {
   // which lets sweep_triangulate take their loops when no position repeats.
   bool simple_edges_ = false;
   bool resolved_rings_ = false;
+  bool force_resolve_ = false;  // boundary(): resolve whether or not rings meet
   bool swept_ = false;
   bool repeated_position_ = false;   // the sweep gave up where a position repeats
   std::optional<PointIndex> index_;  // made when the general path needs it
@@ -264,6 +268,27 @@ bool Build::run(const Outline& outline) {
   return true;
 }
 
+Outline Build::boundary(const Outline& outline) {
+  force_resolve_ = true;
+  clean(outline);
+  separate();
+  Outline out;
+  for (const Ring& ring : s_.rings) {
+    if (ring.empty()) continue;
+    out.move_to(ring[0].a);
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      if (ring[i].conic) {
+        out.conic_to(ring[i].control, ring_end(ring, i), ring[i].weight);
+      } else {
+        out.line_to(ring_end(ring, i));
+      }
+    }
+    out.close();
+  }
+  s_.pool.recycle_all(s_.rings);
+  return out;
+}
+
 void Build::clean(const Outline& outline) {
   bool approximated = false;
   if (!clean_rings(outline, options_.cubic_tolerance, merge_distance_, s_.rings, s_.pool, s_.clean, repeated_,
@@ -285,14 +310,19 @@ void Build::separate() {
   const HullSeparation separation = separate_hulls(s_.rings, CrossingSplits::Split, budget_, s_.hulls, s_.pool);
   stage_mark(MeshStage::Separate);
   simple_edges_ = separation.separated && !separation.crossing;
-  if (separation.crossing || (!separation.separated && rings_cross(s_.rings, HullState::NotSeparated, s_.resolve)))
+  // Under the even-odd rule nesting (which counts nonzero windings) cannot
+  // tell the fill, so the resolver always runs: its rings bound the fill.
+  const bool always = force_resolve_ || options_.fill_rule == FillRule::EvenOdd;
+  if ((always && !s_.rings.empty()) || separation.crossing ||
+      (!separation.separated && rings_cross(s_.rings, HullState::NotSeparated, s_.resolve)))
     resolve(separation.separated ? HullState::Separated : HullState::NotSeparated);
   stage_mark(MeshStage::Resolve);
 }
 
 void Build::resolve(HullState hulls) {
   bool settled = false;
-  std::vector<Ring> resolved = resolve_crossings(s_.rings, hulls, budget_, s_.pool, s_.resolve, &settled);
+  std::vector<Ring> resolved =
+      resolve_crossings(s_.rings, hulls, options_.fill_rule, budget_, s_.pool, s_.resolve, &settled);
   s_.pool.recycle_all(s_.rings);
   s_.rings = std::move(resolved);
   resolved_rings_ = true;
@@ -553,7 +583,7 @@ void build_checked_mesh(Scratch& scratch, const Outline& outline, const MeshOpti
   // Self-check before success: a mesh from the general path (ear clipping, or
   // crossings resolved with conflicts left) that breaks an invariant is an
   // error, never a result.
-  const MeshCheck check = check_mesh(mesh, to_quadratic_outline(outline, options.cubic_tolerance));
+  const MeshCheck check = check_mesh(mesh, to_quadratic_outline(outline, options.cubic_tolerance), options.fill_rule);
   if (!check.ok())
     throw Error(ErrorCode::Geometry, "build_mesh: the mesh fails its own check (" + check.problems.front() + ")");
 }
@@ -565,27 +595,69 @@ MeshBuilder::~MeshBuilder() = default;
 MeshBuilder::MeshBuilder(MeshBuilder&&) noexcept = default;
 MeshBuilder& MeshBuilder::operator=(MeshBuilder&&) noexcept = default;
 
-void MeshBuilder::build(const Outline& outline, const MeshOptions& options, Mesh& mesh) {
+namespace {
+
+// The checks every entry makes; returns the outline as the stages read it
+// (tiny coordinates as 0) and its largest |coordinate|.
+const Outline& checked_input(Scratch& scratch, const Outline& outline, const MeshOptions& options, double& largest) {
   // (Non-finite coordinates and weights are found while cleaning: clean_rings.)
   if (!(options.cubic_tolerance > 0.0) || !std::isfinite(options.cubic_tolerance)) {
     throw Error(ErrorCode::Geometry, "build_mesh: cubic_tolerance must be positive and finite");
   }
+  largest = 0.0;
+  const bool flush = detail::flush_tiny_coordinates(outline, scratch.flushed, largest);
+  if (std::isfinite(largest) && largest > tolerance::kMaxMeshCoordinate) {
+    char message[160];
+    std::snprintf(message, sizeof message, "build_mesh: outline coordinate %.17g is beyond the largest accepted (%g)",
+                  largest, tolerance::kMaxMeshCoordinate);
+    throw Error(ErrorCode::Geometry, message);
+  }
+  return flush ? scratch.flushed : outline;
+}
+
+}  // namespace
+
+void MeshBuilder::build(const Outline& outline, const MeshOptions& options, Mesh& mesh) {
   if (!scratch_) scratch_ = std::make_unique<Scratch>();  // (a moved-from builder)
   detail::stage_start();                                  // (no-op unless built with CURVETEXT_STAGE_TIMING)
   try {
     double largest = 0.0;
-    const bool flush = detail::flush_tiny_coordinates(outline, scratch_->flushed, largest);
-    if (std::isfinite(largest) && largest > tolerance::kMaxMeshCoordinate) {
-      char message[160];
-      std::snprintf(message, sizeof message, "build_mesh: outline coordinate %.17g is beyond the largest accepted (%g)",
-                    largest, tolerance::kMaxMeshCoordinate);
-      throw Error(ErrorCode::Geometry, message);
-    }
-    build_checked_mesh(*scratch_, flush ? scratch_->flushed : outline, options, largest, mesh);
+    const Outline& input = checked_input(*scratch_, outline, options, largest);
+    build_checked_mesh(*scratch_, input, options, largest, mesh);
   } catch (const std::bad_alloc&) {
     mesh = Mesh{};
     throw Error(ErrorCode::Geometry, "build_mesh: out of memory while meshing the outline");
   }
+}
+
+Outline MeshBuilder::boundary(const Outline& outline, const MeshOptions& options) {
+  if (!scratch_) scratch_ = std::make_unique<Scratch>();
+  try {
+    double largest = 0.0;
+    const Outline& input = checked_input(*scratch_, outline, options, largest);
+    Mesh unused;
+    Build build(*scratch_, options, tolerance::kMergeDistanceRelative * largest, RepeatedVertices::Keep, unused);
+    return build.boundary(input);
+  } catch (const std::bad_alloc&) {
+    throw Error(ErrorCode::Geometry, "fill_boundary: out of memory while resolving the outline");
+  }
+}
+
+namespace {
+
+// The one builder of this thread: no allocation per mesh once warm.
+MeshBuilder& thread_builder() {
+  thread_local MeshBuilder builder;
+  return builder;
+}
+
+}  // namespace
+
+Outline fill_boundary(const Outline& outline, FillRule rule, double cubic_tolerance) {
+  MeshOptions options;
+  options.cubic_tolerance = cubic_tolerance;
+  options.fill_rule = rule;
+  return thread_builder().boundary(outline, options);
 }
 
 void build_mesh(const Outline& outline, const MeshOptions& options, Mesh& mesh, MeshBuilder& builder) {
@@ -593,9 +665,7 @@ void build_mesh(const Outline& outline, const MeshOptions& options, Mesh& mesh, 
 }
 
 void build_mesh(const Outline& outline, const MeshOptions& options, Mesh& mesh) {
-  // The one builder of this thread: no allocation per mesh once warm.
-  thread_local MeshBuilder builder;
-  builder.build(outline, options, mesh);
+  thread_builder().build(outline, options, mesh);
 }
 
 Mesh build_mesh(const Outline& outline, const MeshOptions& options) {

@@ -19,7 +19,7 @@
 // its midpoint against the other edges (binned by span; exact orient2d) for
 // one edge per connected part, and passed on to the others along chains and
 // around crossing vertices (side_windings). An edge bounds the fill when exactly one
-// side has winding != 0; it is kept, directed with the fill on its left, and
+// side is filled (winding != 0, or odd under the even-odd rule); it is kept, directed with the fill on its left, and
 // the kept edges are linked into loops turning at every vertex to the first
 // edge clockwise from the one we came along (which traces face boundaries, so
 // loops never cross). The loops go through the usual split/nesting path.
@@ -276,8 +276,12 @@ namespace {
 // of the edges that bound the fill.
 class CrossingResolver {
  public:
-  CrossingResolver(HullState hulls, std::size_t max_pieces, RingPool& pool, ResolveScratch& scratch)
-      : hulls_separated_(hulls == HullState::Separated), max_pieces_(max_pieces), pool_(pool), s_(scratch) {}
+  CrossingResolver(HullState hulls, FillRule rule, std::size_t max_pieces, RingPool& pool, ResolveScratch& scratch)
+      : hulls_separated_(hulls == HullState::Separated),
+        rule_(rule),
+        max_pieces_(max_pieces),
+        pool_(pool),
+        s_(scratch) {}
 
   std::vector<Ring> run(const std::vector<Ring>& rings, bool* settled);
 
@@ -302,6 +306,7 @@ class CrossingResolver {
 
   static constexpr std::uint32_t kNoVertex = UINT32_MAX;
   const bool hulls_separated_;
+  const FillRule rule_;
   const std::size_t max_pieces_;
   RingPool& pool_;
   ResolveScratch& s_;
@@ -461,7 +466,7 @@ void CrossingResolver::keep_boundary_edges() {
   s_.kept.clear();
   s_.kept.reserve(merged.size());
   for (std::size_t i = 0; i < merged.size(); ++i) {
-    const bool l = s_.left[i] != 0, r = s_.right[i] != 0;
+    const bool l = fills(rule_, s_.left[i]), r = fills(rule_, s_.right[i]);
     if (l == r) continue;
     Edge e = merged[i];
     if (!l) std::swap(e.a, e.b);
@@ -590,9 +595,9 @@ void CrossingResolver::keep(Ring&& loop, std::vector<Ring>& out) {
 
 }  // namespace
 
-std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, HullState hulls, std::size_t max_pieces,
-                                    RingPool& pool, ResolveScratch& scratch, bool* settled) {
-  return CrossingResolver(hulls, max_pieces, pool, scratch).run(rings, settled);
+std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, HullState hulls, FillRule rule,
+                                    std::size_t max_pieces, RingPool& pool, ResolveScratch& scratch, bool* settled) {
+  return CrossingResolver(hulls, rule, max_pieces, pool, scratch).run(rings, settled);
 }
 
 }  // namespace curvetext::detail

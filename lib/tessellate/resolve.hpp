@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 #include "curvetext/geometry.hpp"
@@ -62,6 +63,9 @@ struct ResolveScratch {
   // Cut points: found, snapped (snap_cuts), and the edges they split.
   std::vector<CutPoint> cuts;
   std::vector<Vec2> vertices, representatives, along;
+  // snap_many_cuts: points by cell of side eps (cell key -> points).
+  using SnapCells = std::unordered_map<std::uint64_t, std::vector<Vec2>>;
+  SnapCells vertex_cells, representative_cells;
   std::vector<LooseCut> loose;
   std::vector<double> coordinates;
   std::vector<ArrangementEdge> split_edges, merged, kept;
@@ -90,7 +94,7 @@ bool rings_cross(const std::vector<Ring>& rings, HullState hulls, ResolveScratch
 bool lines_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
 
 // Non-crossing rings, fill on the left (outer counter-clockwise, holes
-// clockwise), covering exactly the nonzero fill of `rings` (crossing conics
+// clockwise), covering exactly the fill of `rings` under `rule` (crossing conics
 // replaced by chords at the hull-subdivision limit). Input: the rings after
 // separate_hulls, which reported `hulls`. `settled`, when given, is set to
 // true when the last look found no conflict left (no crossing, no
@@ -98,7 +102,8 @@ bool lines_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
 // separate_hulls would leave them, with no crossing. Edges and each round's
 // cut points beyond `max_pieces` throw Error(Geometry). The rings come from
 // `pool`, and rings dropped go back to it.
-std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, HullState hulls, std::size_t max_pieces,
-                                    RingPool& pool, ResolveScratch& scratch, bool* settled = nullptr);
+std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, HullState hulls, FillRule rule,
+                                    std::size_t max_pieces, RingPool& pool, ResolveScratch& scratch,
+                                    bool* settled = nullptr);
 
 }  // namespace curvetext::detail

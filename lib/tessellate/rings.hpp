@@ -11,6 +11,9 @@
 
 namespace curvetext::detail {
 
+// Whether a point of winding number `winding` is filled under `rule`.
+inline bool fills(FillRule rule, int winding) { return rule == FillRule::NonZero ? winding != 0 : (winding & 1) != 0; }
+
 // One piece of a closed ring: a line or a conic from `a` to the next piece's `a`.
 struct Piece {
   Vec2 a;

@@ -45,6 +45,10 @@ struct MeshOptions {
   // Tolerance for replacing cubics by quadratics, in the outline's units. The
   // caller derives it from the scale the mesh is drawn at (see lod.hpp).
   double cubic_tolerance = 0.25;
+  // Which points of the outline the mesh fills. Under EvenOdd every outline
+  // goes through crossing resolution (the nonzero path skips it for contours
+  // that do not meet).
+  FillRule fill_rule = FillRule::NonZero;
 };
 
 // Builds the mesh of the nonzero-winding fill of `outline`. Throws
@@ -79,6 +83,8 @@ class CURVETEXT_API MeshBuilder {
 
   // build_mesh(outline, options, mesh) with this builder's memory.
   void build(const Outline& outline, const MeshOptions& options, Mesh& mesh);
+  // fill_boundary(outline, options.fill_rule, options.cubic_tolerance).
+  Outline boundary(const Outline& outline, const MeshOptions& options);
 
   struct Scratch;  // (defined inside the library)
 
@@ -109,6 +115,19 @@ struct MeshCheck {
 // replacement (to_quadratic_outline with the same tolerance). Violations are
 // reported in the result, not thrown (Error(Geometry) only when memory runs
 // out). Its coordinates are read as build_mesh reads them (tiny ones as 0).
-CURVETEXT_API MeshCheck check_mesh(const Mesh& mesh, const Outline& quadratic_outline);
+// `rule`: the fill rule the mesh was built with (the outline's area is taken
+// under it).
+CURVETEXT_API MeshCheck check_mesh(const Mesh& mesh, const Outline& quadratic_outline,
+                                   FillRule rule = FillRule::NonZero);
+
+// The boundary of the fill of `outline` under `rule` as contours that neither
+// cross nor overlap, the fill on their left (outer contours counter-clockwise
+// in a y-up frame, holes clockwise): their nonzero fill and their even-odd
+// fill are both the region. Built by build_mesh's crossing resolution (the
+// pieces are exact sub-conics, except conics crossing at a point the
+// resolver cannot separate, replaced by chords over spans of ~1e-6 of the
+// curve). Cubics are replaced by conics within `cubic_tolerance`. Throws what
+// build_mesh throws. Thread-safe as build_mesh.
+CURVETEXT_API Outline fill_boundary(const Outline& outline, FillRule rule, double cubic_tolerance = 0.25);
 
 }  // namespace curvetext

@@ -13,6 +13,10 @@
 
 namespace curvetext {
 
+// Which points an outline fills: winding number != 0 (NonZero) or odd
+// (EvenOdd), as SVG's fill-rule.
+enum class FillRule { NonZero, EvenOdd };
+
 struct CURVETEXT_API Segment {
   enum class Kind : std::uint8_t { Line, Conic, Cubic };
   Kind kind = Kind::Line;
