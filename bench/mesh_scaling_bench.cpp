@@ -85,6 +85,21 @@ Outline retraced(int n) {
   return o;
 }
 
+// A circle of 4 conics run n times as one contour.
+Outline retraced_circle(int n) {
+  Outline o;
+  const double w = std::sqrt(0.5);
+  o.move_to({1000, 0});
+  for (int i = 0; i < n; ++i) {
+    o.conic_to({1000, 1000}, {0, 1000}, w);
+    o.conic_to({-1000, 1000}, {-1000, 0}, w);
+    o.conic_to({-1000, -1000}, {0, -1000}, w);
+    o.conic_to({1000, -1000}, {1000, 0}, w);
+  }
+  o.close();
+  return o;
+}
+
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -105,7 +120,8 @@ int main(int argc, char** argv) {
                                      {"comb, curved tops", [](int n) { return comb(n, true); }},
                                      {"comb crossed by a bar", comb_with_bar},
                                      {"polygon circle", circle},
-                                     {"square run over n times", retraced, 256}};
+                                     {"square run over n times", retraced, 256},
+                                     {"circle of conics run over n times", retraced_circle, 256}};
   std::printf("| Shape | n | Pieces | build_mesh s | growth | check_mesh s | growth | Result |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---:|---|\n");
   for (const Shape& shape : shapes) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <cstdlib>
 #include <sstream>
 #include <string>
@@ -229,22 +230,52 @@ TEST(MeshLimits, RetracedPathIsBuilt) {
   EXPECT_TRUE(empty.empty());
 }
 
-// A circle of 4 conics run over itself: its identical conics all meet and
-// hull separation still tests their n^2 / 2 pairs, so 1,024 runs stop at the
-// pair-test budget (a limit docs/limits.md states; conics would need their
-// copies merged before hull separation).
-TEST(MeshLimits, RetracedConicsStopAtThePairTestBudget) {
+// A circle of 4 conics run `laps` times, as one contour or as one contour
+// per lap; with `alternate`, every other lap runs backwards.
+Outline retraced_circle(int laps, bool one_contour, bool alternate) {
   Outline o;
-  const double w = std::sqrt(0.5);
-  o.move_to({1000, 0});
-  for (int k = 0; k < 1024; ++k) {
-    o.conic_to({1000, 1000}, {0, 1000}, w);
-    o.conic_to({-1000, 1000}, {-1000, 0}, w);
-    o.conic_to({-1000, -1000}, {0, -1000}, w);
-    o.conic_to({1000, -1000}, {1000, 0}, w);
+  const double w = std::sqrt(0.5), r = 1000;
+  for (int k = 0; k < laps; ++k) {
+    const double s = alternate && k % 2 ? -1 : 1;
+    if (k == 0 || !one_contour) o.move_to({r, 0});
+    o.conic_to({r, s * r}, {0, s * r}, w);
+    o.conic_to({-r, s * r}, {-r, 0}, w);
+    o.conic_to({-r, -s * r}, {0, -s * r}, w);
+    o.conic_to({r, -s * r}, {r, 0}, w);
+    if (!one_contour) o.close();
   }
   o.close();
-  testing::expect_error([&] { (void)build_mesh(o); }, ErrorCode::Geometry, "pair tests");
+  return o;
+}
+
+// Identical conics all meet, and hull separation would test their n^2 / 2
+// pairs (1,024 laps stopped at its pair-test budget): cleaning folds equal
+// rings into one with a count, which the crossing resolver's windings take.
+TEST(MeshLimits, RetracedConicsAreBuilt) {
+  const double disc = std::numbers::pi * 1e6;
+  MeshOptions even_odd;
+  even_odd.fill_rule = FillRule::EvenOdd;
+  for (const bool one_contour : {true, false}) {
+    SCOPED_TRACE(one_contour ? "one contour" : "a contour per lap");
+    EXPECT_NEAR(mesh_area(build_mesh(retraced_circle(1024, one_contour, false))), disc, 1e-9 * disc);
+    EXPECT_TRUE(build_mesh(retraced_circle(1024, one_contour, true)).empty());
+    EXPECT_TRUE(build_mesh(retraced_circle(1024, one_contour, false), even_odd).empty());
+    EXPECT_NEAR(mesh_area(build_mesh(retraced_circle(1023, one_contour, false), even_odd)), disc, 1e-9 * disc);
+  }
+  // Beside another contour the count matters: a disc run twice with a
+  // smaller one run once backwards inside it leaves winding 1 there (filled
+  // under nonzero), a disc run once would leave 0 (a hole).
+  Outline ring = retraced_circle(2, false, false);
+  ring.move_to({500, 0});
+  ring.conic_to({500, -500}, {0, -500}, std::sqrt(0.5));
+  ring.conic_to({-500, -500}, {-500, 0}, std::sqrt(0.5));
+  ring.conic_to({-500, 500}, {0, 500}, std::sqrt(0.5));
+  ring.conic_to({500, 500}, {500, 0}, std::sqrt(0.5));
+  ring.close();
+  EXPECT_NEAR(mesh_area(build_mesh(ring)), disc, 1e-9 * disc);
+  Outline holed = retraced_circle(1, false, false);
+  holed.contours().push_back(ring.contours().back());
+  EXPECT_NEAR(mesh_area(build_mesh(holed)), 0.75 * disc, 1e-9 * disc);
 }
 
 // Hull separation halves a nearly straight arc until its last piece's
@@ -315,10 +346,10 @@ TEST(MeshLimits, CrossingResolutionStopsAtItsWorkBudget) {
   detail::RingPool pool;
   detail::ResolveScratch scratch;
   EXPECT_FALSE(
-      detail::resolve_crossings(rings, detail::HullState::NotSeparated, FillRule::NonZero, SIZE_MAX, pool, scratch)
+      detail::resolve_crossings(rings, {}, detail::HullState::NotSeparated, FillRule::NonZero, SIZE_MAX, pool, scratch)
           .empty());
   try {
-    (void)detail::resolve_crossings(rings, detail::HullState::NotSeparated, FillRule::NonZero, 40, pool, scratch);
+    (void)detail::resolve_crossings(rings, {}, detail::HullState::NotSeparated, FillRule::NonZero, 40, pool, scratch);
     ADD_FAILURE() << "no error past the budget";
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ErrorCode::Geometry);

@@ -254,6 +254,133 @@ class ContourReader {
 
 // A piece whose start is not the first at its position, in one pass over a
 // hash table.
+namespace {
+
+bool same_curve(const Piece& p, const Piece& q) {
+  return p.conic == q.conic && (!p.conic || (p.control == q.control && p.weight == q.weight));
+}
+
+// Ring b run from piece sb is ring a run from piece sa (equal sizes).
+bool runs_alike(const Ring& a, std::size_t sa, const Ring& b, std::size_t sb) {
+  const std::size_t n = a.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const Piece &p = a[(sa + k) % n], &q = b[(sb + k) % n];
+    if (p.a != q.a || !same_curve(p, q)) return false;
+  }
+  return true;
+}
+
+// Ring b run backwards, from the piece ending at b[sb].a, is ring a run from
+// piece sa (equal sizes; a[sa].a == b[sb].a).
+bool runs_reversed(const Ring& a, std::size_t sa, const Ring& b, std::size_t sb) {
+  const std::size_t n = a.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = (sa + k) % n, j = (sb + 2 * n - 1 - k) % n;
+    if (ring_end(a, i) != b[j].a || !same_curve(a[i], b[j])) return false;
+  }
+  return true;
+}
+
+// The index of the piece starting at the ring's lowest point (least y, then
+// least x), or SIZE_MAX when the ring passes through that point twice.
+std::size_t lowest_start(const Ring& ring) {
+  std::size_t best = 0;
+  bool tie = false;
+  for (std::size_t i = 1; i < ring.size(); ++i) {
+    const Vec2 p = ring[i].a, q = ring[best].a;
+    if (p == q) tie = true;
+    if (p.y < q.y || (p.y == q.y && p.x < q.x)) {
+      best = i;
+      tie = false;
+    }
+  }
+  return tie ? SIZE_MAX : best;
+}
+
+}  // namespace
+
+bool fold_repeated_rings(std::vector<Ring>& rings, std::vector<int>& counts, RingPool& pool, CleanScratch& scratch) {
+  counts.clear();
+  // A ring through its lowest point twice may be one path run round more
+  // than once: its loops are what can be equal.
+  const std::size_t original = rings.size();
+  for (std::size_t r = 0; r < original; ++r) {
+    if (rings[r].size() < 4 || lowest_start(rings[r]) != SIZE_MAX) continue;
+    std::vector<Ring> loops = split_at_repeated_vertices(rings[r], scratch.slots);
+    if (loops.empty()) continue;
+    pool.recycle(std::move(rings[r]));
+    rings[r] = std::move(loops.front());
+    for (std::size_t k = 1; k < loops.size(); ++k) rings.push_back(std::move(loops[k]));
+  }
+  if (rings.size() < 2) return false;
+  using Key = CleanScratch::RingKey;
+  std::vector<Key>& keys = scratch.ring_keys;
+  keys.clear();
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    const std::size_t start = lowest_start(rings[r]);
+    if (start != SIZE_MAX) keys.push_back({rings[r].size(), start, r, rings[r][start].a});
+  }
+  // Equal rings have equal sizes and lowest points: only those are compared.
+  auto less = [](const Key& u, const Key& v) {
+    if (u.size != v.size) return u.size < v.size;
+    if (u.lowest.y != v.lowest.y) return u.lowest.y < v.lowest.y;
+    if (u.lowest.x != v.lowest.x) return u.lowest.x < v.lowest.x;
+    return u.ring < v.ring;
+  };
+  std::sort(keys.begin(), keys.end(), less);
+  bool folded = false;
+  counts.assign(rings.size(), 1);
+  for (std::size_t first = 0; first < keys.size();) {
+    std::size_t last = first + 1;
+    while (last < keys.size() && keys[last].size == keys[first].size && keys[last].lowest == keys[first].lowest) ++last;
+    // Each ring of the run joins the first earlier one it equals (in either direction).
+    for (std::size_t k = first + 1; k < last; ++k) {
+      const Ring& ring = rings[keys[k].ring];
+      for (std::size_t m = first; m < k; ++m) {
+        if (keys[m].size == 0) continue;  // folded into another
+        const Ring& other = rings[keys[m].ring];
+        const int sign = runs_alike(other, keys[m].start, ring, keys[k].start)      ? 1
+                         : runs_reversed(other, keys[m].start, ring, keys[k].start) ? -1
+                                                                                    : 0;
+        if (sign == 0) continue;
+        counts[keys[m].ring] += sign;
+        counts[keys[k].ring] = 0;
+        keys[k].size = 0;  // folded: no later ring joins it
+        folded = true;
+        break;
+      }
+    }
+    first = last;
+  }
+  if (!folded) {
+    counts.clear();
+    return false;
+  }
+  // Folded rings and rings whose count cancelled leave.
+  std::size_t kept = 0;
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    if (counts[r] == 0) {
+      pool.recycle(std::move(rings[r]));
+      continue;
+    }
+    if (kept != r) {
+      rings[kept] = std::move(rings[r]);
+      counts[kept] = counts[r];
+    }
+    ++kept;
+  }
+  rings.resize(kept);
+  counts.resize(kept);
+  // Rings run once, either way, need no count: a ring run backwards once is
+  // that ring reversed.
+  if (std::all_of(counts.begin(), counts.end(), [](int c) { return c == 1 || c == -1; })) {
+    for (std::size_t r = 0; r < rings.size(); ++r)
+      if (counts[r] == -1) reverse_ring(rings[r]);
+    counts.clear();
+  }
+  return true;
+}
+
 bool repeats_a_vertex(const Ring& ring, std::vector<std::int32_t>& slots) {
   FirstAtPosition starts(slots, ring.size(), [&](std::uint32_t i) { return ring[i].a; });
   for (std::uint32_t i = 0; i < ring.size(); ++i)

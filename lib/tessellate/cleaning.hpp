@@ -20,6 +20,13 @@ struct CleanScratch {
   std::vector<Segment> quadratics;  // one cubic's replacement
   std::vector<char> drop;           // simplify_pass: pieces to remove
   std::vector<std::int32_t> slots;  // the position table of repeats_a_vertex
+  // fold_repeated_rings: per ring, its piece count, lowest start point and
+  // that piece's index (SIZE_MAX where the lowest point repeats).
+  struct RingKey {
+    std::size_t size, start, ring;
+    Vec2 lowest;
+  };
+  std::vector<RingKey> ring_keys;
 };
 
 // Rings of the outline (cubics replaced by quadratics within
@@ -39,6 +46,15 @@ bool clean_rings(const Outline& outline, double cubic_tolerance, double merge_di
                  bool* approximated = nullptr);
 
 // True when the ring passes through some vertex twice (`slots`: scratch).
+// Rings run over themselves: rings equal to each other (the same pieces from
+// some start, in the same or the opposite direction) become one ring with a
+// count, the net number of times the outline runs it (copies in opposite
+// directions cancel; a ring whose count comes to 0 is dropped). Without this,
+// n copies of a ring cost n^2 pair tests in hull separation. Returns true
+// when rings were folded; `counts[r]` is then ring r's count (the crossing
+// resolver takes it), and otherwise `counts` is left empty (every count 1).
+bool fold_repeated_rings(std::vector<Ring>& rings, std::vector<int>& counts, RingPool& pool, CleanScratch& scratch);
+
 bool repeats_a_vertex(const Ring& ring, std::vector<std::int32_t>& slots);
 
 }  // namespace curvetext::detail

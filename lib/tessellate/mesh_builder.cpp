@@ -60,6 +60,7 @@ void work_budget_exceeded(const char* stage, std::size_t used, std::size_t budge
 struct MeshBuilder::Scratch {
   detail::RingPool pool;
   std::vector<detail::Ring> rings;
+  std::vector<int> ring_counts;  // fold_repeated_rings (empty: every ring once)
   detail::CleanScratch clean;
   detail::HullScratch hulls;
   detail::ResolveScratch resolve;
@@ -294,6 +295,7 @@ void Build::clean(const Outline& outline) {
   if (!clean_rings(outline, options_.cubic_tolerance, merge_distance_, s_.rings, s_.pool, s_.clean, repeated_,
                    &approximated))
     throw Error(ErrorCode::Geometry, "build_mesh: outline has non-finite coordinates or weights");
+  fold_repeated_rings(s_.rings, s_.ring_counts, s_.pool, s_.clean);
   // Straightening within the flatness tolerance changes the area by up to
   // 1e-9 of a chord squared, which a sliver's area may not allow.
   needs_check_ = needs_check_ || approximated;
@@ -311,8 +313,9 @@ void Build::separate() {
   stage_mark(MeshStage::Separate);
   simple_edges_ = separation.separated && !separation.crossing;
   // Under the even-odd rule nesting (which counts nonzero windings) cannot
-  // tell the fill, so the resolver always runs: its rings bound the fill.
-  const bool always = force_resolve_ || options_.fill_rule == FillRule::EvenOdd;
+  // tell the fill, nor for rings run more than once: the resolver runs, and
+  // its rings bound the fill.
+  const bool always = force_resolve_ || options_.fill_rule == FillRule::EvenOdd || !s_.ring_counts.empty();
   if ((always && !s_.rings.empty()) || separation.crossing ||
       (!separation.separated && rings_cross(s_.rings, HullState::NotSeparated, s_.resolve)))
     resolve(separation.separated ? HullState::Separated : HullState::NotSeparated);
@@ -322,7 +325,8 @@ void Build::separate() {
 void Build::resolve(HullState hulls) {
   bool settled = false;
   std::vector<Ring> resolved =
-      resolve_crossings(s_.rings, hulls, options_.fill_rule, budget_, s_.pool, s_.resolve, &settled);
+      resolve_crossings(s_.rings, s_.ring_counts, hulls, options_.fill_rule, budget_, s_.pool, s_.resolve, &settled);
+  s_.ring_counts.clear();
   s_.pool.recycle_all(s_.rings);
   s_.rings = std::move(resolved);
   resolved_rings_ = true;

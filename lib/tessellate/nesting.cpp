@@ -53,8 +53,10 @@ bool ring_inside(const Ring& inner, const Ring& outer) {
   return false;  // every chord on the other ring: a duplicate, not nested
 }
 
-// Reverses the direction of a ring in place: piece k of the result is piece
-// n - 1 - k traversed backwards, so it starts where that piece ended.
+}  // namespace
+
+// (Piece k of the result is piece n - 1 - k traversed backwards, so it
+// starts where that piece ended.)
 void reverse_ring(Ring& ring) {
   const std::size_t n = ring.size();
   if (n == 0) return;
@@ -65,8 +67,6 @@ void reverse_ring(Ring& ring) {
   for (std::size_t k = n - 1; k > 0; --k) ring[k].a = ring[k - 1].a;
   ring[0].a = last;
 }
-
-}  // namespace
 
 namespace {
 

@@ -182,14 +182,18 @@ bool pieces_conflict(const Edge& e, const Edge& f) {
   return hulls_overlap(he, ne, hf, nf);
 }
 
-std::vector<Edge> edges_of(const std::vector<Ring>& rings) {
+// The rings' pieces as edges; `counts` (empty: all 1) gives each ring's
+// count (fold_repeated_rings).
+std::vector<Edge> edges_of(const std::vector<Ring>& rings, const std::vector<int>& counts = {}) {
   std::vector<Edge> edges;
   std::size_t count = 0;
   for (const Ring& ring : rings) count += ring.size();
   edges.reserve(count);
-  for (const Ring& ring : rings) {
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    const Ring& ring = rings[r];
     for (std::size_t i = 0; i < ring.size(); ++i) {
       Edge e;
+      e.count = counts.empty() ? 1 : counts[r];
       e.a = ring[i].a;
       e.b = ring_end(ring, i);
       e.conic = ring[i].conic;
@@ -283,7 +287,7 @@ class CrossingResolver {
         pool_(pool),
         s_(scratch) {}
 
-  std::vector<Ring> run(const std::vector<Ring>& rings, bool* settled);
+  std::vector<Ring> run(const std::vector<Ring>& rings, const std::vector<int>& counts, bool* settled);
 
  private:
   // Rounded crossing points can make new crossings round after round; the
@@ -315,11 +319,11 @@ class CrossingResolver {
   std::vector<Edge> next_;
 };
 
-std::vector<Ring> CrossingResolver::run(const std::vector<Ring>& rings, bool* settled) {
+std::vector<Ring> CrossingResolver::run(const std::vector<Ring>& rings, const std::vector<int>& counts, bool* settled) {
   // Coincident edges (a path that retraces itself, contours sharing edges)
   // are merged first: n runs over one edge are one edge with a count, not
   // n^2 / 2 pairs to cut.
-  merge_coincident(edges_of(rings), edges_, s_.slots);
+  merge_coincident(edges_of(rings, counts), edges_, s_.slots);
   const bool conflicts_left = remove_conflicts();
   keep_boundary_edges();
   number_vertices();
@@ -595,9 +599,10 @@ void CrossingResolver::keep(Ring&& loop, std::vector<Ring>& out) {
 
 }  // namespace
 
-std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, HullState hulls, FillRule rule,
-                                    std::size_t max_pieces, RingPool& pool, ResolveScratch& scratch, bool* settled) {
-  return CrossingResolver(hulls, rule, max_pieces, pool, scratch).run(rings, settled);
+std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, const std::vector<int>& counts, HullState hulls,
+                                    FillRule rule, std::size_t max_pieces, RingPool& pool, ResolveScratch& scratch,
+                                    bool* settled) {
+  return CrossingResolver(hulls, rule, max_pieces, pool, scratch).run(rings, counts, settled);
 }
 
 }  // namespace curvetext::detail

@@ -94,7 +94,8 @@ bool rings_cross(const std::vector<Ring>& rings, HullState hulls, ResolveScratch
 bool lines_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
 
 // Non-crossing rings, fill on the left (outer counter-clockwise, holes
-// clockwise), covering exactly the fill of `rings` under `rule` (crossing conics
+// clockwise), covering exactly the fill of `rings` under `rule`, ring r run
+// counts[r] times (`counts` empty: once each; fold_repeated_rings) (crossing conics
 // replaced by chords at the hull-subdivision limit). Input: the rings after
 // separate_hulls, which reported `hulls`. `settled`, when given, is set to
 // true when the last look found no conflict left (no crossing, no
@@ -102,8 +103,8 @@ bool lines_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
 // separate_hulls would leave them, with no crossing. Edges and each round's
 // cut points beyond `max_pieces` throw Error(Geometry). The rings come from
 // `pool`, and rings dropped go back to it.
-std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, HullState hulls, FillRule rule,
-                                    std::size_t max_pieces, RingPool& pool, ResolveScratch& scratch,
+std::vector<Ring> resolve_crossings(const std::vector<Ring>& rings, const std::vector<int>& counts, HullState hulls,
+                                    FillRule rule, std::size_t max_pieces, RingPool& pool, ResolveScratch& scratch,
                                     bool* settled = nullptr);
 
 }  // namespace curvetext::detail

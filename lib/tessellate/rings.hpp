@@ -44,6 +44,9 @@ class RingPool {
 // (i < ring.size(); a compare instead of a division in the hot loops.)
 inline Vec2 ring_end(const Ring& ring, std::size_t i) { return ring[i + 1 == ring.size() ? 0 : i + 1].a; }
 
+// Reverses the direction of a ring in place (nesting.cpp).
+void reverse_ring(Ring& ring);
+
 // Exact signed area of a ring (conic caps included), counter-clockwise > 0.
 double ring_area(const Ring& ring);
 
