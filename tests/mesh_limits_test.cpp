@@ -262,10 +262,10 @@ TEST(MeshLimits, RetracedConicsAreBuilt) {
     EXPECT_TRUE(build_mesh(retraced_circle(1024, one_contour, false), even_odd).empty());
     EXPECT_NEAR(mesh_area(build_mesh(retraced_circle(1023, one_contour, false), even_odd)), disc, 1e-9 * disc);
   }
-  // Beside another contour the count matters: a disc run twice with a
-  // smaller one run once backwards inside it leaves winding 1 there (filled
-  // under nonzero), a disc run once would leave 0 (a hole).
-  Outline ring = retraced_circle(2, false, false);
+  // Beside another contour the count matters: a disc run 300 times with a
+  // smaller one run once backwards inside it leaves winding 299 there
+  // (filled under nonzero), a disc run once would leave 0 (a hole).
+  Outline ring = retraced_circle(300, false, false);
   ring.move_to({500, 0});
   ring.conic_to({500, -500}, {0, -500}, std::sqrt(0.5));
   ring.conic_to({-500, -500}, {-500, 0}, std::sqrt(0.5));

@@ -45,6 +45,11 @@ inline constexpr std::size_t kMeshWorkBase = 4096;
 // per (kMeshWorkPerPiece) unit of that budget, summed over its passes: a path
 // that runs over itself n times has n^2 / 2 such pairs (dimensionless).
 inline constexpr std::size_t kMeshPairTestsPerPiece = 1024;
+// Cleaning looks for rings equal to each other (a path run over itself,
+// fold_repeated_rings) only in outlines of at least this many pieces: below
+// it hull separation's pairs among copies stay far within the budget, and a
+// glyph pays nothing for the search (pieces).
+inline constexpr std::size_t kFoldRingsMinPieces = 512;
 // Ear clipping (the fallback where the sweep gives up) may look at most at
 // n^2 + kEarClipVisitsPerVertex * n + kEarClipVisitsBase vertices over all its
 // ear tests, n the polygon's vertices (dimensionless): each test looks at up

@@ -301,6 +301,9 @@ std::size_t lowest_start(const Ring& ring) {
 
 bool fold_repeated_rings(std::vector<Ring>& rings, std::vector<int>& counts, RingPool& pool, CleanScratch& scratch) {
   counts.clear();
+  std::size_t pieces = 0;
+  for (const Ring& ring : rings) pieces += ring.size();
+  if (pieces < tolerance::kFoldRingsMinPieces) return false;
   // A ring through its lowest point twice may be one path run round more
   // than once: its loops are what can be equal.
   const std::size_t original = rings.size();

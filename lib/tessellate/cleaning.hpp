@@ -50,7 +50,8 @@ bool clean_rings(const Outline& outline, double cubic_tolerance, double merge_di
 // some start, in the same or the opposite direction) become one ring with a
 // count, the net number of times the outline runs it (copies in opposite
 // directions cancel; a ring whose count comes to 0 is dropped). Without this,
-// n copies of a ring cost n^2 pair tests in hull separation. Returns true
+// n copies of a ring cost n^2 pair tests in hull separation. Only outlines of
+// tolerance::kFoldRingsMinPieces pieces or more are searched. Returns true
 // when rings were folded; `counts[r]` is then ring r's count (the crossing
 // resolver takes it), and otherwise `counts` is left empty (every count 1).
 bool fold_repeated_rings(std::vector<Ring>& rings, std::vector<int>& counts, RingPool& pool, CleanScratch& scratch);
