@@ -67,6 +67,12 @@ inline constexpr int kStrokeMaxFitDepth = 24;
 // Segments shorter than this fraction of the path's largest |coordinate|
 // count as zero length: they have no direction (dimensionless).
 inline constexpr double kStrokeZeroLengthRelative = 1e-12;
+// Path pieces, gaps between offset pieces and outline pieces shorter than
+// this fraction of the stroke tolerance are dropped or closed (moving the
+// boundary by at most that much): slivers of 1e-8 px, from cubics split near
+// inflections and from the pivots of inner joins, only cost the mesher
+// (dimensionless).
+inline constexpr double kStrokeSnapOfTolerance = 1.0 / 1024.0;
 
 // --- Rendering (lib/gpu, shaders/) -------------------------------------------
 // How far every triangle grows outward for `full` antialiasing (and vbaa's

@@ -105,14 +105,16 @@ struct Stroker::Run {
   double h = 0.5;    // half width, path units
   double tol = 1.0;  // offset fitting tolerance, path units
   double len_tol = 0.1;
-  double eps = 0.0;  // zero length
+  double eps = 0.0;   // zero length
+  double snap = 0.0;  // gaps and pieces below this are closed and dropped (path units)
+  Vec2 pen;           // the end of what emit() has added
   LineCap cap = LineCap::Butt;
   JoinStyle join;
   Budget budget;
   DashPattern dashes;
   bool dashed = false;
 
-  void add_segment(const Segment& s);
+  void add_segment(Segment s);
   void flatten(const ShapeContour& c);
   void emit(const std::vector<Segment>& side, bool reverse);
   void sides(const Segment* first, const Segment* last, bool closed);
@@ -124,8 +126,12 @@ struct Stroker::Run {
   void finish_dash(bool into_first);
 };
 
-void Stroker::Run::add_segment(const Segment& s) {
-  if (zero_length(s, eps)) return;
+void Stroker::Run::add_segment(Segment s) {
+  // Pieces shorter than `snap` (cubic splits near inflections make some)
+  // would only add slivers: dropped, the next one starting where the path is.
+  if (zero_length(s, snap)) return;
+  if (!k.path_.empty() && k.path_.size() > k.subpaths_.back() && distance(k.path_.back().end(), s.p[0]) <= snap)
+    s.p[0] = k.path_.back().end();
   if (!k.path_.empty() && k.path_.size() > k.subpaths_.back() && !(k.path_.back().end() == s.p[0]) &&
       distance(k.path_.back().end(), s.p[0]) > eps)
     k.path_.push_back(Segment::line(k.path_.back().end(), s.p[0]));  // a gap between pieces
@@ -170,11 +176,15 @@ void Stroker::Run::emit(const std::vector<Segment>& side, bool reverse) {
   budget.spend(n);
   for (std::size_t j = 0; j < n; ++j) {
     const Segment s = reverse ? reversed(side[n - 1 - j]) : side[j];
-    o.line_to(s.p[0]);  // nothing when it continues the pen
+    // Gaps and pieces below `snap` (rounding where offsets meet, joins of
+    // nearly tangent pieces) are closed rather than drawn as slivers.
+    if (distance(pen, s.p[0]) > snap) o.line_to(pen = s.p[0]);
+    if (distance(pen, s.end()) <= snap && (s.kind == Segment::Kind::Line || distance(pen, s.p[1]) <= snap)) continue;
     if (s.kind == Segment::Kind::Line)
       o.line_to(s.p[1]);
     else
       o.conic_to(s.p[1], s.p[2], s.weight);
+    pen = s.end();
   }
 }
 
@@ -198,7 +208,7 @@ void Stroker::Run::sides(const Segment* first, const Segment* last, bool closed)
 void Stroker::Run::outline_open(const Segment* first, const Segment* last) {
   sides(first, last, false);
   Outline& o = k.staged_;
-  o.move_to(k.right_.front().p[0]);
+  o.move_to(pen = k.right_.front().p[0]);
   emit(k.right_, false);
   k.cap_.clear();
   append_cap((last - 1)->end(), end_tangent(*(last - 1)), h, cap, k.cap_);
@@ -213,10 +223,10 @@ void Stroker::Run::outline_open(const Segment* first, const Segment* last) {
 void Stroker::Run::outline_closed(const Segment* first, const Segment* last) {
   sides(first, last, true);
   Outline& o = k.staged_;
-  o.move_to(k.right_.front().p[0]);
+  o.move_to(pen = k.right_.front().p[0]);
   emit(k.right_, false);
   o.close();
-  o.move_to(k.left_.back().end());
+  o.move_to(pen = k.left_.back().end());
   emit(k.left_, true);
   o.close();
 }
@@ -225,7 +235,7 @@ void Stroker::Run::emit_dot(Vec2 p, Vec2 t) {
   k.cap_.clear();
   append_dot(p, t, h, cap, k.cap_);
   if (k.cap_.empty()) return;
-  k.staged_.move_to(k.cap_.front().p[0]);
+  k.staged_.move_to(pen = k.cap_.front().p[0]);
   emit(k.cap_, false);
   k.staged_.close();
 }
@@ -263,7 +273,9 @@ void Stroker::Run::dash(std::size_t first, std::size_t last, bool closed) {
   const std::vector<double>& pattern = dashes.lengths;
   std::size_t j = 0;
   double pos = dashes.phase;
-  while (pos >= pattern[j]) {
+  // A dash that ends exactly at the phase is passed; one of length 0 there
+  // is a dot.
+  while (pos > pattern[j] || (pos == pattern[j] && pattern[j] > 0.0)) {
     pos -= pattern[j];
     j = (j + 1) % pattern.size();
   }
@@ -324,6 +336,7 @@ void Stroker::stroke(const std::vector<ShapeContour>& contours, const StrokeStyl
     for (const RationalBezier& b : c.pieces)
       for (Vec2 p : b.points) reach = std::max({reach, std::abs(p.x), std::abs(p.y)});
   run.eps = tolerance::kStrokeZeroLengthRelative * reach;
+  run.snap = std::max(run.eps, tolerance * tolerance::kStrokeSnapOfTolerance);
   path_.clear();
   subpaths_.clear();
   closed_.clear();
