@@ -42,11 +42,18 @@ void lines(std::vector<Segment>& out, std::initializer_list<Vec2> points) {
   }
 }
 
-// SVG 2 miter-clip: the miter cut by the line at clip_distance from p,
-// perpendicular to the bisector u (a bevel when that line lies inside it).
+// SVG 2 miter-clip: the miter when its tip lies within clip_distance of p,
+// else the miter cut by the line at clip_distance from p perpendicular to
+// the bisector u (a bevel when that line lies inside it).
 void miter_clip(Vec2 p, Vec2 a, Vec2 t0, Vec2 b, Vec2 t1, Vec2 u, double clip_distance, std::vector<Segment>& out) {
   const double da = dot(a - p, u);
   const double sa = dot(t0, u), sb = -dot(t1, u);
+  // The tip is where both edges reach the bisector: at da + sa * s along u.
+  const double tip = sa > 0.0 ? da + sa * (dot(b - a, left_normal(t1)) / dot(t0, left_normal(t1))) : HUGE_VAL;
+  if (sa > 0.0 && sb > 0.0 && std::isfinite(tip) && tip <= clip_distance) {
+    const double s = dot(b - a, left_normal(t1)) / dot(t0, left_normal(t1));
+    return lines(out, {a, a + t0 * s, b});
+  }
   if (clip_distance <= da || !(sa > 0.0) || !(sb > 0.0)) return lines(out, {a, b});
   lines(out, {a, a + t0 * ((clip_distance - da) / sa), b - t1 * ((clip_distance - dot(b - p, u)) / sb), b});
 }
@@ -112,13 +119,22 @@ void arcs_join(const Corner& c, double ka, double kb, double limit, std::vector<
     if (c.cos_half > 0.0 && 1.0 / c.cos_half <= limit) return lines(out, {c.a, c.p + c.u * (c.h / c.cos_half), c.b});
     return miter_clip(c.p, c.a, c.t0, c.b, c.t1, c.u, clip, out);
   }
+  // The meeting point reached first going forward from a (and backward
+  // from b); edges that must turn more than a quarter circle to meet count
+  // as not meeting.
   int best = -1;
-  for (int i = 0; i < n; ++i)
-    if (dot(hits[i] - c.p, c.u) > 0.0 && (best < 0 || distance(hits[i], c.p) < distance(hits[best], c.p))) best = i;
+  double first = 0.0, second = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double t1 = ha ? travel(ca, c.a, hits[i], ka) : (dot(hits[i] - c.a, c.t0) >= 0.0 ? 0.0 : kPi);
+    const double t2 = hb ? travel(cb, hits[i], c.b, kb) : (dot(c.b - hits[i], c.t1) >= 0.0 ? 0.0 : kPi);
+    if (std::abs(t1) > 0.5 * kPi || std::abs(t2) > 0.5 * kPi || (best >= 0 && std::abs(t1) >= std::abs(first)))
+      continue;
+    best = i;
+    first = t1;
+    second = t2;
+  }
   if (best < 0 || distance(hits[best], c.p) > clip) return miter_clip(c.p, c.a, c.t0, c.b, c.t1, c.u, clip, out);
   const Vec2 x = hits[best];
-  const double first = ha ? travel(ca, c.a, x, ka) : 0.0, second = hb ? travel(cb, x, c.b, kb) : 0.0;
-  if (std::abs(first) > kPi || std::abs(second) > kPi) return miter_clip(c.p, c.a, c.t0, c.b, c.t1, c.u, clip, out);
   if (ha)
     append_arc(ca, c.a, first, out);
   else
@@ -131,18 +147,19 @@ void arcs_join(const Corner& c, double ka, double kb, double limit, std::vector<
 
 }  // namespace
 
+bool outer_side(Vec2 t0, Vec2 t1, double side) {
+  const double turn = cross(t0, t1);
+  return turn == 0.0 ? (dot(t0, t1) < 0.0 && side < 0.0) : side * turn < 0.0;
+}
+
 void append_join(Vec2 p, Vec2 t0, Vec2 t1, double k0, double k1, double side, const JoinStyle& style,
                  std::vector<Segment>& out) {
   const double h = style.half_width, turn = cross(t0, t1), cos_turn = dot(t0, t1);
   const Vec2 r0 = left_normal(t0) * side, r1 = left_normal(t1) * side;
   const Vec2 a = p + r0 * h, b = p + r1 * h;
   if (a == b) return;
-  // A reversal (turn exactly 0, cos -1) goes round on the right side.
-  const bool outer = turn == 0.0 ? (cos_turn < 0.0 && side < 0.0) : side * turn < 0.0;
-  if (!outer) {
-    if (cos_turn > 0.0 && std::abs(turn) < 1e-9) return lines(out, {a, b});
-    return lines(out, {a, p, b});  // the inner side pivots through p
-  }
+  if (cos_turn > 0.0 && std::abs(turn) < 1e-9) return lines(out, {a, b});  // smooth: a gap of rounding
+  if (!outer_side(t0, t1, side)) return lines(out, {a, p, b});             // the inner side pivots through p
   Corner c{p, a, b, t0, t1, {}, std::sqrt(std::max(0.0, 0.5 * (1.0 + cos_turn))), h};
   const Vec2 bis = r0 + r1;
   c.u = length(bis) > 1e-12 ? unit(bis) : t0;
@@ -163,8 +180,14 @@ void append_join(Vec2 p, Vec2 t0, Vec2 t1, double k0, double k1, double side, co
     case LineJoin::Arcs: {
       // Curvature of the side at signed distance s: k / (1 - s k).
       const double s = side * h;
-      const double ka = std::abs(1.0 - s * k0) > 0.0 ? k0 / (1.0 - s * k0) : 0.0;
-      const double kb = std::abs(1.0 - s * k1) > 0.0 ? k1 / (1.0 - s * k1) : 0.0;
+      double ka = std::abs(1.0 - s * k0) > 0.0 ? k0 / (1.0 - s * k0) : 0.0;
+      double kb = std::abs(1.0 - s * k1) > 0.0 ? k1 / (1.0 - s * k1) : 0.0;
+      // A circle departs from its tangent by k r^2 / 2 at distance r: below
+      // the tolerance over the join's reach it is that line (and a radius of
+      // 1e16 would only lose the intersection's digits).
+      const double reach = limit * h;
+      if (std::abs(ka) * reach * reach * 0.5 < style.tolerance) ka = 0.0;
+      if (std::abs(kb) * reach * reach * 0.5 < style.tolerance) kb = 0.0;
       return arcs_join(c, ka, kb, limit, out);
     }
   }

@@ -39,14 +39,20 @@ double foot(const Segment& c, Vec2 x, double t) {
 }
 
 // Largest sampled distance between `fit` and the offset of `c` by d, both
-// ways: points of the fit to the offset point at their foot on c, and points
-// of the offset to their nearest point of the fit.
+// ways: points of the fit to the offset (their distance to c at their foot,
+// less |d|), and points of the offset to their nearest point of the fit.
 double fit_error(const Segment& c, double d, const Segment& fit) {
   double error = 0.0;
   for (int k = 1; k < kStrokeFitSamples; ++k) {
     const double t = static_cast<double>(k) / kStrokeFitSamples;
+    // The distance from a point of the fit to c at its foot, against |d|:
+    // insensitive to where Newton's method stops along c (the distance is
+    // stationary there); the point must lie on d's side.
     const Vec2 x = evaluate(fit, t);
-    error = std::max(error, distance(x, offset_point(c, foot(c, x, t), d)));
+    const double f = foot(c, x, t);
+    const Vec2 r = x - evaluate(c, f);
+    if (cross(derivative(c, f), r) * d < 0.0) return HUGE_VAL;
+    error = std::max(error, std::abs(length(r) - std::abs(d)));
     const Vec2 y = offset_point(c, t, d);
     error = std::max(error, distance(y, evaluate(fit, foot(fit, y, t))));
   }

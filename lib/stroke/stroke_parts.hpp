@@ -54,7 +54,13 @@ struct JoinStyle {
   LineJoin join = LineJoin::Miter;
   double half_width = 0.5;
   double miter_limit = 4.0;
+  // Arcs joins: an edge whose circle departs from its tangent line by less
+  // than this within the miter limit's reach counts as straight (path units).
+  double tolerance = 1e-3;
 };
+// Whether the side at `side` (+1 left, -1 right) is the outer one of a
+// corner from unit tangent t0 to t1 (a reversal turns round on the right).
+bool outer_side(Vec2 t0, Vec2 t1, double side);
 // The join at p between a segment ending with unit tangent t0 and one
 // starting with t1, on the side at signed distance `side * half_width`
 // (side = +1 left, -1 right), from p + side*h*n0 to p + side*h*n1. `k0`,

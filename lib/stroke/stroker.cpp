@@ -117,6 +117,7 @@ struct Stroker::Run {
   void add_segment(Segment s);
   void flatten(const ShapeContour& c);
   void emit(const std::vector<Segment>& side, bool reverse);
+  void side_of(const Segment* first, const Segment* last, bool closed, double d, std::vector<Segment>& side);
   void sides(const Segment* first, const Segment* last, bool closed);
   void outline_open(const Segment* first, const Segment* last);
   void outline_closed(const Segment* first, const Segment* last);
@@ -188,21 +189,55 @@ void Stroker::Run::emit(const std::vector<Segment>& side, bool reverse) {
   }
 }
 
-// Both offset sides of [first, last) with their joins (and the join from the
-// last segment to the first when closed) into right_ and left_.
-void Stroker::Run::sides(const Segment* first, const Segment* last, bool closed) {
-  k.right_.clear();
-  k.left_.clear();
+namespace {
+
+// Where the inner offsets of two lines cross inside both (then the side
+// runs from one to the other there, instead of pivoting through the path
+// point, which would only add two crossing slivers for the mesher).
+bool inner_crossing(const Segment& a, const Segment& b, Vec2& x) {
+  const Vec2 da = a.p[1] - a.p[0], db = b.p[1] - b.p[0];
+  const double den = cross(da, db);
+  if (!(std::abs(den) > 0.0)) return false;
+  const double u = cross(b.p[0] - a.p[0], db) / den, v = cross(b.p[0] - a.p[0], da) / den;
+  if (!(u > 0.0 && u <= 1.0 && v >= 0.0 && v < 1.0)) return false;
+  x = a.p[0] + da * u;
+  return true;
+}
+
+}  // namespace
+
+// One side (offset `d`) of [first, last) with its joins (and the join from
+// the last segment to the first when closed) into `side`.
+void Stroker::Run::side_of(const Segment* first, const Segment* last, bool closed, double d,
+                           std::vector<Segment>& side) {
+  side.clear();
+  bool trim = false;  // the next offset starts at `cut`
+  Vec2 cut;
+  const double sign = d < 0.0 ? -1.0 : 1.0;
   for (const Segment* s = first; s != last; ++s) {
-    append_offset(*s, -h, tol, budget, k.right_);
-    append_offset(*s, h, tol, budget, k.left_);
+    const std::size_t at = side.size();
+    append_offset(*s, d, tol, budget, side);
+    if (trim && side[at].kind == Segment::Kind::Line) side[at].p[0] = cut;
+    trim = false;
     const Segment* next = s + 1 != last ? s + 1 : closed ? first : nullptr;
     if (!next) break;
     const Vec2 p = s->end(), t0 = end_tangent(*s), t1 = start_tangent(*next);
-    const double k0 = end_curvature(*s, true), k1 = end_curvature(*next, false);
-    append_join(p, t0, t1, k0, k1, -1.0, join, k.right_);
-    append_join(p, t0, t1, k0, k1, 1.0, join, k.left_);
+    if (s->kind == Segment::Kind::Line && next->kind == Segment::Kind::Line && !outer_side(t0, t1, sign)) {
+      const Vec2 n = left_normal(t1) * d;
+      if (inner_crossing(side.back(), Segment::line(next->p[0] + n, next->p[1] + n), cut)) {
+        side.back().p[1] = cut;
+        trim = next != first;
+        if (next == first) side.front().p[0] = cut;
+        continue;
+      }
+    }
+    append_join(p, t0, t1, end_curvature(*s, true), end_curvature(*next, false), sign, join, side);
   }
+}
+
+void Stroker::Run::sides(const Segment* first, const Segment* last, bool closed) {
+  side_of(first, last, closed, -h, k.right_);
+  side_of(first, last, closed, h, k.left_);
 }
 
 void Stroker::Run::outline_open(const Segment* first, const Segment* last) {
@@ -330,7 +365,7 @@ void Stroker::stroke(const std::vector<ShapeContour>& contours, const StrokeStyl
   run.tol = 0.5 * tolerance;
   run.len_tol = tolerance * tolerance::kStrokeDashLengthOfTolerance;
   run.cap = style.cap;
-  run.join = JoinStyle{style.join, run.h, style.miter_limit};
+  run.join = JoinStyle{style.join, run.h, style.miter_limit, run.tol};
   double reach = 0.0;
   for (const ShapeContour& c : contours)
     for (const RationalBezier& b : c.pieces)
