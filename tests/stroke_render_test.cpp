@@ -184,5 +184,55 @@ TEST(StrokeOracle, FullAntialiasingMatchesTheBufferedRegion) {
   }
 }
 
+TEST(StrokeInvariant, TranslatedByAMillionPixelsDrawsTheSame) {
+  for (const char* name : {"cubic_round_caps", "dashed_round_caps_closed", "stroked_circle"}) {
+    Case c = read_case(name);
+    const test::Coverage ref = test::union_coverage(to_pixels(c.oracle, c.height), c.width, c.height);
+    const double d = 1e6;
+    for (ShapeContour& k : c.path)
+      for (RationalBezier& b : k.pieces)
+        for (Vec2& p : b.points) p = p + Vec2{d, d};
+    ShapeDocument doc = stroke_document(c);
+    doc.view = Box{{d, d}, {d + c.width, d + c.height}};
+    const test::Coverage got = render_full(doc, c.width, c.height, Placement(1.0, -d, c.height + d));
+    test::expect_coverage(std::string("far-") + name, got, ref, test::compare(got, ref), kEdgeLimit, kInkLimit);
+  }
+}
+
+// A line 0.1 px wide covers a tenth of each pixel it crosses: drawn in
+// `full`, every pixel within 0.004 of the exact coverage of its rectangle,
+// and the ink within 0.5% (no dropouts, nothing drawn beside it).
+TEST(StrokeInvariant, TenthOfAPixelLineKeepsExactCoverage) {
+  const int w = 96, h = 96;
+  struct Line {
+    Vec2 a, b;
+  };
+  for (const Line& l :
+       {Line{{8.0, 40.55}, {88.0, 40.55}}, Line{{10.3, 12.1}, {85.7, 80.9}}, Line{{20.2, 8.4}, {31.9, 90.3}}}) {
+    Case c;
+    c.width = w;
+    c.height = h;
+    c.style.width = 0.1;
+    c.path.push_back({{RationalBezier::line(l.a, l.b)}, false});
+    const Vec2 n = Vec2{l.a.y - l.b.y, l.b.x - l.a.x} * (0.05 / distance(l.a, l.b));
+    c.oracle.move_to(l.a - n);
+    c.oracle.line_to(l.b - n);
+    c.oracle.line_to(l.b + n);
+    c.oracle.line_to(l.a + n);
+    c.oracle.close();
+    const test::Coverage ref = test::union_coverage(to_pixels(c.oracle, h), w, h);
+    const test::Coverage got = render_full(stroke_document(c), w, h, Placement(1.0, 0.0, h));
+    const test::CoverageStats st = test::compare(got, ref);
+    std::printf("0.1 px line (%g, %g)-(%g, %g): max %.4f, ink %.4f\n", l.a.x, l.a.y, l.b.x, l.b.y, st.max_abs,
+                st.ink_ratio);
+    if (st.max_abs > 0.004) test::write_comparison("tenth-px-line", got, ref);
+    EXPECT_LE(st.max_abs, 0.004);
+    EXPECT_NEAR(st.ink_ratio, 1.0, 0.005);
+    if (l.a.y == l.b.y) {
+      for (int x = 9; x < 87; ++x) EXPECT_NEAR(got.at(x, h - 41), 0.1, 0.004) << x;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace curvetext
