@@ -305,5 +305,58 @@ TEST(StrokeBadInput, LongPathsManyDashesCuspsAndExtremeWidths) {
   expect_mesh_or_error({cusp}, style(1e-7, LineJoin::Round, LineCap::Round), 1e-9, 5.0, "width 1e-7");
 }
 
+TEST(StrokeJson, EveryPropertyIsRead) {
+  const ShapeDocument doc = parse_shape_json(R"({"shapes": [
+    {"fill": false, "paint_order": "stroke fill",
+     "stroke": {"width": 3, "units": "px", "color": "#ff0000", "opacity": 0.5, "join": "miter-clip",
+                "miter_limit": 2.5, "cap": "square", "dashes": [4, 2, 1], "dash_offset": -3, "path_length": 100},
+     "contours": [{"items": [{"line": [[0, 0], [10, 0], [10, 10]]}], "closed": false}, [{"line": [[0, 0], [5, 5]]}]]},
+    {"stroke": {"units": "hairline", "join": "arcs"}, "contours": [[{"line": [[0, 0], [1, 1]]}]]}]})");
+  ASSERT_EQ(doc.shapes.size(), 2u);
+  const Shape& a = doc.shapes[0];
+  EXPECT_FALSE(a.filled);
+  EXPECT_EQ(a.paint_order, PaintOrder::StrokeFill);
+  ASSERT_TRUE(a.stroke.has_value());
+  const StrokeStyle& st = a.stroke->style;
+  EXPECT_EQ(st.width, 3.0);
+  EXPECT_EQ(st.width_unit, StrokeWidthUnit::Device);
+  EXPECT_FLOAT_EQ(a.stroke->color.r, 1.0f);
+  EXPECT_FLOAT_EQ(a.stroke->color.a, 0.5f);
+  EXPECT_EQ(st.join, LineJoin::MiterClip);
+  EXPECT_EQ(st.miter_limit, 2.5);
+  EXPECT_EQ(st.cap, LineCap::Square);
+  EXPECT_EQ(st.dashes, (std::vector<double>{4, 2, 1}));
+  EXPECT_EQ(st.dash_offset, -3.0);
+  EXPECT_EQ(st.path_length, 100.0);
+  ASSERT_EQ(a.contours.size(), 2u);
+  EXPECT_FALSE(a.contours[0].closed);
+  EXPECT_TRUE(a.contours[1].closed);
+  EXPECT_TRUE(doc.shapes[1].filled);
+  EXPECT_EQ(doc.shapes[1].stroke->style.width_unit, StrokeWidthUnit::Hairline);
+  EXPECT_EQ(doc.shapes[1].stroke->style.join, LineJoin::Arcs);
+  EXPECT_EQ(doc.shapes[1].paint_order, PaintOrder::FillStroke);
+}
+
+TEST(StrokeJson, BadValuesAreRefusedByName) {
+  const std::string head = R"({"shapes": [{"contours": [[{"line": [[0, 0], [1, 0]]}]], "stroke": )";
+  const struct {
+    const char* stroke;
+    const char* part;
+  } cases[] = {
+      {R"({"width": -1})", "shapes[0].stroke.width"},
+      {R"({"join": "mitre"})", "unknown value \"mitre\""},
+      {R"({"cap": 1})", "cap: expected a string"},
+      {R"({"units": "mm"})", "known: user, px, hairline"},
+      {R"({"dashes": [1, -2]})", "stroke.dashes[1]"},
+      {R"({"miter_limit": 0.5})", "miter_limit"},
+      {R"({"opacity": 2})", "opacity"},
+      {R"({"colour": "red"})", "unknown key \"colour\""},
+  };
+  for (const auto& c : cases)
+    testing::expect_error([&] { (void)parse_shape_json(head + c.stroke + "}]}"); }, ErrorCode::InvalidArgument, c.part);
+  testing::expect_error([] { (void)parse_shape_json(R"({"shapes": [{"contours": [{"items": [], "open": true}]}]})"); },
+                        ErrorCode::InvalidArgument, "unknown key \"open\"");
+}
+
 }  // namespace
 }  // namespace curvetext
