@@ -61,9 +61,9 @@ inline constexpr double kStrokeCircleRelative = 1e-9;
 // Points per fitted offset piece at which its distance to the true offset is
 // measured, each way (the Hausdorff error is their largest; dimensionless).
 inline constexpr int kStrokeFitSamples = 8;
-// Deepest halving of a conic while fitting its offset (2^-24 of the conic):
+// Deepest halving of a conic while fitting its offset (2^-20 of the conic):
 // past it the last fit is kept (only a cusp of the offset gets there).
-inline constexpr int kStrokeMaxFitDepth = 24;
+inline constexpr int kStrokeMaxFitDepth = 20;
 // Segments shorter than this fraction of the path's largest |coordinate|
 // count as zero length: they have no direction (dimensionless).
 inline constexpr double kStrokeZeroLengthRelative = 1e-12;

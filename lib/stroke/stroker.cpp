@@ -370,6 +370,11 @@ void Stroker::stroke(const std::vector<ShapeContour>& contours, const StrokeStyl
   for (const ShapeContour& c : contours)
     for (const RationalBezier& b : c.pieces)
       for (Vec2 p : b.points) reach = std::max({reach, std::abs(p.x), std::abs(p.y)});
+  if (tolerance < tolerance::kMinStrokeToleranceRelative * (reach + run.h))
+    throw Error(ErrorCode::InvalidArgument, "stroke tolerance " + detail::format_number_exact(tolerance) +
+                                                " is below what double precision can measure for a path reaching " +
+                                                detail::format_number_exact(reach) + " with half width " +
+                                                detail::format_number_exact(run.h));
   run.eps = tolerance::kStrokeZeroLengthRelative * reach;
   run.snap = std::max(run.eps, tolerance * tolerance::kStrokeSnapOfTolerance);
   path_.clear();

@@ -24,7 +24,8 @@
 // that wide on screen).
 //
 // Errors: Error(InvalidArgument) for a tolerance or px_per_unit that is not
-// positive and finite, a non-finite width, miter limit, dash value or offset,
+// positive and finite, a tolerance below
+// tolerance::kMinStrokeToleranceRelative of the path's reach, a non-finite width, miter limit, dash value or offset,
 // or a path the shape readers would refuse (append_quadratics' errors);
 // Error(Geometry) when the stroke would need more than
 // tolerance::kMaxStrokeSegments segments (a dash pattern of millions of

@@ -33,6 +33,11 @@ inline constexpr double kStrokeDashLengthOfTolerance = 1.0 / 16.0;
 // loops; past it stroke_outline throws Error(Geometry) (a pattern of 10^6
 // dashes needs about 10^7). Meshing time and memory grow with the count.
 inline constexpr std::size_t kMaxStrokeSegments = std::size_t{1} << 21;
+// Smallest stroke tolerance, as a fraction of the path's largest |coordinate|
+// plus the stroke's half width (dimensionless): below it double precision
+// cannot measure the fit (about 4,000 ulps), and stroke_outline throws
+// Error(InvalidArgument) instead of subdividing to its budget.
+inline constexpr double kMinStrokeToleranceRelative = 1e-12;
 
 // --- Mesh input (build_mesh, mesh.hpp) ----------------------------------------
 // Coordinates build_mesh accepts and how it reads them (outline units). Every
