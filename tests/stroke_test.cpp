@@ -12,7 +12,9 @@
 
 #include "curvetext/error.hpp"
 #include "curvetext/mesh.hpp"
+#include "curvetext/shapes.hpp"
 #include "curvetext/stroke.hpp"
+#include "curvetext/tolerances.hpp"
 #include "support/expect_error.hpp"
 #include "support/union_coverage.hpp"
 
@@ -356,6 +358,29 @@ TEST(StrokeJson, BadValuesAreRefusedByName) {
     testing::expect_error([&] { (void)parse_shape_json(head + c.stroke + "}]}"); }, ErrorCode::InvalidArgument, c.part);
   testing::expect_error([] { (void)parse_shape_json(R"({"shapes": [{"contours": [{"items": [], "open": true}]}]})"); },
                         ErrorCode::InvalidArgument, "unknown key \"open\"");
+}
+
+TEST(StrokeZoom, BuildScaleKeepsDeviceWidthsWithinTolerance) {
+  for (double width : {0.5, 1.0, 4.0}) {
+    StrokeStyle st;
+    st.width = width;
+    st.width_unit = StrokeWidthUnit::Device;
+    int rebuilds = 0;
+    double last = 0.0;
+    for (double s = 1.0; s < 2.0; s *= 1.001) {
+      const double b = stroke_build_scale(st, s);
+      if (b != last) ++rebuilds;
+      last = b;
+      // Built at b (width / b units), drawn at s: width * s / b px.
+      EXPECT_LE(std::abs(width * s / b - width) / 2.0, tolerance::kStrokeOffsetPx * (1 + 1e-9)) << s;
+    }
+    // Buckets of ratio (1 + 2 tol / w)^2 per doubling: log 2 / (2 log(1 + 1 / (32 w))).
+    const double expected = std::log(2.0) / (2.0 * std::log1p(2.0 * tolerance::kStrokeOffsetPx / width));
+    EXPECT_NEAR(rebuilds, expected, 1.5) << width;
+  }
+  StrokeStyle user;
+  user.width = 3;
+  EXPECT_EQ(stroke_build_scale(user, 2.5), 2.5);
 }
 
 }  // namespace

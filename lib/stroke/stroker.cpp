@@ -33,6 +33,20 @@ double stroke_width_in_units(const StrokeStyle& style, double px_per_unit) {
   return 0.0;
 }
 
+double stroke_build_scale(const StrokeStyle& style, double px_per_unit, double tolerance_px) {
+  (void)stroke_width_in_units(style, px_per_unit);  // checks px_per_unit and the width
+  if (!(tolerance_px > 0.0) || !std::isfinite(tolerance_px))
+    throw Error(ErrorCode::InvalidArgument,
+                "tolerance_px must be positive and finite, got " + detail::format_number_exact(tolerance_px));
+  // (Not from the width in units: its rounding would move the bucket's scale by an ulp.)
+  const double width_px = style.width_unit == StrokeWidthUnit::Hairline ? 1.0 : style.width;
+  if (style.width_unit == StrokeWidthUnit::User || !(width_px > 0.0)) return px_per_unit;
+  const double q = 2.0 * tolerance_px / width_px;
+  const double log_ratio = 2.0 * std::log1p(q);
+  const double bucket = std::floor(std::log(px_per_unit) / log_ratio);
+  return std::exp((bucket + 0.5) * log_ratio);
+}
+
 namespace {
 
 void check_finite(double v, const char* what) {
