@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <string>
 
 #include "curvetext/error.hpp"
@@ -167,6 +168,20 @@ struct Layer {
   std::size_t shape;
 };
 
+// `part` added to `all` (its vertices renumbered after all's).
+void append_mesh(Mesh& all, const Mesh& part) {
+  const auto base = static_cast<std::uint32_t>(all.points.size());
+  all.points.insert(all.points.end(), part.points.begin(), part.points.end());
+  for (auto t : part.triangles) all.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  for (CurvedTriangle c : part.curves) {
+    c.p0 += base;
+    c.control += base;
+    c.p2 += base;
+    all.curves.push_back(c);
+  }
+  for (auto l : part.boundary_lines) all.boundary_lines.push_back({l[0] + base, l[1] + base});
+}
+
 // The shape's fill and stroke meshes in paint order (docs/strokes.md).
 void shape_layers(const Shape& shape, std::size_t index, double tolerance, double px_per_unit, Vec2 centre,
                   double scale, std::vector<Layer>& out) {
@@ -181,7 +196,23 @@ void shape_layers(const Shape& shape, std::size_t index, double tolerance, doubl
     // docs/design.md section 8: offsets within tolerance::kStrokeOffsetPx at the drawn scale.
     const double stroke_tolerance = tolerance::kStrokeOffsetPx / px_per_unit;
     const Outline o = stroke_outline(shape.contours, shape.stroke->style, stroke_tolerance, px_per_unit);
-    if (!o.empty()) out.push_back({relative_to(build_mesh(o, mo), centre, scale), shape.stroke->color, index});
+    if (o.empty()) return;
+    try {
+      out.push_back({relative_to(build_mesh(o, mo), centre, scale), shape.stroke->color, index});
+    } catch (const Error& e) {
+      // docs/strokes.md, limits: where the mesher's budget refuses the union
+      // of many crossing subpaths, an opaque stroke is meshed subpath by
+      // subpath into one mesh whose triangles overlap where subpaths cross
+      // (the same pixels, but for the antialiased edges there); a
+      // translucent one would show its overlaps, and is refused.
+      if (e.code() != ErrorCode::Geometry || shape.stroke->color.a < 1.0f || shape.contours.size() < 2) throw;
+      Mesh all;
+      for (const ShapeContour& c : shape.contours) {
+        const Outline one = stroke_outline({c}, shape.stroke->style, stroke_tolerance, px_per_unit);
+        if (!one.empty()) append_mesh(all, build_mesh(one, mo));
+      }
+      out.push_back({relative_to(std::move(all), centre, scale), shape.stroke->color, index});
+    }
   };
   if (shape.paint_order == PaintOrder::StrokeFill) {
     stroke();
