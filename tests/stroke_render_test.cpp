@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "curvetext/error.hpp"
+#include "curvetext/mesh.hpp"
 #include "curvetext/shape_image.hpp"
 #include "curvetext/stroke.hpp"
 #include "curvetext/tolerances.hpp"
@@ -232,6 +233,43 @@ TEST(StrokeInvariant, TenthOfAPixelLineKeepsExactCoverage) {
       for (int x = 9; x < 87; ++x) EXPECT_NEAR(got.at(x, h - 41), 0.1, 0.004) << x;
     }
   }
+}
+
+// Many crossing subpaths in one opaque stroke (178 lines and arcs 0.5 px
+// wide, from bench/stroke_peer.py's CAD sheet), beyond what build_mesh's
+// budget meshes as one union: drawn subpath by subpath (docs/strokes.md,
+// limits), matching the union's exact coverage but for antialiased edges
+// where subpaths cross.
+TEST(StrokeLimits, CrossingSubpathsPastTheMeshBudgetAreDrawnOpaque) {
+  const ShapeDocument doc =
+      read_shape_file(std::string(CURVETEXT_SOURCE_DIR) + "/tests/fixtures/strokes/crossing_thin_strokes.json");
+  const Shape& shape = doc.shapes.at(0);
+  const Outline whole = stroke_outline(shape.contours, shape.stroke->style, tolerance::kStrokeOffsetPx);
+  bool refused = false;
+  try {
+    (void)build_mesh(whole);
+  } catch (const Error& e) {
+    refused = e.code() == ErrorCode::Geometry;
+  }
+  if (!refused) GTEST_SKIP() << "build_mesh now meshes this union: the fallback is not reached";
+  // A 512 x 384 window of the sheet at 1 px per unit.
+  const int w = 512, h = 384;
+  const Placement placement(1.0, -600.0, 900.0);
+  Outline px;
+  for (const Contour& k : whole.contours()) {
+    auto map = [&](Vec2 p) { return Vec2{p.x - 600.0, 900.0 - p.y}; };
+    px.move_to(map(k.segments.front().p[0]));
+    for (const Segment& sg : k.segments) {
+      if (sg.kind == Segment::Kind::Line)
+        px.line_to(map(sg.p[1]));
+      else
+        px.conic_to(map(sg.p[1]), map(sg.p[2]), sg.weight);
+    }
+    px.close();
+  }
+  const test::Coverage ref = test::union_coverage(px, w, h);
+  const test::Coverage got = render_full(doc, w, h, placement);
+  test::expect_coverage("crossing-subpaths", got, ref, test::compare(got, ref), 0.01, 0.01);
 }
 
 }  // namespace
