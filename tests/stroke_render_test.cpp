@@ -160,11 +160,11 @@ test::Coverage render_full(const ShapeDocument& doc, int width, int height, Plac
 constexpr double kEdgeLimit = 0.003;
 constexpr double kInkLimit = 0.002;
 
-const char* const kCases[] = {"miter_join_butt_cap",      "round_join_round_cap",    "bevel_join_square_cap",
-                              "miter_past_limit",         "miter_clip_past_limit",   "dashed_quadratic",
-                              "dashed_round_caps_closed", "stroked_circle",          "rounded_rectangle",
-                              "cubic_round_caps",         "ellipse_arc_square_caps", "reversal_round_join",
-                              "zero_length_dots",         "path_length_dashes"};
+const char* const kCases[] = {
+    "miter_join_butt_cap",   "round_join_round_cap", "bevel_join_square_cap",    "miter_past_limit",
+    "miter_clip_past_limit", "dashed_quadratic",     "dashed_round_caps_closed", "stroked_circle",
+    "rounded_rectangle",     "cubic_round_caps",     "ellipse_arc_square_caps",  "reversal_round_join",
+    "zero_length_dots",      "path_length_dashes",   "thick_small_circle",       "thick_tight_ellipse"};
 
 TEST(StrokeOracle, OutlineMatchesTheBufferedRegion) {
   for (const char* name : kCases) {
@@ -178,6 +178,9 @@ TEST(StrokeOracle, OutlineMatchesTheBufferedRegion) {
 
 TEST(StrokeOracle, FullAntialiasingMatchesTheBufferedRegion) {
   for (const char* name : kCases) {
+    // Its outline (right above) is the region, but build_mesh's hull-separation
+    // budget refuses it (docs/strokes.md, limits).
+    if (std::string(name) == "thick_tight_ellipse") continue;
     const Case c = read_case(name);
     const test::Coverage ref = test::union_coverage(to_pixels(c.oracle, c.height), c.width, c.height);
     const test::Coverage got = render_full(stroke_document(c), c.width, c.height, Placement(1.0, 0.0, c.height));

@@ -75,8 +75,11 @@ Segment candidate(Vec2 a, Vec2 t0, Vec2 b, Vec2 t1, Vec2 m) {
 }
 
 void fit_offset(const Segment& c, double d, double tol, int depth, Budget& budget, std::vector<Segment>& out) {
-  const Vec2 t0 = start_tangent(c), t1 = end_tangent(c);
-  const Vec2 a = c.p[0] + left_normal(t0) * d, b = c.p[2] + left_normal(t1) * d;
+  // The offset runs along c' (1 - d k): backwards past the centre of
+  // curvature (k the signed curvature).
+  const Vec2 t0 = start_tangent(c) * (1.0 - d * end_curvature(c, false) < 0.0 ? -1.0 : 1.0);
+  const Vec2 t1 = end_tangent(c) * (1.0 - d * end_curvature(c, true) < 0.0 ? -1.0 : 1.0);
+  const Vec2 a = c.p[0] + left_normal(start_tangent(c)) * d, b = c.p[2] + left_normal(end_tangent(c)) * d;
   const Segment fit = candidate(a, t0, b, t1, offset_point(c, 0.5, d));
   if (depth >= kStrokeMaxFitDepth || fit_error(c, d, fit) <= tol) {
     budget.spend(1);

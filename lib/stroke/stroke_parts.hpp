@@ -49,6 +49,18 @@ double parameter_at_length(const Segment& s, double target, double total, double
 // (sampled Hausdorff distance) otherwise.
 void append_offset(const Segment& s, double d, double tolerance, Budget& budget, std::vector<Segment>& out);
 
+// Signed curvature (1 / radius, > 0 turning left) of s at t; 0 for a line.
+double curvature(const Segment& s, double t);
+// Whether s (a conic) turns tighter than radius h somewhere.
+bool tighter_than(const Segment& s, double h);
+// The region swept by the normals of s from -h to h, as closed loops each
+// counter-clockwise (lib/stroke/tight.cpp says why), appended to `out`.
+void append_sweep_loops(const Segment& s, double h, double tolerance, Budget& budget,
+                        std::vector<std::vector<Segment>>& out);
+// The loop from p along a join's segments (from a to b) and back to p,
+// counter-clockwise.
+void append_wedge(Vec2 p, const std::vector<Segment>& join, std::vector<std::vector<Segment>>& out);
+
 // Joins and caps, appended as segments continuing the side being built.
 struct JoinStyle {
   LineJoin join = LineJoin::Miter;

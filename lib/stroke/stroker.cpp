@@ -134,6 +134,8 @@ struct Stroker::Run {
   void side_of(const Segment* first, const Segment* last, bool closed, double d, std::vector<Segment>& side);
   void sides(const Segment* first, const Segment* last, bool closed);
   void outline_open(const Segment* first, const Segment* last);
+  void outline_tight(const Segment* first, const Segment* last, bool closed);
+  bool tight(const Segment* first, const Segment* last) const;
   void outline_closed(const Segment* first, const Segment* last);
   void emit_dot(Vec2 p, Vec2 t);
   void dash(std::size_t first, std::size_t last, bool closed);
@@ -254,7 +256,44 @@ void Stroker::Run::sides(const Segment* first, const Segment* last, bool closed)
   side_of(first, last, closed, h, k.left_);
 }
 
+bool Stroker::Run::tight(const Segment* first, const Segment* last) const {
+  for (const Segment* s = first; s != last; ++s)
+    if (tighter_than(*s, h)) return true;
+  return false;
+}
+
+// A subpath with a piece turning tighter than the half width: each piece's
+// sweep, each join's wedge and each cap as loops of their own, all
+// counter-clockwise (tight.cpp).
+void Stroker::Run::outline_tight(const Segment* first, const Segment* last, bool closed) {
+  std::vector<std::vector<Segment>> loops;
+  for (const Segment* s = first; s != last; ++s) {
+    append_sweep_loops(*s, h, tol, budget, loops);
+    const Segment* next = s + 1 != last ? s + 1 : closed ? first : nullptr;
+    if (!next) continue;
+    const Vec2 p = s->end(), t0 = end_tangent(*s), t1 = start_tangent(*next);
+    k.cap_.clear();
+    append_join(p, t0, t1, end_curvature(*s, true), end_curvature(*next, false), outer_side(t0, t1, -1.0) ? -1.0 : 1.0,
+                join, k.cap_);
+    append_wedge(p, k.cap_, loops);
+  }
+  if (!closed && cap != LineCap::Butt) {
+    k.cap_.clear();
+    append_cap((last - 1)->end(), end_tangent(*(last - 1)), h, cap, k.cap_);
+    append_wedge((last - 1)->end(), k.cap_, loops);
+    k.cap_.clear();
+    append_cap(first->p[0], start_tangent(*first) * -1.0, h, cap, k.cap_);
+    append_wedge(first->p[0], k.cap_, loops);
+  }
+  for (const std::vector<Segment>& loop : loops) {
+    k.staged_.move_to(pen = loop.front().p[0]);
+    emit(loop, false);
+    k.staged_.close();
+  }
+}
+
 void Stroker::Run::outline_open(const Segment* first, const Segment* last) {
+  if (tight(first, last)) return outline_tight(first, last, false);
   sides(first, last, false);
   Outline& o = k.staged_;
   o.move_to(pen = k.right_.front().p[0]);
@@ -270,6 +309,7 @@ void Stroker::Run::outline_open(const Segment* first, const Segment* last) {
 }
 
 void Stroker::Run::outline_closed(const Segment* first, const Segment* last) {
+  if (tight(first, last)) return outline_tight(first, last, true);
   sides(first, last, true);
   Outline& o = k.staged_;
   o.move_to(pen = k.right_.front().p[0]);
