@@ -2,9 +2,11 @@
 // StrokeStyle (stroke_style.hpp) become an Outline whose NONZERO fill is the
 // stroke region, meshed by build_mesh (mesh.hpp) like any fill. The outline
 // is a set of closed loops (the offset sides of each subpath or dash with its
-// joins and caps), all oriented so that the region they sweep has winding of
-// one sign; they overlap each other at inner joins, cusps and where the path
-// crosses itself, and build_mesh's nonzero union resolves that.
+// joins and caps; piece by piece where the stroke is wider than a curve's
+// radius of curvature), all oriented so that the region they sweep has
+// winding of one sign; they overlap each other at inner joins, cusps and
+// where the path crosses itself, and build_mesh's nonzero union resolves
+// that.
 //
 // What is exact: lines and their offsets; round joins and round caps (circle
 // arcs as rational quadratics); the offsets of circular arcs (the concentric
@@ -25,8 +27,9 @@
 //
 // Errors: Error(InvalidArgument) for a tolerance or px_per_unit that is not
 // positive and finite, a tolerance below
-// tolerance::kMinStrokeToleranceRelative of the path's reach, a non-finite width, miter limit, dash value or offset,
-// or a path the shape readers would refuse (append_quadratics' errors);
+// tolerance::kMinStrokeToleranceRelative of the path's reach, a non-finite
+// width, miter limit, dash value, dash offset or pathLength, or a path the
+// shape readers would refuse (append_quadratics' errors);
 // Error(Geometry) when the stroke would need more than
 // tolerance::kMaxStrokeSegments segments (a dash pattern of millions of
 // dashes, a width far beyond the path's size at a tiny tolerance): bounded
@@ -65,9 +68,9 @@ CURVETEXT_API double stroke_build_scale(const StrokeStyle& style, double px_per_
                                         double tolerance_px = tolerance::kStrokeOffsetPx);
 
 // Strokes paths, keeping its scratch memory (the flattened path, the two
-// offset sides, the dash boundaries) between calls, so that stroking many
-// paths allocates nothing once warm. Move-only is not needed: it is a value
-// whose copies share nothing.
+// offset sides, the dash being built) between calls, so that stroking many
+// paths reuses it (strokes wider than a curve's radius of curvature still
+// allocate their loops). A value: copies share nothing.
 class CURVETEXT_API Stroker {
  public:
   // Appends the loops of the stroke of `contours` to `out` (see the header
