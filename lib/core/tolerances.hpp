@@ -64,6 +64,14 @@ inline constexpr int kStrokeFitSamples = 8;
 // Deepest halving of a conic while fitting its offset (2^-20 of the conic):
 // past it the last fit is kept (only a cusp of the offset gets there).
 inline constexpr int kStrokeMaxFitDepth = 20;
+// Offset fits (each measured at 2 x kStrokeFitSamples points by Newton's
+// method, about 300 curve evaluations) one stroke may try: this many per
+// segment of the path (lines and conics after cubics are split) plus a
+// base; past it stroke_outline throws Error(Geometry). Smooth curves need
+// 1-4 per side at 1/64 px (bench/stroke_bench); a tolerance near double
+// precision needs 2^20 per conic (dimensionless counts).
+inline constexpr std::size_t kStrokeFitsPerSegment = 64;
+inline constexpr std::size_t kStrokeFitsBase = std::size_t{1} << 15;
 // Segments shorter than this fraction of the path's largest |coordinate|
 // count as zero length: they have no direction (dimensionless).
 inline constexpr double kStrokeZeroLengthRelative = 1e-12;

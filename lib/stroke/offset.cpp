@@ -40,8 +40,9 @@ double foot(const Segment& c, Vec2 x, double t) {
 
 // Largest sampled distance between `fit` and the offset of `c` by d, both
 // ways: points of the fit to the offset (their distance to c at their foot,
-// less |d|), and points of the offset to their nearest point of the fit.
-double fit_error(const Segment& c, double d, const Segment& fit) {
+// less |d|), and points of the offset to their nearest point of the fit;
+// the first one past `tol` once the fit is rejected.
+double fit_error(const Segment& c, double d, const Segment& fit, double tol) {
   double error = 0.0;
   for (int k = 1; k < kStrokeFitSamples; ++k) {
     const double t = static_cast<double>(k) / kStrokeFitSamples;
@@ -55,6 +56,7 @@ double fit_error(const Segment& c, double d, const Segment& fit) {
     error = std::max(error, std::abs(length(r) - std::abs(d)));
     const Vec2 y = offset_point(c, t, d);
     error = std::max(error, distance(y, evaluate(fit, foot(fit, y, t))));
+    if (error > tol) return error;  // rejected: the rest need not be measured
   }
   return error;
 }
@@ -81,7 +83,8 @@ void fit_offset(const Segment& c, double d, double tol, int depth, Budget& budge
   const Vec2 t1 = end_tangent(c) * (1.0 - d * end_curvature(c, true) < 0.0 ? -1.0 : 1.0);
   const Vec2 a = c.p[0] + left_normal(start_tangent(c)) * d, b = c.p[2] + left_normal(end_tangent(c)) * d;
   const Segment fit = candidate(a, t0, b, t1, offset_point(c, 0.5, d));
-  if (depth >= kStrokeMaxFitDepth || fit_error(c, d, fit) <= tol) {
+  budget.fit();
+  if (depth >= kStrokeMaxFitDepth || fit_error(c, d, fit, tol) <= tol) {
     budget.spend(1);
     out.push_back(fit);
     return;

@@ -7,6 +7,7 @@
 #include "curvetext/error.hpp"
 #include "curvetext/tolerances.hpp"
 #include "core/format.hpp"
+#include "core/tolerances.hpp"
 #include "stroke/stroke_parts.hpp"
 
 namespace curvetext::stroke {
@@ -56,6 +57,18 @@ void Budget::spend(std::size_t n) {
                                          std::to_string(tolerance::kMaxStrokeSegments) +
                                          " segments (a dash pattern too fine for the path, or a width or "
                                          "tolerance far from the path's size)");
+}
+
+void Budget::fit() {
+  if (++fits_ > fit_limit_)
+    throw Error(ErrorCode::Geometry, "the stroke's offsets would need more than " + std::to_string(fit_limit_) +
+                                         " fitted pieces (a tolerance too fine for the path's size and width)");
+}
+
+void Budget::reset(std::size_t path_segments) {
+  used_ = 0;
+  fits_ = 0;
+  fit_limit_ = tolerance::kStrokeFitsBase + tolerance::kStrokeFitsPerSegment * path_segments;
 }
 
 namespace {

@@ -26,15 +26,22 @@ inline Vec2 unit(Vec2 v) {
 }
 Segment reversed(const Segment& s);
 
-// Counts the segments a stroke makes against tolerance::kMaxStrokeSegments
-// and throws Error(Geometry) past it.
+// Counts the segments a stroke makes against tolerance::kMaxStrokeSegments,
+// and the offset fits it measures against a limit proportional to the path
+// (tolerance::kStrokeFitsPerSegment per segment plus kStrokeFitsBase), and
+// throws Error(Geometry) past either: a fit costs about 300 curve
+// evaluations, so a tolerance far below what double precision resolves
+// stops there instead of subdividing for seconds.
 class Budget {
  public:
   void spend(std::size_t n);
-  void reset() { used_ = 0; }
+  void fit();
+  void reset(std::size_t path_segments);
 
  private:
   std::size_t used_ = 0;
+  std::size_t fits_ = 0;
+  std::size_t fit_limit_ = 0;
 };
 
 // Arc length of s over [0, t], integrated (adaptive Gauss-Legendre) within

@@ -437,6 +437,7 @@ void Stroker::stroke(const std::vector<ShapeContour>& contours, const StrokeStyl
   staged_.clear();
   for (const ShapeContour& c : contours) run.flatten(c);
   subpaths_.push_back(path_.size());
+  run.budget.reset(path_.size());
   run.dashed = false;
   if (!style.dashes.empty()) {
     lengths_.resize(path_.size());
