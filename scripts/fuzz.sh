@@ -42,7 +42,7 @@ subset /usr/share/fonts/truetype/inter-vf/Inter.var.ttf inter-var.ttf
 # finding, not a stuck run); input sizes as each target needs.
 declare -A max_len=([font]=65536 [outline]=4096 [svg]=8192 [svg_path]=4096 [nurbs_json]=8192 [paragraph]=2048 [stroke]=2048)
 # CI's fixed runs: about 10 s per target on a 2-core machine.
-declare -A ci_runs=([font]=2000 [outline]=2000 [svg]=30000 [svg_path]=20000 [nurbs_json]=30000 [paragraph]=20000 [stroke]=3000)
+declare -A ci_runs=([font]=2000 [outline]=2000 [svg]=30000 [svg_path]=20000 [nurbs_json]=30000 [paragraph]=20000 [stroke]=2000)
 declare -A seeds=([font]="fonts/test $fonts" [svg]=tests/fixtures/shapes [nurbs_json]="tests/fixtures/shapes docs/shapes")
 # fontconfig's own leaks at initialisation (tests/sanitizer/lsan.supp says why).
 export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizer/lsan.supp:print_suppressions=0"
