@@ -19,7 +19,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-20}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(font outline svg svg_path nurbs_json paragraph)
+[ ${#targets[@]} -eq 0 ] && targets=(font outline svg svg_path nurbs_json paragraph stroke)
 build=${FUZZ_BUILD_DIR:-build-clang}
 JOBS=${JOBS:-2}
 
@@ -40,9 +40,9 @@ subset /usr/share/fonts/truetype/inter-vf/Inter.var.ttf inter-var.ttf
 
 # Per input: at most 10 s and 2 GiB (a hang or a runaway allocation is a
 # finding, not a stuck run); input sizes as each target needs.
-declare -A max_len=([font]=65536 [outline]=4096 [svg]=8192 [svg_path]=4096 [nurbs_json]=8192 [paragraph]=2048)
+declare -A max_len=([font]=65536 [outline]=4096 [svg]=8192 [svg_path]=4096 [nurbs_json]=8192 [paragraph]=2048 [stroke]=2048)
 # CI's fixed runs: about 10 s per target on a 2-core machine.
-declare -A ci_runs=([font]=2000 [outline]=2000 [svg]=30000 [svg_path]=20000 [nurbs_json]=30000 [paragraph]=20000)
+declare -A ci_runs=([font]=2000 [outline]=2000 [svg]=30000 [svg_path]=20000 [nurbs_json]=30000 [paragraph]=20000 [stroke]=2000)
 declare -A seeds=([font]="fonts/test $fonts" [svg]=tests/fixtures/shapes [nurbs_json]="tests/fixtures/shapes docs/shapes")
 # fontconfig's own leaks at initialisation (tests/sanitizer/lsan.supp says why).
 export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizer/lsan.supp:print_suppressions=0"

@@ -26,6 +26,9 @@ packages=(
   # the incumbent layout engine the benchmarks compare with, and its pango-view
   # (bench/batch_render_bench.sh)
   libpango1.0-dev pango1.0-tools
+  # the stroke oracles and the stroke peer (tests/fixtures/strokes/make_stroke_oracles.py,
+  # bench/stroke_peer.py): GEOS through shapely, numpy, and librsvg's rsvg-convert (Cairo)
+  python3-shapely python3-numpy librsvg2-bin
   # fonts: the default font (DejaVu Sans) and the test corpus
   fonts-dejavu-core fonts-dejavu-extra fonts-noto-core fonts-noto-cjk fonts-urw-base35
   fonts-inter-variable

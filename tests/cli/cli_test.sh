@@ -127,6 +127,18 @@ if timeout 120 "$CURVETEXT" shape --input "$shapes/ellipse-arc.svg" --size 100x5
 else
   bad "shape: SVG arcs with --size: $(cat "$tmp/stderr")"
 fi
+# Strokes: the drawing with its strokes against the same shapes with none (only the first is filled).
+sed 's/"stroke": {[^}]*},//' "$shapes/strokes.json" >"$tmp/no-strokes.json"
+if timeout 120 "$CURVETEXT" shape --input "$shapes/strokes.json" -o "$tmp/strokes.png" 2>"$tmp/stderr" &&
+   timeout 120 "$CURVETEXT" shape --input "$tmp/no-strokes.json" -o "$tmp/no-strokes.png" 2>>"$tmp/stderr" &&
+   read -r w h _ ink_strokes ink_none <<<"$(python3 "$(dirname "$0")/png_diff.py" "$tmp/strokes.png" "$tmp/no-strokes.png")" &&
+   [ "$w $h" = "480 320" ] && [ "$ink_strokes" -gt $((ink_none * 3)) ]; then
+  ok "shape: strokes (JSON) drawn"
+else
+  bad "shape: strokes (JSON): $(cat "$tmp/stderr") ink ${ink_strokes:-?} vs ${ink_none:-?}"
+fi
+printf '{"shapes": [{"stroke": {"join": "mitre"}, "contours": [[{"line": [[0,0],[1,0]]}]]}]}' >"$tmp/join.json"
+expect_error "shape: unknown stroke join" 1 "known: miter, miter-clip, round, bevel, arcs" -- shape --input "$tmp/join.json" -o "$tmp/out.png"
 printf '{"shapes": [{"contours": [[{"nurbs": {"degree": 2, "points": [[0,0],[1,1],[2,0]], "knots": [0,1,0,0,1,1]}}]]}]}' >"$tmp/knots.json"
 printf '{"shapes": [{"contours": [[{"bezier": {"points": [[0,0],[1,1],[2,0]], "weights": [1,-1,1]}}]]}]}' >"$tmp/weight.json"
 printf '{"shapes": [{"contours": [[{"line": [[0,0],[1e300,0],[1,1]]}]]}]}' >"$tmp/huge.json"

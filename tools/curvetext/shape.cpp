@@ -59,7 +59,10 @@ void shape(const std::vector<std::string>& arguments) {
 
   ShapeDocument doc = read_shape_file(*input);
   if (foreground)
-    for (Shape& s : doc.shapes) s.color = *foreground;
+    for (Shape& s : doc.shapes) {
+      s.color = *foreground;
+      if (s.stroke) s.stroke->color = *foreground;
+    }
   // Everything that can be checked without a GL device is checked first.
   if (style.perspective_pending()) {
     const ShapeImageLayout plain = layout_shape_image(doc, options);

@@ -1,6 +1,7 @@
-// A shape document (shapes.hpp) to an image through the renderer: one mesh,
-// one DrawBatch and one draw per shape, in document order, each in its own
-// colour, blended source-over.
+// A shape document (shapes.hpp) to an image through the renderer: for each
+// shape in document order, its fill and its stroke (stroke.hpp) in its paint
+// order, each one mesh, one DrawBatch and one draw in its own colour,
+// blended source-over.
 #pragma once
 
 #include "curvetext/export.hpp"
@@ -39,14 +40,18 @@ struct ShapeImageLayout {
 CURVETEXT_API ShapeImageLayout layout_shape_image(const ShapeDocument& doc, const ShapeImageOptions& options);
 
 // Draws every shape in order with `renderer` into an offscreen ImageTarget
-// (at layout's size) and returns it read back. Cubics and
-// higher degrees are approximated within tolerance::kCubicApproximationPx at
-// the drawn scale. Needs the renderer's GL context current on the calling
-// thread. Meshes are drawn relative to the view's centre (moved there in
-// double). Throws Error(Geometry) for a shape the tessellator refuses or one
-// reaching more than tolerance::kMaxGpuCoordinatePx from the view's centre
-// at the drawn scale (before anything is drawn), Error(InvalidArgument) for a gamma out of range or a
-// size above the GL maximum, Error(Gl) when drawing fails.
+// (at layout's size) and returns it read back. Cubics and higher degrees
+// are approximated within tolerance::kCubicApproximationPx at the drawn
+// scale, stroke offsets within tolerance::kStrokeOffsetPx; device and
+// hairline stroke widths are measured at the placement's scale times the
+// transform's largest stretch. Needs the renderer's GL context current on
+// the calling thread. Meshes are drawn relative to the view's centre (moved
+// there in double). Throws Error(Geometry) for a shape the tessellator
+// refuses (an opaque stroke whose union it refuses is meshed subpath by
+// subpath instead: docs/strokes.md, limits) or one reaching more than
+// tolerance::kMaxGpuCoordinatePx from the view's centre at the drawn scale
+// (before anything is drawn), Error(InvalidArgument) for a gamma out of
+// range or a size above the GL maximum, Error(Gl) when drawing fails.
 CURVETEXT_API Image render_shape_image(Renderer& renderer, const ShapeDocument& doc, const ShapeImageLayout& layout,
                                        const ShapeImageOptions& options);
 
