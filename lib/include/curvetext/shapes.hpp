@@ -3,7 +3,7 @@
 // rational Bezier pieces, with a fill rule and a colour. Two inputs:
 //  - JSON with NURBS curves (any degree, weights, knot vector) and lines
 //    (docs/shapes/README.md gives the format);
-//  - SVG path data (M L H V Q T C S A Z) and a minimal SVG file reader.
+//  - SVG path data (M L H V Q T C S A Z) and SVG documents (docs/svg.md).
 // Exact where it can be: lines, quadratic NURBS/Beziers (rational or not) and
 // SVG elliptical arcs become exact rational quadratics (docs/design.md section 3).
 // Polynomial cubics use cubic_to_quadratics (curves.hpp); rational cubics and
@@ -147,13 +147,22 @@ CURVETEXT_API Outline even_odd_to_nonzero(const Outline& outline);
 CURVETEXT_API ShapeDocument parse_shape_json(std::string_view text);
 // SVG path data in its own coordinates (no mirroring). Arcs become exact conics.
 CURVETEXT_API std::vector<ShapeContour> parse_svg_path(std::string_view d);
-// Minimal SVG: <svg width height viewBox> and its <path d fill fill-rule>
-// elements (also inside <g>, which is otherwise ignored); a `transform`
-// attribute is refused rather than ignored.
+// An SVG document: the static subset icons and drawings use (docs/svg.md):
+// shapes and paths, transforms, viewBox, <use>/<symbol>/<defs>, the CSS
+// cascade of <style> sheets, style and presentation attributes, colours,
+// opacity. Every part it does not draw (strokes, gradients, filters, text,
+// ...) is refused by name with its line and column, never dropped.
+struct SvgOptions {
+  // The value of `currentColor` where the document does not set `color`
+  // (icon themes leave it to the toolkit: its text colour).
+  Color current_color{0, 0, 0, 1};
+};
+CURVETEXT_API ShapeDocument parse_svg(std::string_view text, const SvgOptions& options);
 CURVETEXT_API ShapeDocument parse_svg(std::string_view text);
 // By extension: .json or .svg (any case). Throws Error(Io) when unreadable,
 // Error(InvalidArgument) for another extension, and the readers' errors
 // prefixed with the path.
+CURVETEXT_API ShapeDocument read_shape_file(const std::string& path, const SvgOptions& options);
 CURVETEXT_API ShapeDocument read_shape_file(const std::string& path);
 
 }  // namespace curvetext
