@@ -80,6 +80,21 @@ def compare(a, b, size):
     return total / (3.0 * size * size * 255.0), worst / 255.0
 
 
+def write_diff(a, b, size, path):
+    """Grey where the images agree, darker by the largest channel difference."""
+    surface = cairo.ImageSurface(cairo.FORMAT_RGB24, size, size)
+    stride = surface.get_stride()
+    out = bytearray(stride * size)
+    for y, (ra, rb) in enumerate(zip(a, b)):
+        for x in range(size):
+            i = 4 * x
+            d = max(abs(ra[i + k] - rb[i + k]) for k in range(3))
+            out[y * stride + i : y * stride + i + 3] = bytes([255 - d] * 3)
+    surface.get_data()[:] = out
+    surface.mark_dirty()
+    surface.write_to_png(path)
+
+
 def reason_key(message):
     """The refusal reason without the file name and positions, for counting."""
     m = message
@@ -148,6 +163,7 @@ def measure_theme(args, name, root, out_dir):
                 base = os.path.join(args.keep, "%s-%d" % (name, i))
                 os.replace(os.path.join(out_dir, "ct%d.png" % i), base + "-curvetext.png")
                 os.replace(ref, base + "-rsvg.png")
+                write_diff(a, b, args.size, base + "-diff.png")
     return stats
 
 
