@@ -9,6 +9,7 @@
 #include <string>
 
 #include "curvetext/error.hpp"
+#include "curvetext/image.hpp"
 #include "curvetext/shape_image.hpp"
 #include "curvetext/shapes.hpp"
 #include "shapes/svg_css.hpp"
@@ -320,11 +321,7 @@ TEST(SvgRefusals, WhatIsNotDrawnIsNamedWithItsPosition) {
   expect_refused("<svg><path style='clip-path:url(#c)'" + sq + "/></svg>", "clip-path");
   expect_refused("<svg><path stroke='red'" + sq + "/></svg>", "strokes are not drawn");
   expect_refused("<svg><path marker-end='url(#m)'" + sq + "/></svg>", "markers are not supported");
-  expect_refused(
-      "<svg><linearGradient id='g'><stop stop-color='red'/><stop offset='1' stop-color='blue'/>"
-      "</linearGradient><path fill='url(#g)'" +
-          sq + "/></svg>",
-      "gradients are not supported");
+  expect_refused("<svg><pattern id='p'/><path fill='url(#p)'" + sq + "/></svg>", "fill refers to <pattern>");
   expect_refused("<svg><path fill='bluish'" + sq + "/></svg>", "fill 'bluish' is not a colour");
   // Not drawn, as SVG says: metadata, foreign and unknown elements, defs, hidden shapes, no-stroke widths.
   const ShapeDocument d =
@@ -388,6 +385,79 @@ TEST(SvgRender, ShapesTransformsAndUseMatchExactCoverage) {
     std::printf("%s: edge %.4f max %.3f ink %.4f\n", name.c_str(), st.edge_mean_abs, st.max_abs, st.ink_ratio);
     test::expect_coverage(name, got, ref, st, edge_limit, aa == AntiAliasing::Msaa ? 0.02 : 0.005);
   }
+}
+
+// Gradients: each pixel inside a rectangle is the gradient at its centre
+// (premultiplied interpolation of the stops), over white; edge pixels are
+// that colour times their exact coverage. Linear with reflect, and radial
+// with a focal point and repeat, in every offscreen AA mode.
+TEST(SvgRender, GradientsArePaintedPerPixel) {
+  const ShapeDocument doc = parse_svg(
+      "<svg width='80' height='60' viewBox='0 0 80 60'>"
+      "<linearGradient id='l' x1='0.2' x2='0.6' spreadMethod='reflect'>"
+      "<stop offset='0' stop-color='#f00'/><stop offset='.5' stop-color='#00f' stop-opacity='.5'/>"
+      "<stop offset='1' stop-color='#0f0'/></linearGradient>"
+      "<radialGradient id='r' gradientUnits='userSpaceOnUse' cx='40' cy='45' r='10' fx='44' fy='43' "
+      "spreadMethod='repeat' gradientTransform='translate(0 0)'><stop offset='0' stop-color='#ff0'/>"
+      "<stop offset='1' stop-color='#008'/></radialGradient>"
+      "<rect x='10.5' y='5.25' width='60' height='20' fill='url(#l)'/>"
+      "<rect x='10' y='30' width='60' height='28' fill='url(#r)'/></svg>");
+  ASSERT_EQ(doc.shapes.size(), 2u);
+  ASSERT_TRUE(doc.shapes[0].gradient.has_value());
+  struct Rgba {
+    double r, g, b, a;  // premultiplied
+  };
+  auto mix = [](Rgba p, Rgba q, double t) {
+    return Rgba{p.r + (q.r - p.r) * t, p.g + (q.g - p.g) * t, p.b + (q.b - p.b) * t, p.a + (q.a - p.a) * t};
+  };
+  auto linear = [&](double x) {
+    double t = (x - 10.5) / 60.0;
+    t = (t - 0.2) / 0.4;
+    t = std::fmod(std::abs(t), 2.0);
+    if (t > 1) t = 2 - t;
+    const Rgba red{1, 0, 0, 1}, blue{0, 0, 0.5, 0.5}, green{0, 1, 0, 1};
+    return t < 0.5 ? mix(red, blue, t / 0.5) : mix(blue, green, (t - 0.5) / 0.5);
+  };
+  auto radial = [&](double x, double y) {
+    // The largest t with |p - f - t (c - f)| = 10 t.
+    const double cdx = 40 - 44, cdy = 45 - 43, pdx = x - 44, pdy = y - 43;
+    const double a = cdx * cdx + cdy * cdy - 100, b = pdx * cdx + pdy * cdy, c = pdx * pdx + pdy * pdy;
+    double t = (b - std::sqrt(b * b - a * c)) / a;
+    t -= std::floor(t);
+    return mix(Rgba{1, 1, 0, 1}, Rgba{0, 0, 0x88 / 255.0, 1}, t);
+  };
+  ShapeImageOptions options;
+  const ShapeImageLayout layout = layout_shape_image(doc, options);
+  for (AntiAliasing aa : {AntiAliasing::Full, AntiAliasing::Vbaa, AntiAliasing::Msaa}) {
+    options.antialiasing = aa;
+    const Image image = render_shape_image(test::gpu().renderer, doc, layout, options);
+    double worst = 0.0;
+    int checked = 0;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) {
+        const double cx = x + 0.5, cy = y + 0.5;
+        // Pixels wholly inside one rectangle (edges are the coverage tests' business).
+        const bool in_l = x >= 11 && x < 70 && y >= 6 && y < 25, in_r = x >= 10 && x < 70 && y >= 30 && y < 58;
+        if (!in_l && !in_r) continue;
+        const Rgba p = in_l ? linear(cx) : radial(cx, cy);
+        const double want[3] = {p.r + (1 - p.a), p.g + (1 - p.a), p.b + (1 - p.a)};
+        for (int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(image.pixel(x, y)[k] / 255.0 - want[k]));
+        ++checked;
+      }
+    std::printf("gradients aa %d: %d pixels, largest difference %.4f\n", static_cast<int>(aa), checked, worst);
+    if (worst > 2.5 / 255) write_png(image, std::string(CURVETEXT_TEST_OUTPUT_DIR) + "/svg-gradients.png");
+    EXPECT_GT(checked, 2500);
+    EXPECT_LE(worst, 2.5 / 255);  // 8-bit rounding of the target, float32 evaluation
+  }
+  // Bad gradients are refused by name.
+  expect_refused(
+      "<svg><radialGradient id='r' fx='2'><stop/><stop offset='1' stop-color='red'/></radialGradient>"
+      "<rect width='9' height='9' fill='url(#r)'/></svg>",
+      "focal point lies outside");
+  std::string many = "<svg><linearGradient id='m'>";
+  for (int i = 0; i < 20; ++i)
+    many += "<stop offset='" + std::to_string(i / 20.0) + "' stop-color='#" + (i % 2 ? "f00" : "00f") + "'/>";
+  expect_refused(many + "</linearGradient><rect width='9' height='9' fill='url(#m)'/></svg>", "20 stops");
 }
 
 }  // namespace

@@ -161,7 +161,14 @@ Image render_shape_image(Renderer& renderer, const ShapeDocument& doc, const Sha
   for (std::size_t i = 0; i < meshes.size(); ++i) {
     if (meshes[i].empty()) continue;
     DrawBatch batch = DrawBatch::from_mesh(meshes[i]);
-    const DrawOptions draw = draw_options(options, doc.shapes[i].color, on_screen_size(doc.shapes[i], layout));
+    DrawOptions draw = draw_options(options, doc.shapes[i].color, on_screen_size(doc.shapes[i], layout));
+    // The mesh is relative to the view's centre: the gradient's map from
+    // document coordinates moved with it.
+    std::optional<Gradient> gradient = doc.shapes[i].gradient;
+    if (gradient) {
+      gradient->from_outline = gradient->from_outline * Transform::translation(centre.x, centre.y);
+      draw.gradient = &*gradient;
+    }
     renderer.draw(batch, placement, draw);
   }
   return target.read_pixels();

@@ -78,6 +78,12 @@ bool on_one_line(const ShapeContour& c) {
   return true;
 }
 
+void scale_alpha(Shape& s, float alpha) {
+  s.color.a *= alpha;
+  if (s.gradient)
+    for (GradientStop& stop : s.gradient->stops) stop.color.a *= alpha;
+}
+
 // Limits for fan-out: elements visited (through <use>, one element may be
 // visited many times) and <use> nesting.
 constexpr std::size_t kMaxVisits = 1000000;
@@ -111,8 +117,17 @@ class Reader {
                         const Viewport& vp);
   void shape(std::size_t i, const Computed& style, const Affine& ctm, const Viewport& vp);
   void check_unsupported(const XmlElement& e, const Computed& style) const;
-  std::optional<Color> paint(const XmlElement& e, const Computed& style, int prop) const;
-  std::optional<Color> gradient_paint(const XmlElement& e, std::size_t g, const std::string& what) const;
+  // A paint: none, a colour, or a gradient element (index > 0).
+  struct PaintRef {
+    std::optional<Color> color;
+    std::size_t gradient = 0;
+    bool none() const { return !color && gradient == 0; }
+  };
+  PaintRef paint(const XmlElement& e, const Computed& style, int prop) const;
+  PaintRef gradient_paint(std::size_t g) const;
+  GradientSource gradient_source() const;
+  bool set_paint(Shape& s, const PaintRef& fill, const XmlElement& e, const std::vector<ShapeContour>& user,
+                 const Affine& m, const Viewport& vp, double alpha) const;
   const XmlElement* reference(const XmlElement& e, const std::string& href) const;
   void check_inside(const XmlElement& e, std::size_t first_shape, const Affine& ctm, double x, double y, double w,
                     double h) const;
@@ -217,7 +232,7 @@ void Reader::fade(const XmlElement& e, std::size_t first_shape, double opacity) 
   if (n > 1)
     fail(e, "opacity " + shapes_detail::number_text(opacity) + " on <" + e.name + "> of " + std::to_string(n) +
                 " shapes is not supported (a group's opacity needs a layer); set it on each shape");
-  out_.shapes.back().color.a *= static_cast<float>(opacity);
+  scale_alpha(out_.shapes.back(), static_cast<float>(opacity));
 }
 
 void Reader::check_unsupported(const XmlElement& e, const Computed& style) const {
@@ -317,7 +332,7 @@ Color Reader::color_value(const XmlElement& e, const std::string& value) const {
   return *c;
 }
 
-std::optional<Color> Reader::paint(const XmlElement& e, const Computed& style, int prop) const {
+Reader::PaintRef Reader::paint(const XmlElement& e, const Computed& style, int prop) const {
   std::string v = style[prop];
   const std::string name = prop_name(prop);
   if (lower(v).starts_with("url(")) {
@@ -327,52 +342,57 @@ std::optional<Color> Reader::paint(const XmlElement& e, const Computed& style, i
     if (ref.size() >= 2 && (ref.front() == '"' || ref.front() == '\'')) ref = ref.substr(1, ref.size() - 2);
     if (const XmlElement* target = reference(e, ref)) {
       if (target->name == "linearGradient" || target->name == "radialGradient")
-        return gradient_paint(e, static_cast<std::size_t>(target - doc_.elements.data()), name);
+        return gradient_paint(static_cast<std::size_t>(target - doc_.elements.data()));
       fail(e, name + " refers to <" + target->name + ">, which is not supported as paint");
     }
     v = trim(std::string_view(v).substr(close + 1));  // the fallback, else none
-    if (v.empty()) return std::nullopt;
+    if (v.empty()) return {};
   }
   const std::string l = lower(v);
-  if (l == "none") return std::nullopt;
-  if (l == "currentcolor") return color_value(e, style[kColor]);
+  if (l == "none") return {};
+  if (l == "currentcolor") return {color_value(e, style[kColor])};
   if (l.starts_with("context-")) fail(e, name + " '" + v + "' is not supported");
   const std::optional<Color> c = parse_css_color(v);
   if (!c) fail(e, name + " '" + v + "' is not a colour");
-  return c;
+  return {c};
+}
+
+GradientSource Reader::gradient_source() const {
+  return {doc_, specified_, [this](const XmlElement& from, const std::string& href) { return reference(from, href); },
+          [this](const XmlElement& at, const std::string& value) { return color_value(at, value); }, kCallerColor};
 }
 
 // A gradient whose stops all have one colour is that colour (and one without
-// stops is none, as SVG says); others are refused until gradients are drawn.
-std::optional<Color> Reader::gradient_paint(const XmlElement& e, std::size_t g, const std::string& what) const {
-  std::size_t holder = g;
-  for (int hop = 0;; ++hop) {
-    const XmlElement& x = doc_.elements[holder];
-    const bool has_stops = std::any_of(x.children.begin(), x.children.end(),
-                                       [&](std::size_t c) { return doc_.elements[c].name == "stop"; });
-    const std::string* href = x.find("href");
-    if (!href) href = x.find("xlink:href");
-    if (has_stops || !href || hop >= kMaxHrefChain) break;
-    const XmlElement* next = reference(x, *href);
-    if (!next || (next->name != "linearGradient" && next->name != "radialGradient")) break;
-    holder = static_cast<std::size_t>(next - doc_.elements.data());
+// stops is none, as SVG says).
+Reader::PaintRef Reader::gradient_paint(std::size_t g) const {
+  const std::vector<GradientStop> stops = gradient_stops(gradient_source(), g);
+  if (stops.empty()) return {};
+  for (const GradientStop& k : stops) {
+    const Color& a = k.color;
+    const Color& b = stops[0].color;
+    if (a.r != b.r || a.g != b.g || a.b != b.b || a.a != b.a) return {std::nullopt, g};
   }
-  const Computed gradient_style = compute(initial_style(kCallerColor), specified_[holder]);
-  std::vector<Color> stops;
-  for (std::size_t c : doc_.elements[holder].children) {
-    if (doc_.elements[c].name != "stop") continue;
-    const Computed s = compute(gradient_style, specified_[c]);
-    Color k = lower(s[kStopColor]) == "currentcolor" ? color_value(doc_.elements[c], s[kColor])
-                                                     : color_value(doc_.elements[c], s[kStopColor]);
-    k.a *= static_cast<float>(unit_value(doc_.elements[c], "stop-opacity", s[kStopOpacity]));
-    stops.push_back(k);
+  return {stops[0].color};
+}
+
+// The fill's paint as the shape's colour or gradient, times `alpha`; false
+// when it paints nothing.
+bool Reader::set_paint(Shape& s, const PaintRef& fill, const XmlElement& e, const std::vector<ShapeContour>& user,
+                       const Affine& m, const Viewport& vp, double alpha) const {
+  if (fill.color) {
+    s.color = *fill.color;
+  } else {
+    const GradientSource source = gradient_source();
+    std::optional<Gradient> g =
+        make_gradient(source, fill.gradient, e, user, m, vp, gradient_stops(source, fill.gradient));
+    if (!g) return false;
+    if (g->stops.size() == 1)
+      s.color = g->stops[0].color;
+    else
+      s.gradient = std::move(g);
   }
-  if (stops.empty()) return std::nullopt;
-  for (const Color& k : stops)
-    if (k.r != stops[0].r || k.g != stops[0].g || k.b != stops[0].b || k.a != stops[0].a)
-      fail(e, what + " is the <" + doc_.elements[g].name + "> '" + *doc_.elements[g].find("id") +
-                  "': gradients are not supported");
-  return stops[0];
+  scale_alpha(s, static_cast<float>(alpha));
+  return s.gradient || s.color.a > 0.0f;
 }
 
 void Reader::shape(std::size_t i, const Computed& style, const Affine& m, const Viewport& vp) {
@@ -380,20 +400,19 @@ void Reader::shape(std::size_t i, const Computed& style, const Affine& m, const 
   if (style[kVisibility] != "visible") return;
   std::vector<ShapeContour> contours = element_geometry(e, vp);
   if (contours.empty()) return;
-  const std::optional<Color> fill = paint(e, style, kFill), stroke = paint(e, style, kStroke);
+  const PaintRef fill = paint(e, style, kFill), stroke = paint(e, style, kStroke);
   const std::optional<double> width = parse_length(style[kStrokeWidth], Axis::Other, vp);
   if (!width) fail(e, "stroke-width '" + style[kStrokeWidth] + "' is not a length");
-  if (stroke && stroke->a > 0.0f && *width > 0.0 && unit_value(e, "stroke-opacity", style[kStrokeOpacity]) > 0.0)
+  if (!stroke.none() && (!stroke.color || stroke.color->a > 0.0f) && *width > 0.0 &&
+      unit_value(e, "stroke-opacity", style[kStrokeOpacity]) > 0.0)
     fail(e, "<" + e.name + "> has stroke '" + style[kStroke] + "': strokes are not drawn (only fills are)");
   if (e.name != "rect" && e.name != "circle" && e.name != "ellipse")
     for (int p : {kMarkerStart, kMarkerMid, kMarkerEnd})
       if (style[p] != "none") fail(e, std::string(prop_name(p)) + " '" + style[p] + "': markers are not supported");
-  if (!fill) return;
+  if (fill.none()) return;
   Shape s;
-  s.color = *fill;
-  s.color.a *= static_cast<float>(unit_value(e, "fill-opacity", style[kFillOpacity]) *
-                                  unit_value(e, "opacity", style[kOpacity]));
-  if (s.color.a <= 0.0f) return;
+  const double alpha = unit_value(e, "fill-opacity", style[kFillOpacity]) * unit_value(e, "opacity", style[kOpacity]);
+  if (!set_paint(s, fill, e, contours, m, vp, alpha)) return;
   try {
     s.fill_rule = parse_fill_rule(style[kFillRule]);
   } catch (const Error& err) {

@@ -62,7 +62,10 @@ void shape(const std::vector<std::string>& arguments) {
 
   ShapeDocument doc = read_shape_file(*input, svg);
   if (foreground)
-    for (Shape& s : doc.shapes) s.color = *foreground;
+    for (Shape& s : doc.shapes) {
+      s.color = *foreground;
+      s.gradient.reset();
+    }
   // Everything that can be checked without a GL device is checked first.
   if (style.perspective_pending()) {
     const ShapeImageLayout plain = layout_shape_image(doc, options);

@@ -12,6 +12,7 @@
 // type or a pure function (thread-safe, export.hpp).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -20,6 +21,7 @@
 #include "curvetext/color.hpp"
 #include "curvetext/export.hpp"
 #include "curvetext/outline.hpp"
+#include "curvetext/paint.hpp"
 
 namespace curvetext {
 
@@ -54,6 +56,9 @@ struct Shape {
   std::vector<ShapeContour> contours;
   FillRule fill_rule = FillRule::NonZero;
   Color color{0, 0, 0, 1};
+  // Paints the fill instead of `color` when set; its from_outline maps
+  // document coordinates (y-up) to the gradient's.
+  std::optional<Gradient> gradient;
 };
 
 // Coordinates are y-up (SVG's y-down input is mirrored when read).
