@@ -1,7 +1,7 @@
 // The composite pass (composite.frag.glsl) with a gradient's colour at each
 // pixel instead of one colour: the pixel's coverage (one fetch, or vbaa's
 // box filter with CURVETEXT_BOX) times the gradient evaluated at the pixel's
-// centre. Stops are interpolated premultiplied. lib/gpu/paint.cpp sets the
+// centre. Stops are interpolated in straight alpha, then premultiplied. lib/gpu/paint.cpp sets the
 // paint's uniforms; lib/gpu/renderer.cpp draws one quad per tile.
 precision highp float;
 
@@ -19,7 +19,7 @@ uniform vec2 u_a;  // linear: start; radial: focus
 uniform vec2 u_b;  // linear: end; radial: centre
 uniform float u_radius;
 uniform float u_count;
-uniform vec4 u_stop_color[16];  // premultiplied
+uniform vec4 u_stop_color[16];  // straight alpha
 uniform float u_stop_offset[16];
 
 varying vec2 v_pixel;
@@ -63,7 +63,7 @@ vec4 paint(vec2 pixel) {
       color = mix(u_stop_color[i - 1], u_stop_color[i], (t - u_stop_offset[i - 1]) / span);
     break;
   }
-  return color;
+  return vec4(color.rgb * color.a, color.a);
 }
 
 void main() {

@@ -319,7 +319,8 @@ TEST(SvgRefusals, WhatIsNotDrawnIsNamedWithItsPosition) {
   expect_refused("<svg><path filter='url(#f)'" + sq + "/></svg>", "filter 'url(#f)' is not supported");
   expect_refused("<svg><g mask='url(#m)'><path" + sq + "/></g></svg>", "mask");
   expect_refused("<svg><path style='clip-path:url(#c)'" + sq + "/></svg>", "clip-path");
-  expect_refused("<svg><path stroke='red'" + sq + "/></svg>", "strokes are not drawn");
+  expect_refused("<svg><path stroke='red' transform='scale(2 1)'" + sq + "/></svg>", "scales unevenly or skews");
+  expect_refused("<svg><path stroke='red' opacity='.5'" + sq + "/></svg>", "opacity 0.5 on <path> of 2 shapes");
   expect_refused("<svg><path marker-end='url(#m)'" + sq + "/></svg>", "markers are not supported");
   expect_refused("<svg><pattern id='p'/><path fill='url(#p)'" + sq + "/></svg>", "fill refers to <pattern>");
   expect_refused("<svg><path fill='bluish'" + sq + "/></svg>", "fill 'bluish' is not a colour");
@@ -388,7 +389,7 @@ TEST(SvgRender, ShapesTransformsAndUseMatchExactCoverage) {
 }
 
 // Gradients: each pixel inside a rectangle is the gradient at its centre
-// (premultiplied interpolation of the stops), over white; edge pixels are
+// (stops interpolated in straight alpha, as SVG renderers do), over white; edge pixels are
 // that colour times their exact coverage. Linear with reflect, and radial
 // with a focal point and repeat, in every offscreen AA mode.
 TEST(SvgRender, GradientsArePaintedPerPixel) {
@@ -405,7 +406,7 @@ TEST(SvgRender, GradientsArePaintedPerPixel) {
   ASSERT_EQ(doc.shapes.size(), 2u);
   ASSERT_TRUE(doc.shapes[0].gradient.has_value());
   struct Rgba {
-    double r, g, b, a;  // premultiplied
+    double r, g, b, a;  // straight alpha
   };
   auto mix = [](Rgba p, Rgba q, double t) {
     return Rgba{p.r + (q.r - p.r) * t, p.g + (q.g - p.g) * t, p.b + (q.b - p.b) * t, p.a + (q.a - p.a) * t};
@@ -415,7 +416,7 @@ TEST(SvgRender, GradientsArePaintedPerPixel) {
     t = (t - 0.2) / 0.4;
     t = std::fmod(std::abs(t), 2.0);
     if (t > 1) t = 2 - t;
-    const Rgba red{1, 0, 0, 1}, blue{0, 0, 0.5, 0.5}, green{0, 1, 0, 1};
+    const Rgba red{1, 0, 0, 1}, blue{0, 0, 1, 0.5}, green{0, 1, 0, 1};
     return t < 0.5 ? mix(red, blue, t / 0.5) : mix(blue, green, (t - 0.5) / 0.5);
   };
   auto radial = [&](double x, double y) {
@@ -440,7 +441,7 @@ TEST(SvgRender, GradientsArePaintedPerPixel) {
         const bool in_l = x >= 11 && x < 70 && y >= 6 && y < 25, in_r = x >= 10 && x < 70 && y >= 30 && y < 58;
         if (!in_l && !in_r) continue;
         const Rgba p = in_l ? linear(cx) : radial(cx, cy);
-        const double want[3] = {p.r + (1 - p.a), p.g + (1 - p.a), p.b + (1 - p.a)};
+        const double want[3] = {p.r * p.a + (1 - p.a), p.g * p.a + (1 - p.a), p.b * p.a + (1 - p.a)};
         for (int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(image.pixel(x, y)[k] / 255.0 - want[k]));
         ++checked;
       }

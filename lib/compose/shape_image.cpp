@@ -8,6 +8,7 @@
 
 #include "curvetext/error.hpp"
 #include "curvetext/mesh.hpp"
+#include "curvetext/stroke.hpp"
 #include "curvetext/tolerances.hpp"
 #include "compose/check_style.hpp"
 #include "core/format.hpp"
@@ -20,11 +21,30 @@ namespace {
 // the image.
 constexpr double kDefaultLongSidePx = 512.0;
 
+// How far a stroke in user units reaches past its path's control box: half
+// its width, times the miter limit for miter joins (a miter's tip) or
+// sqrt(2) for square caps (a corner). Device-pixel widths are not known
+// before the scale is, and are left out.
+double stroke_reach(const Shape& s) {
+  if (!s.stroke || s.stroke->style.width_unit != StrokeWidthUnit::User || !(s.stroke->style.width > 0.0)) return 0.0;
+  const StrokeStyle& st = s.stroke->style;
+  double k = st.cap == LineCap::Square ? std::sqrt(2.0) : 1.0;
+  if (st.join == LineJoin::Miter || st.join == LineJoin::MiterClip || st.join == LineJoin::Arcs)
+    k = std::max(k, std::max(1.0, st.miter_limit));
+  const double reach = 0.5 * st.width * k;
+  return std::isfinite(reach) ? reach : 0.0;
+}
+
 Box shape_box(const Shape& s) {
   Box box;
   for (const ShapeContour& c : s.contours)
     for (const RationalBezier& b : c.pieces)
       for (Vec2 p : b.points) box.add(p);
+  const double r = stroke_reach(s);
+  if (!box.empty() && r > 0.0) {
+    box.add(box.min - Vec2{r, r});
+    box.add(box.max + Vec2{r, r});
+  }
   return box;
 }
 
@@ -138,34 +158,72 @@ Mesh relative_to(Mesh mesh, Vec2 centre, double scale) {
 
 }  // namespace
 
+namespace {
+
+// One mesh to draw, in its colour.
+struct Layer {
+  Mesh mesh;
+  Color color;
+  std::size_t shape;
+  const Gradient* gradient = nullptr;  // the fill's, instead of `color`
+};
+
+// The shape's fill and stroke meshes in paint order (docs/strokes.md).
+void shape_layers(const Shape& shape, std::size_t index, double tolerance, double px_per_unit, Vec2 centre,
+                  double scale, std::vector<Layer>& out) {
+  MeshOptions mo;
+  mo.cubic_tolerance = tolerance;
+  auto fill = [&] {
+    if (shape.filled)
+      out.push_back({relative_to(build_mesh(fill_outline(shape, tolerance), mo), centre, scale), shape.color, index,
+                     shape.gradient ? &*shape.gradient : nullptr});
+  };
+  auto stroke = [&] {
+    if (!shape.stroke) return;
+    // docs/design.md section 8: offsets within tolerance::kStrokeOffsetPx at the drawn scale.
+    const double stroke_tolerance = tolerance::kStrokeOffsetPx / px_per_unit;
+    const Outline o = stroke_outline(shape.contours, shape.stroke->style, stroke_tolerance, px_per_unit);
+    if (!o.empty())
+      out.push_back({relative_to(build_mesh(o, mo), centre, scale), shape.stroke->color, index,
+                     shape.stroke_gradient ? &*shape.stroke_gradient : nullptr});
+  };
+  if (shape.paint_order == PaintOrder::StrokeFill) {
+    stroke();
+    fill();
+  } else {
+    fill();
+    stroke();
+  }
+}
+
+}  // namespace
+
 Image render_shape_image(Renderer& renderer, const ShapeDocument& doc, const ShapeImageLayout& layout,
                          const ShapeImageOptions& options) {
   // docs/design.md section 3: 1/16 px at the scale drawn, in document units.
-  const double tolerance = tolerance::kCubicApproximationPx / (layout.placement.scale * layout.largest_stretch);
+  const double px_per_unit = layout.placement.scale * layout.largest_stretch;
+  const double tolerance = tolerance::kCubicApproximationPx / px_per_unit;
   // Meshes first: geometry errors surface before anything is drawn.
   // Each mesh relative to the view's centre, the placement moved to match.
   const Vec2 centre = view_centre(layout);
-  std::vector<Mesh> meshes;
-  for (const Shape& shape : doc.shapes) {
-    MeshOptions mo;
-    mo.cubic_tolerance = tolerance;
-    meshes.push_back(relative_to(build_mesh(fill_outline(shape, tolerance), mo), centre,
-                                 layout.placement.scale * layout.largest_stretch));
-  }
+  std::vector<Layer> layers;
+  for (std::size_t i = 0; i < doc.shapes.size(); ++i)
+    shape_layers(doc.shapes[i], i, tolerance, px_per_unit, centre, px_per_unit, layers);
   Placement placement = layout.placement;
   placement.origin_x += placement.scale * centre.x;
   placement.origin_y -= placement.scale * centre.y;
   check_coverage_gamma(options.gamma);
   ImageTarget target;
   target.begin(layout.width, layout.height, options.background, options.blending);
-  for (std::size_t i = 0; i < meshes.size(); ++i) {
-    if (meshes[i].empty()) continue;
-    DrawBatch batch = DrawBatch::from_mesh(meshes[i]);
-    DrawOptions draw = draw_options(options, doc.shapes[i].color, on_screen_size(doc.shapes[i], layout));
+  for (const Layer& layer : layers) {
+    if (layer.mesh.empty()) continue;
+    DrawBatch batch = DrawBatch::from_mesh(layer.mesh);
+    DrawOptions draw = draw_options(options, layer.color, on_screen_size(doc.shapes[layer.shape], layout));
     // The mesh is relative to the view's centre: the gradient's map from
     // document coordinates moved with it.
-    std::optional<Gradient> gradient = doc.shapes[i].gradient;
-    if (gradient) {
+    std::optional<Gradient> gradient;
+    if (layer.gradient) {
+      gradient = *layer.gradient;
       gradient->from_outline = gradient->from_outline * Transform::translation(centre.x, centre.y);
       draw.gradient = &*gradient;
     }

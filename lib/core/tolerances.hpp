@@ -53,6 +53,27 @@ inline constexpr std::size_t kMeshPairTestsPerPiece = 1024;
 inline constexpr std::size_t kEarClipVisitsPerVertex = 4096;
 inline constexpr std::size_t kEarClipVisitsBase = std::size_t{1} << 24;
 
+// --- Strokes (lib/stroke) ---------------------------------------------------
+// A conic counts as a circular arc (its offsets then exact concentric arcs)
+// when its legs' lengths and its weight match a circle's within this relative
+// error (dimensionless; SVG arcs and round joins are within 1e-15).
+inline constexpr double kStrokeCircleRelative = 1e-9;
+// Points per fitted offset piece at which its distance to the true offset is
+// measured, each way (the Hausdorff error is their largest; dimensionless).
+inline constexpr int kStrokeFitSamples = 8;
+// Deepest halving of a conic while fitting its offset (2^-24 of the conic):
+// past it the last fit is kept (only a cusp of the offset gets there).
+inline constexpr int kStrokeMaxFitDepth = 24;
+// Segments shorter than this fraction of the path's largest |coordinate|
+// count as zero length: they have no direction (dimensionless).
+inline constexpr double kStrokeZeroLengthRelative = 1e-12;
+// Path pieces, gaps between offset pieces and outline pieces shorter than
+// this fraction of the stroke tolerance are dropped or closed (moving the
+// boundary by at most that much): slivers of 1e-8 px, from cubics split near
+// inflections and from the pivots of inner joins, only cost the mesher
+// (dimensionless).
+inline constexpr double kStrokeSnapOfTolerance = 1.0 / 1024.0;
+
 // --- Rendering (lib/gpu, shaders/) -------------------------------------------
 // How far every triangle grows outward for `full` antialiasing (and vbaa's
 // offscreen pass), in pixels: a pixel's box reaches at most sqrt(2)/2 px

@@ -1,6 +1,7 @@
 // Gradient paint: validation and the composite shader's uniforms.
 #include "gpu/paint.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -88,8 +89,12 @@ void PaintUniforms::set(const Gradient& g, const Transform& full, Blending blend
   glUniform1f(count, static_cast<float>(g.stops.size()));
   GLfloat colors[4 * kMaxGradientStops] = {}, offsets[kMaxGradientStops] = {};
   for (std::size_t i = 0; i < g.stops.size(); ++i) {
-    const std::array<float, 4> c = premultiplied(g.stops[i].color, blending);
-    for (int k = 0; k < 4; ++k) colors[4 * i + k] = c[k];
+    // Straight alpha, in the space the target blends in; the shader
+    // interpolates, then premultiplies (as SVG renderers interpolate stops).
+    const Color& k = g.stops[i].color;
+    const std::array<float, 4> c = premultiplied(Color{k.r, k.g, k.b, 1.0f}, blending);
+    for (int j = 0; j < 3; ++j) colors[4 * i + j] = c[j];
+    colors[4 * i + 3] = std::clamp(k.a, 0.0f, 1.0f);
     offsets[i] = g.stops[i].offset;
   }
   glUniform4fv(stop_color, kMaxGradientStops, colors);

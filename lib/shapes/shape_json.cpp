@@ -6,6 +6,7 @@
 #include "check.hpp"
 #include "curvetext/error.hpp"
 #include "curvetext/shapes.hpp"
+#include "curvetext/tolerances.hpp"
 #include "json.hpp"
 
 namespace curvetext {
@@ -146,6 +147,111 @@ void read_item(const Value& item, const std::string& path, ShapeContour& contour
   fail(item, path, "unknown contour item \"" + kind + "\" (known: line, bezier, nurbs)");
 }
 
+template <typename T>
+T named(const Value& v, const std::string& path, std::initializer_list<std::pair<std::string_view, T>> names) {
+  expect(v, Value::Type::String, path);
+  std::string list;
+  for (const auto& [name, value] : names) {
+    if (v.string == name) return value;
+    list += (list.empty() ? "" : ", ") + std::string(name);
+  }
+  fail(v, path, "unknown value \"" + v.string + "\" (known: " + list + ")");
+}
+
+double non_negative(const Value& v, const std::string& path) {
+  const double x = number(v, path);
+  if (!(x >= 0.0) || x > kMaxShapeCoordinate)
+    fail(v, path, "must be from 0 to " + std::to_string(static_cast<long long>(kMaxShapeCoordinate)));
+  return x;
+}
+
+void read_dashes(const Value& v, const std::string& path, StrokeStyle& st) {
+  expect(v, Value::Type::Array, path);
+  if (v.array.size() > tolerance::kMaxSegmentsPerPath)
+    fail(v, path, "more than " + std::to_string(tolerance::kMaxSegmentsPerPath) + " dash lengths");
+  for (std::size_t i = 0; i < v.array.size(); ++i)
+    st.dashes.push_back(non_negative(v.array[i], path + "[" + std::to_string(i) + "]"));
+}
+
+// docs/shapes/README.md, "Strokes".
+ShapeStroke read_stroke(const Value& v, const std::string& path) {
+  expect(v, Value::Type::Object, path);
+  only_keys(
+      v, {"width", "units", "color", "opacity", "join", "miter_limit", "cap", "dashes", "dash_offset", "path_length"},
+      path);
+  ShapeStroke stroke;
+  StrokeStyle& st = stroke.style;
+  if (const Value* w = v.find("width")) st.width = non_negative(*w, path + ".width");
+  if (const Value* u = v.find("units"))
+    st.width_unit = named<StrokeWidthUnit>(
+        *u, path + ".units",
+        {{"user", StrokeWidthUnit::User}, {"px", StrokeWidthUnit::Device}, {"hairline", StrokeWidthUnit::Hairline}});
+  if (const Value* c = v.find("color")) {
+    expect(*c, Value::Type::String, path + ".color");
+    try {
+      stroke.color = parse_color(c->string);
+    } catch (const Error& e) {
+      fail(*c, path + ".color", e.what());
+    }
+  }
+  if (const Value* o = v.find("opacity")) {
+    const double a = number(*o, path + ".opacity");
+    if (!(a >= 0.0 && a <= 1.0)) fail(*o, path + ".opacity", "must be from 0 to 1");
+    stroke.color.a *= static_cast<float>(a);
+  }
+  if (const Value* j = v.find("join"))
+    st.join = named<LineJoin>(*j, path + ".join",
+                              {{"miter", LineJoin::Miter},
+                               {"miter-clip", LineJoin::MiterClip},
+                               {"round", LineJoin::Round},
+                               {"bevel", LineJoin::Bevel},
+                               {"arcs", LineJoin::Arcs}});
+  if (const Value* m = v.find("miter_limit")) {
+    st.miter_limit = number(*m, path + ".miter_limit");
+    if (!(st.miter_limit >= 1.0) || st.miter_limit > 1e9) fail(*m, path + ".miter_limit", "must be from 1 to 1e9");
+  }
+  if (const Value* c = v.find("cap"))
+    st.cap = named<LineCap>(*c, path + ".cap",
+                            {{"butt", LineCap::Butt}, {"round", LineCap::Round}, {"square", LineCap::Square}});
+  if (const Value* d = v.find("dashes")) read_dashes(*d, path + ".dashes", st);
+  if (const Value* o = v.find("dash_offset")) {
+    st.dash_offset = number(*o, path + ".dash_offset");
+    if (std::abs(st.dash_offset) > kMaxShapeCoordinate) fail(*o, path + ".dash_offset", "beyond 1e9");
+  }
+  if (const Value* l = v.find("path_length")) st.path_length = non_negative(*l, path + ".path_length");
+  return stroke;
+}
+
+// A contour: a list of items (closed), or {"items": [...], "closed": false}.
+ShapeContour read_contour(const Value& cv, const std::string& cp) {
+  ShapeContour contour;
+  const Value* items = &cv;
+  if (cv.type == Value::Type::Object) {
+    only_keys(cv, {"items", "closed"}, cp);
+    items = cv.find("items");
+    if (!items) fail(cv, cp, "\"items\" is required");
+    if (const Value* c = cv.find("closed")) {
+      expect(*c, Value::Type::Bool, cp + ".closed");
+      contour.closed = c->boolean;
+    }
+  }
+  expect(*items, Value::Type::Array, cp);
+  for (std::size_t k = 0; k < items->array.size(); ++k)
+    read_item(items->array[k], cp + "[" + std::to_string(k) + "]", contour);
+  return contour;
+}
+
+void read_paint(const Value& sv, const std::string& sp, Shape& shape) {
+  if (const Value* f = sv.find("fill")) {
+    expect(*f, Value::Type::Bool, sp + ".fill");
+    shape.filled = f->boolean;
+  }
+  if (const Value* s = sv.find("stroke")) shape.stroke = read_stroke(*s, sp + ".stroke");
+  if (const Value* o = sv.find("paint_order"))
+    shape.paint_order = named<PaintOrder>(
+        *o, sp + ".paint_order", {{"fill stroke", PaintOrder::FillStroke}, {"stroke fill", PaintOrder::StrokeFill}});
+}
+
 }  // namespace
 
 ShapeDocument parse_shape_json(std::string_view text) {
@@ -181,7 +287,7 @@ ShapeDocument parse_shape_json(std::string_view text) {
     const Value& sv = shapes->array[i];
     const std::string sp = "shapes[" + std::to_string(i) + "]";
     expect(sv, Value::Type::Object, sp);
-    only_keys(sv, {"color", "fill_rule", "contours"}, sp);
+    only_keys(sv, {"color", "fill_rule", "contours", "fill", "stroke", "paint_order"}, sp);
     Shape shape;
     if (const Value* c = sv.find("color")) {
       expect(*c, Value::Type::String, sp + ".color");
@@ -199,16 +305,12 @@ ShapeDocument parse_shape_json(std::string_view text) {
         fail(*r, sp + ".fill_rule", e.what());
       }
     }
+    read_paint(sv, sp, shape);
     const Value* contours = sv.find("contours");
     if (!contours) fail(sv, sp, "\"contours\" is required");
     expect(*contours, Value::Type::Array, sp + ".contours");
     for (std::size_t j = 0; j < contours->array.size(); ++j) {
-      const Value& cv = contours->array[j];
-      const std::string cp = sp + ".contours[" + std::to_string(j) + "]";
-      expect(cv, Value::Type::Array, cp);
-      ShapeContour contour;
-      for (std::size_t k = 0; k < cv.array.size(); ++k)
-        read_item(cv.array[k], cp + "[" + std::to_string(k) + "]", contour);
+      ShapeContour contour = read_contour(contours->array[j], sp + ".contours[" + std::to_string(j) + "]");
       if (!contour.pieces.empty()) shape.contours.push_back(std::move(contour));
     }
     doc.shapes.push_back(std::move(shape));

@@ -80,8 +80,10 @@ bool on_one_line(const ShapeContour& c) {
 
 void scale_alpha(Shape& s, float alpha) {
   s.color.a *= alpha;
-  if (s.gradient)
-    for (GradientStop& stop : s.gradient->stops) stop.color.a *= alpha;
+  if (s.stroke) s.stroke->color.a *= alpha;
+  for (std::optional<Gradient>* g : {&s.gradient, &s.stroke_gradient})
+    if (*g)
+      for (GradientStop& stop : (*g)->stops) stop.color.a *= alpha;
 }
 
 // Limits for fan-out: elements visited (through <use>, one element may be
@@ -116,6 +118,8 @@ class Reader {
   void viewport_element(std::size_t i, const XmlElement& sizing, const Computed& style, const Affine& ctm,
                         const Viewport& vp);
   void shape(std::size_t i, const Computed& style, const Affine& ctm, const Viewport& vp);
+  std::vector<ShapeContour> placed(const XmlElement& e, std::vector<ShapeContour> contours, const Affine& m,
+                                   bool area_only);
   void check_unsupported(const XmlElement& e, const Computed& style) const;
   // A paint: none, a colour, or a gradient element (index > 0).
   struct PaintRef {
@@ -128,6 +132,10 @@ class Reader {
   GradientSource gradient_source() const;
   bool set_paint(Shape& s, const PaintRef& fill, const XmlElement& e, const std::vector<ShapeContour>& user,
                  const Affine& m, const Viewport& vp, double alpha) const;
+  std::optional<Shape> fill_shape(const XmlElement& e, const Computed& style, const Affine& m, const Viewport& vp,
+                                  const std::vector<ShapeContour>& contours);
+  std::optional<Shape> stroke_shape(const XmlElement& e, const Computed& style, const Affine& m, const Viewport& vp,
+                                    const std::vector<ShapeContour>& contours);
   const XmlElement* reference(const XmlElement& e, const std::string& href) const;
   void check_inside(const XmlElement& e, std::size_t first_shape, const Affine& ctm, double x, double y, double w,
                     double h) const;
@@ -395,42 +403,85 @@ bool Reader::set_paint(Shape& s, const PaintRef& fill, const XmlElement& e, cons
   return s.gradient || s.color.a > 0.0f;
 }
 
-void Reader::shape(std::size_t i, const Computed& style, const Affine& m, const Viewport& vp) {
-  const XmlElement& e = doc_.elements[i];
-  if (style[kVisibility] != "visible") return;
-  std::vector<ShapeContour> contours = element_geometry(e, vp);
-  if (contours.empty()) return;
-  const PaintRef fill = paint(e, style, kFill), stroke = paint(e, style, kStroke);
-  const std::optional<double> width = parse_length(style[kStrokeWidth], Axis::Other, vp);
-  if (!width) fail(e, "stroke-width '" + style[kStrokeWidth] + "' is not a length");
-  if (!stroke.none() && (!stroke.color || stroke.color->a > 0.0f) && *width > 0.0 &&
-      unit_value(e, "stroke-opacity", style[kStrokeOpacity]) > 0.0)
-    fail(e, "<" + e.name + "> has stroke '" + style[kStroke] + "': strokes are not drawn (only fills are)");
-  if (e.name != "rect" && e.name != "circle" && e.name != "ellipse")
-    for (int p : {kMarkerStart, kMarkerMid, kMarkerEnd})
-      if (style[p] != "none") fail(e, std::string(prop_name(p)) + " '" + style[p] + "': markers are not supported");
-  if (fill.none()) return;
-  Shape s;
-  const double alpha = unit_value(e, "fill-opacity", style[kFillOpacity]) * unit_value(e, "opacity", style[kOpacity]);
-  if (!set_paint(s, fill, e, contours, m, vp, alpha)) return;
-  try {
-    s.fill_rule = parse_fill_rule(style[kFillRule]);
-  } catch (const Error& err) {
-    fail(e, err.what());
-  }
+// The element's contours in document space, each checked; `area_only`
+// leaves out those that enclose nothing (a fill of them draws nothing).
+std::vector<ShapeContour> Reader::placed(const XmlElement& e, std::vector<ShapeContour> contours, const Affine& m,
+                                         bool area_only) {
+  std::vector<ShapeContour> out;
   for (ShapeContour& c : contours) {
     for (RationalBezier& piece : c.pieces)
       for (Vec2& q : piece.points) {
         q = m.apply(q);
         shapes_detail::check_point(q, "SVG: " + position(e) + "<" + e.name + ">");
       }
-    if (on_one_line(c)) continue;  // encloses nothing: a fill draws nothing
+    if (area_only && on_one_line(c)) continue;
     segments_ += c.pieces.size();
     if (segments_ > tolerance::kMaxSegmentsPerDocument)
       fail(e, "more than " + std::to_string(tolerance::kMaxSegmentsPerDocument) + " path segments in the document");
-    s.contours.push_back(std::move(c));
+    out.push_back(std::move(c));
   }
-  if (!s.contours.empty()) out_.shapes.push_back(std::move(s));
+  return out;
+}
+
+// The stroke as a shape that is not filled, or nothing.
+std::optional<Shape> Reader::stroke_shape(const XmlElement& e, const Computed& style, const Affine& m,
+                                          const Viewport& vp, const std::vector<ShapeContour>& contours) {
+  const PaintRef stroke = paint(e, style, kStroke);
+  if (stroke.none()) return std::nullopt;
+  const std::optional<StrokeStyle> st = stroke_style(e, style, m, vp);
+  if (!st) return std::nullopt;
+  // The paint is set as a fill's, then moved to the stroke.
+  Shape paint_of;
+  const double alpha =
+      unit_value(e, "stroke-opacity", style[kStrokeOpacity]) * unit_value(e, "opacity", style[kOpacity]);
+  if (!set_paint(paint_of, stroke, e, contours, m, vp, alpha)) return std::nullopt;
+  Shape s;
+  s.filled = false;
+  s.stroke = ShapeStroke{*st, paint_of.color};
+  s.stroke_gradient = std::move(paint_of.gradient);
+  s.contours = placed(e, contours, m, false);
+  if (s.contours.empty()) return std::nullopt;
+  return s;
+}
+
+std::optional<Shape> Reader::fill_shape(const XmlElement& e, const Computed& style, const Affine& m, const Viewport& vp,
+                                        const std::vector<ShapeContour>& contours) {
+  const PaintRef fill = paint(e, style, kFill);
+  if (fill.none()) return std::nullopt;
+  Shape s;
+  const double alpha = unit_value(e, "fill-opacity", style[kFillOpacity]) * unit_value(e, "opacity", style[kOpacity]);
+  if (!set_paint(s, fill, e, contours, m, vp, alpha)) return std::nullopt;
+  try {
+    s.fill_rule = parse_fill_rule(style[kFillRule]);
+  } catch (const Error& err) {
+    fail(e, err.what());
+  }
+  s.contours = placed(e, contours, m, true);
+  if (s.contours.empty()) return std::nullopt;
+  return s;
+}
+
+// Fill and stroke as two shapes in paint order. With opacity below 1 the
+// element is one layer of both, which is refused where both draw (fade).
+void Reader::shape(std::size_t i, const Computed& style, const Affine& m, const Viewport& vp) {
+  const XmlElement& e = doc_.elements[i];
+  if (style[kVisibility] != "visible") return;
+  const std::vector<ShapeContour> contours = element_geometry(e, vp);
+  if (contours.empty()) return;
+  if (e.name != "rect" && e.name != "circle" && e.name != "ellipse")
+    for (int p : {kMarkerStart, kMarkerMid, kMarkerEnd})
+      if (style[p] != "none") fail(e, std::string(prop_name(p)) + " '" + style[p] + "': markers are not supported");
+  const double opacity = unit_value(e, "opacity", style[kOpacity]);
+  Computed opaque = style;
+  opaque[kOpacity] = "1";  // applied once, by fade, to what the element drew
+  std::optional<Shape> fill = fill_shape(e, opaque, m, vp, contours);
+  std::optional<Shape> stroke = stroke_shape(e, opaque, m, vp, contours);
+  const std::size_t first = out_.shapes.size();
+  const bool stroke_first = style[kPaintOrder].starts_with("stroke");
+  if (stroke && stroke_first) out_.shapes.push_back(std::move(*stroke));
+  if (fill) out_.shapes.push_back(std::move(*fill));
+  if (stroke && !stroke_first) out_.shapes.push_back(std::move(*stroke));
+  fade(e, first, opacity);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "curvetext/paint.hpp"
+#include "curvetext/stroke_style.hpp"
 
 #include "curvetext/shapes.hpp"
 #include "svg_style.hpp"
@@ -50,6 +51,16 @@ std::vector<GradientStop> gradient_stops(const GradientSource& source, std::size
 std::optional<Gradient> make_gradient(const GradientSource& source, std::size_t g, const XmlElement& at,
                                       const std::vector<ShapeContour>& user, const Affine& m, const Viewport& vp,
                                       std::vector<GradientStop> stops);
+
+// The element's stroke geometry from its computed style (stroke-width,
+// -linejoin, -linecap, -miterlimit, -dasharray, -dashoffset, pathLength,
+// vector-effect), in document units: user-space lengths times the uniform
+// scale of `m`. nullopt when the width is 0 or less (no stroke). Throws
+// Error(InvalidArgument) with the element's position for a malformed value
+// or a user-space stroke under a transform that is not a similarity (a
+// stroke's width would vary with direction there).
+std::optional<StrokeStyle> stroke_style(const XmlElement& e, const Computed& style, const Affine& m,
+                                        const Viewport& vp);
 
 // The tight bounding box of the contours (extremes of each piece found by
 // sampling and refining to double precision).

@@ -89,6 +89,7 @@ std::vector<ShapeContour> poly(const XmlElement& e) {
   const std::vector<Vec2> p = points(e);
   if (p.size() < 2) return {};
   ShapeContour c;
+  c.closed = e.name == "polygon";
   for (std::size_t i = 0; i + 1 < p.size(); ++i) c.pieces.push_back(RationalBezier::line(p[i], p[i + 1]));
   return {c};
 }
@@ -132,6 +133,7 @@ std::vector<ShapeContour> element_geometry(const XmlElement& e, const Viewport& 
   }
   if (e.name == "line") {
     ShapeContour c;
+    c.closed = false;
     c.pieces.push_back(
         RationalBezier::line({len("x1", Axis::X), len("y1", Axis::Y)}, {len("x2", Axis::X), len("y2", Axis::Y)}));
     return {c};

@@ -127,6 +127,18 @@ if timeout 120 "$CURVETEXT" shape --input "$shapes/ellipse-arc.svg" --size 100x5
 else
   bad "shape: SVG arcs with --size: $(cat "$tmp/stderr")"
 fi
+# Strokes: the drawing with its strokes against the same shapes with none (only the first is filled).
+sed 's/"stroke": {[^}]*},//' "$shapes/strokes.json" >"$tmp/no-strokes.json"
+if timeout 120 "$CURVETEXT" shape --input "$shapes/strokes.json" -o "$tmp/strokes.png" 2>"$tmp/stderr" &&
+   timeout 120 "$CURVETEXT" shape --input "$tmp/no-strokes.json" -o "$tmp/no-strokes.png" 2>>"$tmp/stderr" &&
+   read -r w h _ ink_strokes ink_none <<<"$(python3 "$(dirname "$0")/png_diff.py" "$tmp/strokes.png" "$tmp/no-strokes.png")" &&
+   [ "$w $h" = "480 320" ] && [ "$ink_strokes" -gt $((ink_none * 3)) ]; then
+  ok "shape: strokes (JSON) drawn"
+else
+  bad "shape: strokes (JSON): $(cat "$tmp/stderr") ink ${ink_strokes:-?} vs ${ink_none:-?}"
+fi
+printf '{"shapes": [{"stroke": {"join": "mitre"}, "contours": [[{"line": [[0,0],[1,0]]}]]}]}' >"$tmp/join.json"
+expect_error "shape: unknown stroke join" 1 "known: miter, miter-clip, round, bevel, arcs" -- shape --input "$tmp/join.json" -o "$tmp/out.png"
 printf '{"shapes": [{"contours": [[{"nurbs": {"degree": 2, "points": [[0,0],[1,1],[2,0]], "knots": [0,1,0,0,1,1]}}]]}]}' >"$tmp/knots.json"
 printf '{"shapes": [{"contours": [[{"bezier": {"points": [[0,0],[1,1],[2,0]], "weights": [1,-1,1]}}]]}]}' >"$tmp/weight.json"
 printf '{"shapes": [{"contours": [[{"line": [[0,0],[1e300,0],[1,1]]}]]}]}' >"$tmp/huge.json"
@@ -286,7 +298,13 @@ expect_error "render: markup nested 1000 deep" 1 "nested deeper than 64" -- rend
 python3 -c "import sys; sys.stdout.write('a' + '\u0301' * 20000)" >"$tmp/marks.txt"
 expect_error "render: a + 20000 combining marks" 1 "grapheme cluster of 20001" -- render --size 16 --text-file "$tmp/marks.txt" -o "$tmp/out.png"
 printf '<svg width="100" height="100"><path d="M10 10 L90 90 L10 90 Z" fill="none" stroke="black"/></svg>' >"$tmp/stroke.svg"
-expect_error "shape: SVG stroke refused by name" 1 "stroke 'black'" -- shape --input "$tmp/stroke.svg" -o "$tmp/out.png"
+# An SVG stroke is drawn: a triangle's outline 1 unit wide has about 273 px of ink at 1 px per unit.
+if timeout 60 "$CURVETEXT" shape --input "$tmp/stroke.svg" -o "$tmp/stroke.png" 2>"$tmp/stderr" &&
+   read -r _ _ _ ink _ <<<"$(python3 "$(dirname "$0")/png_diff.py" "$tmp/stroke.png" "$tmp/stroke.png")" &&
+   [ "$ink" -gt $((250 * 255)) ] && [ "$ink" -lt $((300 * 255)) ]; then ok "shape: SVG stroke drawn (ink $ink)"
+else bad "shape: SVG stroke: $(cat "$tmp/stderr") ink ${ink:-?}"; fi
+printf '<svg width="100" height="100"><path d="M10 10 L90 90" stroke="black" transform="scale(1 2)"/></svg>' >"$tmp/stroke2.svg"
+expect_error "shape: SVG stroke under a non-uniform scale refused by name" 1 "scales unevenly" -- shape --input "$tmp/stroke2.svg" -o "$tmp/out.png"
 expect_error "layout: markup error names its byte" 1 "markup, byte 7: </b> does not close <i>" -- layout --size 16 --markup --text "<b><i>x</b></i>" --json
 # Markup nests: the bold word inside a coloured span is still bold.
 if timeout 60 "$CURVETEXT" layout --size 16 --markup --text "<color=red>red <b>bold</b></color>" --json >"$tmp/tree.json" 2>"$tmp/stderr" &&

@@ -65,6 +65,8 @@ void shape(const std::vector<std::string>& arguments) {
     for (Shape& s : doc.shapes) {
       s.color = *foreground;
       s.gradient.reset();
+      s.stroke_gradient.reset();
+      if (s.stroke) s.stroke->color = *foreground;
     }
   // Everything that can be checked without a GL device is checked first.
   if (style.perspective_pending()) {

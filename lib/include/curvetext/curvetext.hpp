@@ -7,6 +7,7 @@
 //                                        (text_image.hpp) or render_paragraph_image (paragraph_image.hpp)
 //   2D curved shapes                     shapes.hpp -> render_shape_image (shape_image.hpp), or
 //                                        build_mesh (mesh.hpp) -> DrawBatch::from_mesh
+//   strokes (lines with a width, dashes) stroke_outline (stroke.hpp) -> build_mesh, or a Shape's stroke
 // Each header below is self-contained and may be included alone.
 #pragma once
 
@@ -37,6 +38,8 @@
 #include "curvetext/shape_image.hpp"
 #include "curvetext/shapes.hpp"
 #include "curvetext/shaping.hpp"
+#include "curvetext/stroke.hpp"
+#include "curvetext/stroke_style.hpp"
 #include "curvetext/text_block.hpp"
 #include "curvetext/text_image.hpp"
 #include "curvetext/tolerances.hpp"

@@ -15,7 +15,7 @@ namespace curvetext {
 
 struct GradientStop {
   float offset = 0.0f;  // in [0, 1], not below the previous stop's
-  Color color;          // straight alpha, sRGB; interpolated premultiplied
+  Color color;          // straight alpha, sRGB; interpolated so, then premultiplied
 };
 
 struct Gradient {

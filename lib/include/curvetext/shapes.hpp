@@ -1,6 +1,7 @@
 // 2D shapes (paper Figures 2 and 5: CAD-like outlines with weights): a shape
-// document is a list of filled shapes, each made of closed contours of
-// rational Bezier pieces, with a fill rule and a colour. Two inputs:
+// document is a list of shapes, each made of contours of rational Bezier
+// pieces, with a fill (rule and colour) and optionally a stroke
+// (stroke_style.hpp; stroke.hpp builds its region). Two inputs:
 //  - JSON with NURBS curves (any degree, weights, knot vector) and lines
 //    (docs/shapes/README.md gives the format);
 //  - SVG path data (M L H V Q T C S A Z) and SVG documents (docs/svg.md).
@@ -22,6 +23,7 @@
 #include "curvetext/export.hpp"
 #include "curvetext/outline.hpp"
 #include "curvetext/paint.hpp"
+#include "curvetext/stroke_style.hpp"
 
 namespace curvetext {
 
@@ -46,19 +48,39 @@ CURVETEXT_API Vec2 evaluate(const RationalBezier& curve, double t);
 // De Casteljau in homogeneous coordinates: both halves are exact.
 CURVETEXT_API std::pair<RationalBezier, RationalBezier> split(const RationalBezier& curve, double t);
 
-// A closed contour: pieces[i] ends where pieces[i+1] starts; the last piece
-// is joined to the first by a line when it does not end there.
+// A contour: pieces[i] ends where pieces[i+1] starts. A fill always closes
+// it, joining the last piece to the first by a line when it does not end
+// there. `closed` is for strokes (stroke.hpp): a closed contour is stroked
+// with a join where it starts (and its closing line, if any); an open one
+// (an SVG subpath without Z) gets caps at both ends.
 struct ShapeContour {
   std::vector<RationalBezier> pieces;
+  bool closed = true;
 };
+
+// A shape's stroke: its style and its paint. stroke-opacity is the colour's
+// alpha (multiplied in by the readers).
+struct ShapeStroke {
+  StrokeStyle style;
+  Color color{0, 0, 0, 1};
+};
+
+// SVG paint-order for what shapes have: fill then stroke (the default), or
+// stroke under the fill.
+enum class PaintOrder { FillStroke, StrokeFill };
 
 struct Shape {
   std::vector<ShapeContour> contours;
   FillRule fill_rule = FillRule::NonZero;
-  Color color{0, 0, 0, 1};
+  Color color{0, 0, 0, 1};  // the fill's
   // Paints the fill instead of `color` when set; its from_outline maps
   // document coordinates (y-up) to the gradient's.
   std::optional<Gradient> gradient;
+  bool filled = true;  // false: SVG fill="none"; the shape draws only its stroke
+  std::optional<ShapeStroke> stroke;
+  PaintOrder paint_order = PaintOrder::FillStroke;
+  // Paints the stroke instead of its colour when set (as `gradient` the fill).
+  std::optional<Gradient> stroke_gradient;
 };
 
 // Coordinates are y-up (SVG's y-down input is mirrored when read).

@@ -20,6 +20,20 @@ inline constexpr double kCubicApproximationPx = 1.0 / 16.0;
 // honoured for any glyph-sized cubic drawn below 10,000 px/em).
 inline constexpr int kMaxQuadraticsPerCubic = 64;
 
+// --- Strokes (stroke.hpp) ------------------------------------------------------
+// Largest distance, in device pixels, between a stroke's fitted offset conics
+// and the true offset curve when a stroke is built for the scale it is drawn
+// at (shape images); stroke_outline takes the tolerance in path units.
+inline constexpr double kStrokeOffsetPx = 1.0 / 64.0;
+// Dash ends lie within this fraction of the stroke tolerance of the arc
+// length the dash pattern asks for (dimensionless; 1/16 of 1/64 px is about
+// 1e-3 px).
+inline constexpr double kStrokeDashLengthOfTolerance = 1.0 / 16.0;
+// Most segments (lines and conics) one stroke may produce, over all its
+// loops; past it stroke_outline throws Error(Geometry) (a pattern of 10^6
+// dashes needs about 10^7). Meshing time and memory grow with the count.
+inline constexpr std::size_t kMaxStrokeSegments = std::size_t{1} << 21;
+
 // --- Mesh input (build_mesh, mesh.hpp) ----------------------------------------
 // Coordinates build_mesh accepts and how it reads them (outline units). Every
 // product the exact predicates form must be a finite, normal double: incircle's
