@@ -10,6 +10,8 @@
 
 #include "curvetext/error.hpp"
 #include "curvetext/image.hpp"
+#include "curvetext/image_target.hpp"
+#include "curvetext/shape_drawing.hpp"
 #include "curvetext/shape_image.hpp"
 #include "curvetext/shapes.hpp"
 #include "shapes/svg_css.hpp"
@@ -459,6 +461,42 @@ TEST(SvgRender, GradientsArePaintedPerPixel) {
   for (int i = 0; i < 20; ++i)
     many += "<stop offset='" + std::to_string(i / 20.0) + "' stop-color='#" + (i % 2 ? "f00" : "00f") + "'/>";
   expect_refused(many + "</linearGradient><rect width='9' height='9' fill='url(#m)'/></svg>", "20 stops");
+}
+
+// The drawing object draws into the framebuffer bound, at any placement:
+// the same pixels as render_shape_image, moved; built for twice the scale,
+// the same as render_shape_image at twice the size.
+TEST(SvgRender, DrawingObjectDrawsWhereThePlacementSays) {
+  const ShapeDocument doc = parse_svg(
+      "<svg width='40' height='30' viewBox='0 0 40 30'><radialGradient id='r' fx='.4'><stop stop-color='#fc0'/>"
+      "<stop offset='1' stop-color='#06c' stop-opacity='.7'/></radialGradient>"
+      "<ellipse cx='20' cy='15' rx='18' ry='12' fill='url(#r)' stroke='#333' stroke-width='1.5'/>"
+      "<path d='M5 25 L35 5' stroke='red' stroke-linecap='round' stroke-dasharray='4 3'/></svg>");
+  for (double k : {1.0, 2.0}) {
+    ShapeImageOptions options;
+    options.width = static_cast<int>(40 * k);
+    options.height = static_cast<int>(30 * k);
+    const ShapeImageLayout layout = layout_shape_image(doc, options);
+    const Image want = render_shape_image(test::gpu().renderer, doc, layout, options);
+    const ShapeDrawing drawing = ShapeDrawing::from_document(doc, layout.placement.scale);
+    EXPECT_EQ(drawing.layer_count(), 3u);
+    const int dx = 13, dy = 7;
+    ImageTarget target;
+    target.begin(want.width + 30, want.height + 20, Color{1, 1, 1, 1});
+    Placement at = layout.placement;
+    at.origin_x += dx;
+    at.origin_y += dy;
+    drawing.draw(test::gpu().renderer, at, DrawOptions{});
+    const Image got = target.read_pixels();
+    int worst = 0;
+    for (int y = 0; y < want.height; ++y)
+      for (int x = 0; x < want.width; ++x)
+        for (int c = 0; c < 4; ++c)
+          worst = std::max(worst, std::abs(got.pixel(x + dx, y + dy)[c] - want.pixel(x, y)[c]));
+    std::printf("drawing object at %gx, moved by (%d, %d): largest difference %d/255\n", k, dx, dy, worst);
+    EXPECT_LE(worst, 1);
+  }
+  EXPECT_THROW(ShapeDrawing::from_document(doc, 0.0), Error);
 }
 
 }  // namespace
