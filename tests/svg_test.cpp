@@ -79,6 +79,19 @@ TEST(SvgXml, HostileInputIsRefusedQuickly) {
   std::string deep;
   for (int i = 0; i < 100000; ++i) deep += "<g>";
   expect_refused("<svg>" + deep, "nested deeper than 256");
+  // Too many elements (a huge flat document).
+  std::string flat = "<svg>";
+  for (std::size_t i = 0; i <= svg::kMaxXmlElements; ++i) flat += "<g/>";
+  expect_refused(flat + "</svg>", "more than 200000 elements");
+  // Descendant selectors against deep markup: bounded work.
+  std::string chains = "<svg><style>.a .b{fill:red}";
+  for (int i = 1; i < 60; ++i) chains += " .a" + std::to_string(i) + " .b{fill:red}";
+  chains += "</style>";
+  for (int c = 0; c < 700; ++c) {
+    for (int d = 0; d < 250; ++d) chains += "<g class='b'>";
+    for (int d = 0; d < 250; ++d) chains += "</g>";
+  }
+  expect_refused(chains + "</svg>", "takes too long");
   // Malformed XML names its position.
   expect_refused("<svg>\n<path d='M0 0'>\n</svg>", "line 3, column 3: mismatched tag");
   // <use> fan-out: each level draws the one below ten times.

@@ -13,9 +13,10 @@ namespace curvetext::svg {
 
 namespace {
 
-// Compound tests one selector match may make (descendant combinators
-// backtrack: a.b c d e against deep markup).
-constexpr std::size_t kMaxMatchSteps = 100000;
+// Compound tests all matching of a document may make (descendant
+// combinators walk up to the root and backtrack: ".a .b" against deep
+// markup), so hostile sheets stop in bounded time.
+constexpr std::size_t kMaxMatchSteps = 20000000;
 
 // The text with /* comments */ replaced by a space.
 std::string strip_comments(std::string_view text) {
@@ -163,7 +164,8 @@ bool matches_compound(const Compound& c, const XmlElement& e) {
 // `steps` bounds the backtracking of descendant combinators.
 bool matches_from(const Selector& s, std::size_t k, const XmlDocument& doc, std::size_t index, std::size_t& steps) {
   if (++steps > kMaxMatchSteps)
-    throw Error(ErrorCode::InvalidArgument, "SVG: a style sheet selector takes too long to match");
+    throw Error(ErrorCode::InvalidArgument, "SVG: matching the style sheet's selectors takes too long (more than " +
+                                                std::to_string(kMaxMatchSteps) + " tests)");
   if (!matches_compound(s.compounds[k], doc.elements[index])) return false;
   if (k == 0) return true;
   const bool child = s.combinators[k - 1] == '>';
@@ -230,8 +232,7 @@ void parse_style_sheet(std::string_view text, const std::string& where, std::vec
   }
 }
 
-bool matches(const Selector& selector, const XmlDocument& doc, std::size_t index) {
-  std::size_t steps = 0;
+bool matches(const Selector& selector, const XmlDocument& doc, std::size_t index, std::size_t& steps) {
   return matches_from(selector, selector.compounds.size() - 1, doc, index, steps);
 }
 

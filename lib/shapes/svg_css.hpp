@@ -54,8 +54,9 @@ struct Rule {
 // supported, or a rule that is not closed; `where` prefixes the message.
 void parse_style_sheet(std::string_view text, const std::string& where, std::vector<Rule>& rules);
 
-// Whether `selector` matches element `index` of `doc`.
-bool matches(const Selector& selector, const XmlDocument& doc, std::size_t index);
+// Whether `selector` matches element `index` of `doc`. `steps` counts the
+// compound tests made, across calls; Error(InvalidArgument) past the limit.
+bool matches(const Selector& selector, const XmlDocument& doc, std::size_t index, std::size_t& steps);
 
 // A CSS colour: #rgb, #rgba, #rrggbb, #rrggbbaa, rgb()/rgba() with numbers or
 // percentages (commas or spaces, "/ alpha"), hsl()/hsla(), the 147 named

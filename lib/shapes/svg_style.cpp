@@ -259,12 +259,13 @@ std::vector<Specified> cascade(const XmlDocument& doc) {
     throw Error(ErrorCode::InvalidArgument, "SVG: " + std::to_string(rules.size()) + " style rules for " +
                                                 std::to_string(doc.elements.size()) + " elements is too much work");
   std::vector<Specified> out(doc.elements.size());
+  std::size_t steps = 0;  // of all matching, bounded (svg_css.hpp)
   for (std::size_t i = 0; i < doc.elements.size(); ++i) {
     const XmlElement& e = doc.elements[i];
     std::array<Rank, kPropCount> ranks{};
     for (const auto& [key, value] : e.attributes) declare(out[i], ranks, {key, trim(value), false}, {false, 0, 0, 0});
     for (const Rule& r : rules)
-      if (matches(r.selector, doc, i))
+      if (matches(r.selector, doc, i, steps))
         for (const Declaration& d : r.declarations)
           declare(out[i], ranks, d, {d.important, 1, r.selector.specificity, r.order});
     if (const std::string* style = e.find("style"))
