@@ -90,7 +90,6 @@ void scale_alpha(Shape& s, float alpha) {
 // visited many times) and <use> nesting.
 constexpr std::size_t kMaxVisits = 1000000;
 constexpr std::size_t kMaxUseDepth = 64;
-constexpr int kMaxHrefChain = 32;
 
 class Reader {
  public:

@@ -205,8 +205,9 @@ std::vector<Declaration> parse_declarations(std::string_view text) {
 void parse_style_sheet(std::string_view text, const std::string& where, std::vector<Rule>& rules) {
   std::string s = strip_comments(text);
   // CDO/CDC, which old files wrap sheets in, are no tokens of a rule.
-  for (const char* mark : {"<!--", "-->"})
-    for (std::size_t p; (p = s.find(mark)) != std::string::npos;) s.replace(p, std::string_view(mark).size(), " ");
+  for (const std::string_view mark : {std::string_view("<!--"), std::string_view("-->")})
+    for (std::size_t p = s.find(mark); p != std::string::npos; p = s.find(mark, p))
+      std::fill_n(s.begin() + static_cast<std::ptrdiff_t>(p), mark.size(), ' ');
   std::size_t i = 0;
   while (i < s.size()) {
     const std::size_t open = s.find('{', i);
