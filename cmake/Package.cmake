@@ -19,7 +19,7 @@ install(EXPORT curvetextTargets NAMESPACE curvetext:: DESTINATION ${curvetext_cm
 if(BUILD_SHARED_LIBS)
   set(CURVETEXT_CONFIG_DEPENDENCIES "")
 else()
-  set(CURVETEXT_CONFIG_DEPENDENCIES "FREETYPE=freetype2;HARFBUZZ=harfbuzz;EGL=egl;GLESV2=glesv2;PNG=libpng;FRIBIDI=fribidi;UNIBREAK=libunibreak;THAI=libthai;FONTCONFIG=fontconfig")
+  set(CURVETEXT_CONFIG_DEPENDENCIES "FREETYPE=freetype2;HARFBUZZ=harfbuzz;EGL=egl;GLESV2=glesv2;PNG=libpng;FRIBIDI=fribidi;UNIBREAK=libunibreak;THAI=libthai;FONTCONFIG=fontconfig;EXPAT=expat")
 endif()
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/curvetextConfig.cmake.in
   ${PROJECT_BINARY_DIR}/curvetextConfig.cmake INSTALL_DESTINATION ${curvetext_cmake_dir})

@@ -41,6 +41,9 @@ packages=(
   # the example apps (examples/): windows and GL contexts, the camera's maths, and the
   # virtual X server (with xauth for xvfb-run) that their tests run them in
   libglfw3-dev libsdl2-dev libglm-dev xvfb xauth
+  # SVG: the XML parser the reader is built on; the icon themes of the SVG corpus test, the
+  # reference renderer it compares with, and the PNG reader of its script (scripts/svg_corpus.py)
+  libexpat1-dev breeze-icon-theme tango-icon-theme adwaita-icon-theme librsvg2-bin python3-cairo
 )
 
 missing=()

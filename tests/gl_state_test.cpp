@@ -19,6 +19,8 @@
 #include "curvetext/font.hpp"
 #include "curvetext/headless.hpp"
 #include "curvetext/renderer.hpp"
+#include "curvetext/shape_drawing.hpp"
+#include "curvetext/shapes.hpp"
 #include "curvetext/shaping.hpp"
 #include "curvetext/draw_batch.hpp"
 #include "support/fonts.hpp"
@@ -408,6 +410,52 @@ TEST_P(GlState, ColourBitmapsLeaveTheApplicationsState) {
       glBindSampler(0, 0);
       glDeleteSamplers(1, &sampler);
     }
+  }
+}
+
+// An SVG icon drawn through ShapeDrawing (fills, a stroke, a gradient
+// evaluated in the composite pass) in every offscreen mode, and a solid one
+// in the single-pass modes: the application's state is left as it was and
+// the ink lands inside its scissor box.
+TEST_P(GlState, ShapeDrawingLeavesTheApplicationsState) {
+  const bool gles2_run = test::expects_gles2();
+  if (gles2_run && GetParam() != ContextKind::Gles2) GTEST_SKIP() << "OpenGL ES 2.0 only in this run";
+  HeadlessContext context = HeadlessContext::create(GetParam());
+  {
+    Renderer renderer;
+    AppState app;
+    const ShapeDocument icon = parse_svg(
+        "<svg viewBox='0 0 16 16'><linearGradient id='g'><stop stop-color='#f00'/><stop offset='1' "
+        "stop-color='#00f'/></linearGradient><rect x='1' y='1' width='14' height='14' rx='3' fill='url(#g)'/>"
+        "<circle cx='8' cy='8' r='4' fill='none' stroke='#000' stroke-width='1.5'/></svg>");
+    const ShapeDocument solid = parse_svg("<svg viewBox='0 0 16 16'><circle cx='8' cy='8' r='6'/></svg>");
+    const Placement at(6.0, 40.0, 16.0);  // 96 px, its top-left at (40, 16): y up, top edge y = 0
+    const ShapeDrawing drawing = ShapeDrawing::from_document(icon, 6.0);
+    const ShapeDrawing plain = ShapeDrawing::from_document(solid, 6.0);
+    const State before = State::read();
+    for (AntiAliasing aa : {AntiAliasing::None, AntiAliasing::Curves, AntiAliasing::Full, AntiAliasing::Vbaa,
+                            AntiAliasing::Msaa, AntiAliasing::Auto}) {
+      const bool offscreen = aa != AntiAliasing::None && aa != AntiAliasing::Curves;
+      (offscreen ? drawing : plain).draw(renderer, at, DrawOptions(Color{0, 0, 0, 1}, aa));
+      EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+      expect_same(before, State::read(),
+                  std::string(context_kind_name(GetParam())) + " after a shape drawing in mode " +
+                      std::to_string(static_cast<int>(aa)));
+    }
+    // A gradient in a single-pass mode is refused, with the state left as it was.
+    EXPECT_THROW(drawing.draw(renderer, at, DrawOptions(Color{0, 0, 0, 1}, AntiAliasing::Curves)), Error);
+    expect_same(before, State::read(), "after a refused gradient draw");
+    const std::vector<std::uint8_t> px = app.pixels();
+    std::size_t inside = 0, outside = 0;
+    for (int y = 0; y < AppState::kSize; ++y)
+      for (int x = 0; x < AppState::kSize; ++x) {
+        const std::uint8_t* p = &px[(static_cast<std::size_t>(y) * AppState::kSize + x) * 4];
+        const bool ink = p[0] < 200 || p[2] < 200;
+        const bool in = x >= 20 && x < 200 && y >= 30 && y < 150;
+        (in ? inside : outside) += ink ? 1 : 0;
+      }
+    EXPECT_GT(inside, 4000u);
+    EXPECT_EQ(outside, 0u);
   }
 }
 

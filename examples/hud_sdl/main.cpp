@@ -1,6 +1,7 @@
 // An SDL2 window with an OpenGL ES 2.0 context: a small 2D game scene and the
 // HUD of the GLFW example (score, FPS counter, wrapped paragraph) drawn with
-// curvetext into the window's default framebuffer, between the app's own draws.
+// curvetext into the window's default framebuffer, between the app's own draws,
+// and an SVG icon in the bar drawn each frame through a ShapeDrawing.
 #include <GLES2/gl2.h>
 #include <SDL.h>
 
@@ -17,6 +18,8 @@
 #include "curvetext/font_collection.hpp"
 #include "curvetext/glyph_cache.hpp"
 #include "curvetext/renderer.hpp"
+#include "curvetext/shape_drawing.hpp"
+#include "curvetext/shapes.hpp"
 #include "curvetext/text_block.hpp"
 #include "common/app.hpp"
 #include "common/gl_program.hpp"
@@ -141,12 +144,29 @@ void Scene2D::prepare(int frame, int width, int height, const example::Hud& hud)
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
 }
 
+// An icon as icon themes write them: a style sheet with currentColor, a
+// gradient, a transform, basic shapes and a stroke (docs/svg.md).
+constexpr const char* kIcon =
+    "<svg xmlns='http://www.w3.org/2000/svg' width='16' height='16' viewBox='0 0 16 16'>"
+    "<style>.ColorScheme-Text { color: #f2f4f8 }</style>"
+    "<radialGradient id='sun' fx='.35' fy='.35'><stop stop-color='#ffe27a'/><stop offset='1' "
+    "stop-color='#f08a24'/></radialGradient>"
+    "<circle cx='8' cy='8' r='6.5' fill='url(#sun)'/>"
+    "<g class='ColorScheme-Text' transform='rotate(-20 8 8)'>"
+    "<path d='M5 9.5q3 2.5 6 0' fill='none' stroke='currentColor' stroke-width='1.2' stroke-linecap='round'/>"
+    "<rect x='5' y='5.5' width='1.6' height='2' rx='.8' fill='currentColor'/>"
+    "<rect x='9.4' y='5.5' width='1.6' height='2' rx='.8' fill='currentColor'/></g></svg>";
+constexpr double kIconPx = 24.0;
+
 // curvetext's part: static text uploaded once, the score and FPS counter
-// rebuilt when their text changes.
+// rebuilt when their text changes; an SVG icon meshed once.
 class TextLayer {
  public:
   TextLayer(int width, int height)
-      : hud_(fonts_, width, height), paragraph_(curvetext::TextBlock::from_paragraph(cache_, hud_.paragraph())) {}
+      : hud_(fonts_, width, height),
+        paragraph_(curvetext::TextBlock::from_paragraph(cache_, hud_.paragraph())),
+        icon_(curvetext::ShapeDrawing::from_document(curvetext::parse_svg(kIcon), kIconPx / 16.0)),
+        width_(width) {}
   const example::Hud& hud() const { return hud_; }
 
   void set(const example::HudText& text) {
@@ -156,6 +176,12 @@ class TextLayer {
     fps_text_ = text.fps;
   }
   void draw_score() { score_->draw(renderer_); }
+  // In the bar after the lives, each frame in one call; part of the app's
+  // scene (drawn with --no-text too).
+  void draw_icon() {
+    const curvetext::Placement at(kIconPx / 16.0, 0.40 * width_ + 90.0, 12.0);  // the icon's y-up top edge at y 12
+    icon_.draw(renderer_, at, curvetext::DrawOptions{});
+  }
   void draw_rest() {
     fps_->draw(renderer_);
     const curvetext::Vec2 origin = hud_.paragraph_origin();
@@ -169,6 +195,8 @@ class TextLayer {
   curvetext::Renderer renderer_;
   example::Hud hud_;
   curvetext::TextBlock paragraph_;  // one call draws its runs in their colours
+  curvetext::ShapeDrawing icon_;
+  int width_ = 0;
   std::optional<example::ItemBatch> score_, fps_;
   std::string score_text_, fps_text_;
 };
@@ -188,7 +216,8 @@ void draw_frame(Scene& s, int frame, int width, int height, bool with_text, cons
     s.text.set(hud_text);
     s.text.draw_score();
   }
-  s.app.draw_lives();  // the app carries on with its own state after curvetext's draw
+  s.text.draw_icon();
+  s.app.draw_lives();  // the app carries on with its own state after curvetext's draws
   if (with_text) s.text.draw_rest();
   example::check_gl("after a frame");
 }

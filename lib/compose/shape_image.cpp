@@ -2,6 +2,8 @@
 // blended source-over (the renderer draws one colour per batch).
 #include "curvetext/shape_image.hpp"
 
+#include "curvetext/shape_drawing.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -59,14 +61,6 @@ Box content_box(const ShapeDocument& doc) {
     }
   }
   return box;
-}
-
-// The larger side of the shape's control polygon box on screen, in pixels:
-// what `auto` picks by (as text by its pixels per em).
-double on_screen_size(const Shape& shape, const ShapeImageLayout& layout) {
-  const Box b = shape_box(shape);
-  if (b.empty()) return 0.0;
-  return std::max(b.max.x - b.min.x, b.max.y - b.min.y) * layout.placement.scale * layout.largest_stretch;
 }
 
 int image_side(double v, const char* what) {
@@ -132,12 +126,6 @@ ShapeImageLayout layout_shape_image(const ShapeDocument& doc, const ShapeImageOp
 
 namespace {
 
-// The document point drawn at the image's centre (before the transform).
-Vec2 view_centre(const ShapeImageLayout& layout) {
-  const Placement& p = layout.placement;
-  return {(0.5 * layout.width - p.origin_x) / p.scale, (p.origin_y - 0.5 * layout.height) / p.scale};
-}
-
 // `mesh` moved by -centre (in double, before the GPU's float32), or
 // Error(Geometry) where a vertex then lies beyond what float32 places within
 // 1/16 px (tolerance::kMaxGpuCoordinatePx at `scale` px per unit).
@@ -166,6 +154,7 @@ struct Layer {
   Mesh mesh;
   Color color;
   std::size_t shape;
+  const Gradient* gradient = nullptr;  // the fill's, instead of `color`
 };
 
 // `part` added to `all` (its vertices renumbered after all's).
@@ -189,7 +178,8 @@ void shape_layers(const Shape& shape, std::size_t index, double tolerance, doubl
   mo.cubic_tolerance = tolerance;
   auto fill = [&] {
     if (shape.filled)
-      out.push_back({relative_to(build_mesh(fill_outline(shape, tolerance), mo), centre, scale), shape.color, index});
+      out.push_back({relative_to(build_mesh(fill_outline(shape, tolerance), mo), centre, scale), shape.color, index,
+                     shape.gradient ? &*shape.gradient : nullptr});
   };
   auto stroke = [&] {
     if (!shape.stroke) return;
@@ -197,15 +187,18 @@ void shape_layers(const Shape& shape, std::size_t index, double tolerance, doubl
     const double stroke_tolerance = tolerance::kStrokeOffsetPx / px_per_unit;
     const Outline o = stroke_outline(shape.contours, shape.stroke->style, stroke_tolerance, px_per_unit);
     if (o.empty()) return;
+    const Gradient* gradient = shape.stroke_gradient ? &*shape.stroke_gradient : nullptr;
     try {
-      out.push_back({relative_to(build_mesh(o, mo), centre, scale), shape.stroke->color, index});
+      out.push_back({relative_to(build_mesh(o, mo), centre, scale), shape.stroke->color, index, gradient});
     } catch (const Error& e) {
       // docs/strokes.md, limits: where the mesher's budget refuses the union
       // of many crossing subpaths, an opaque stroke is meshed subpath by
       // subpath into one mesh whose triangles overlap where subpaths cross
       // (the same pixels, but for the antialiased edges there); a
       // translucent one would show its overlaps, and is refused.
-      if (e.code() != ErrorCode::Geometry || shape.stroke->color.a < 1.0f || shape.contours.size() < 2) throw;
+      if (e.code() != ErrorCode::Geometry || shape.stroke->color.a < 1.0f || gradient != nullptr ||
+          shape.contours.size() < 2)
+        throw;
       Mesh all;
       for (const ShapeContour& c : shape.contours) {
         const Outline one = stroke_outline({c}, shape.stroke->style, stroke_tolerance, px_per_unit);
@@ -225,29 +218,73 @@ void shape_layers(const Shape& shape, std::size_t index, double tolerance, doubl
 
 }  // namespace
 
+// --- ShapeDrawing ---------------------------------------------------------------
+
+struct ShapeDrawing::Layer {
+  DrawBatch batch;
+  Color color;
+  double side = 0.0;                 // the shape's larger side, document units (for `auto`)
+  std::optional<Gradient> gradient;  // from the mesh's units (relative to the centre)
+};
+
+ShapeDrawing::ShapeDrawing() : layers_(std::make_unique<std::vector<Layer>>()) {}
+ShapeDrawing::ShapeDrawing(ShapeDrawing&&) noexcept = default;
+ShapeDrawing& ShapeDrawing::operator=(ShapeDrawing&&) noexcept = default;
+ShapeDrawing::~ShapeDrawing() = default;
+
+std::size_t ShapeDrawing::layer_count() const { return layers_->size(); }
+
+ShapeDrawing ShapeDrawing::from_document(const ShapeDocument& doc, double px_per_unit) {
+  if (!std::isfinite(px_per_unit) || !(px_per_unit > 0.0))
+    throw Error(ErrorCode::InvalidArgument,
+                "pixels per unit must be positive and finite, got " + detail::format_number_exact(px_per_unit));
+  ShapeDrawing d;
+  d.px_per_unit_ = px_per_unit;
+  const Box view = doc.view.empty() ? content_box(doc) : doc.view;
+  if (!view.empty()) d.centre_ = 0.5 * (view.min + view.max);
+  // docs/design.md section 3: 1/16 px at the scale drawn, in document units.
+  const double tolerance = tolerance::kCubicApproximationPx / px_per_unit;
+  // Meshes first: geometry errors surface before anything is uploaded.
+  std::vector<::curvetext::Layer> layers;
+  for (std::size_t i = 0; i < doc.shapes.size(); ++i)
+    shape_layers(doc.shapes[i], i, tolerance, px_per_unit, d.centre_, px_per_unit, layers);
+  for (const ::curvetext::Layer& l : layers) {
+    if (l.mesh.empty()) continue;
+    const Box b = shape_box(doc.shapes[l.shape]);
+    Layer out{DrawBatch::from_mesh(l.mesh), l.color, b.empty() ? 0.0 : std::max(b.max.x - b.min.x, b.max.y - b.min.y),
+              std::nullopt};
+    if (l.gradient) {
+      // The mesh is relative to the centre: the gradient's map from
+      // document coordinates moved with it.
+      out.gradient = *l.gradient;
+      out.gradient->from_outline = out.gradient->from_outline * Transform::translation(d.centre_.x, d.centre_.y);
+    }
+    d.layers_->push_back(std::move(out));
+  }
+  return d;
+}
+
+void ShapeDrawing::draw(Renderer& renderer, const Placement& at, const DrawOptions& options) const {
+  Placement moved = at;
+  moved.origin_x += at.scale * centre_.x;
+  moved.origin_y -= at.scale * centre_.y;
+  for (const Layer& l : *layers_) {
+    DrawOptions d = options;
+    d.color = l.color;
+    d.antialiasing = resolve_antialiasing(options.antialiasing, l.side * px_per_unit_);
+    d.gradient = l.gradient ? &*l.gradient : nullptr;
+    renderer.draw(l.batch, moved, d);
+  }
+}
+
 Image render_shape_image(Renderer& renderer, const ShapeDocument& doc, const ShapeImageLayout& layout,
                          const ShapeImageOptions& options) {
-  // docs/design.md section 3: 1/16 px at the scale drawn, in document units.
-  const double px_per_unit = layout.placement.scale * layout.largest_stretch;
-  const double tolerance = tolerance::kCubicApproximationPx / px_per_unit;
-  // Meshes first: geometry errors surface before anything is drawn.
-  // Each mesh relative to the view's centre, the placement moved to match.
-  const Vec2 centre = view_centre(layout);
-  std::vector<Layer> layers;
-  for (std::size_t i = 0; i < doc.shapes.size(); ++i)
-    shape_layers(doc.shapes[i], i, tolerance, px_per_unit, centre, px_per_unit, layers);
-  Placement placement = layout.placement;
-  placement.origin_x += placement.scale * centre.x;
-  placement.origin_y -= placement.scale * centre.y;
-  check_coverage_gamma(options.gamma);
+  const ShapeDrawing drawing = ShapeDrawing::from_document(doc, layout.placement.scale * layout.largest_stretch);
+  DrawOptions draw = draw_options(options, Color{0, 0, 0, 1}, 0.0);
+  draw.antialiasing = options.antialiasing;  // `auto` is resolved per shape by the drawing
   ImageTarget target;
   target.begin(layout.width, layout.height, options.background, options.blending);
-  for (const Layer& layer : layers) {
-    if (layer.mesh.empty()) continue;
-    DrawBatch batch = DrawBatch::from_mesh(layer.mesh);
-    const DrawOptions draw = draw_options(options, layer.color, on_screen_size(doc.shapes[layer.shape], layout));
-    renderer.draw(batch, placement, draw);
-  }
+  drawing.draw(renderer, layout.placement, draw);
   return target.read_pixels();
 }
 

@@ -20,6 +20,7 @@
 #include "gpu/batch_impl.hpp"
 #include "gpu/gl_state.hpp"
 #include "gpu/gl_util.hpp"
+#include "gpu/paint.hpp"
 #include "gpu/shader_sources.hpp"
 
 namespace curvetext {
@@ -182,6 +183,9 @@ struct Renderer::Impl {
   // composite[box][gamma]: one fetch per pixel, or vbaa's box filter
   // (CURVETEXT_BOX); with gamma or not. Each made when first needed.
   QuadProgram resolve, composite[2][2];
+  // The same with a gradient's colour per pixel (paint_composite.frag.glsl).
+  QuadProgram paint_composite[2][2];
+  gpu::PaintUniforms paint_u[2][2];
   // Colour bitmaps: textured quads (bitmap.vert/frag.glsl).
   GLuint bitmap_program = 0;
   GLint bitmap_transform = -1, bitmap_viewport = -1, bitmap_depth = -1, bitmap_texture = -1, bitmap_opacity = -1,
@@ -312,6 +316,7 @@ struct Renderer::Impl {
   void make_area_programs(bool gamma);  // area_program[gamma]
   const QuadProgram& composite_program(bool box, bool gamma);
   const QuadProgram& resolve_program();
+  const QuadProgram& paint_program(bool box, bool gamma);
 
   // The passes of Renderer::draw (below).
   void draw_curves(const gpu::BatchImpl& b, const Transform& full, float vw, float vh, const DrawOptions& options);
@@ -328,7 +333,8 @@ struct Renderer::Impl {
   ~Impl() {
     for (GLuint p :
          {program, area_program[0][0], area_program[0][1], area_program[1][0], area_program[1][1], resolve.id,
-          composite[0][0].id, composite[0][1].id, composite[1][0].id, composite[1][1].id, bitmap_program})
+          composite[0][0].id, composite[0][1].id, composite[1][0].id, composite[1][1].id, bitmap_program,
+          paint_composite[0][0].id, paint_composite[0][1].id, paint_composite[1][0].id, paint_composite[1][1].id})
       if (p != 0) glDeleteProgram(p);
     if (quad_vbo != 0) glDeleteBuffers(1, &quad_vbo);
     if (vao != 0) glDeleteVertexArrays(1, &vao);
@@ -410,6 +416,17 @@ const Renderer::Impl::QuadProgram& Renderer::Impl::composite_program(bool box, b
   return q;
 }
 
+const Renderer::Impl::QuadProgram& Renderer::Impl::paint_program(bool box, bool gamma) {
+  QuadProgram& q = paint_composite[box ? 1 : 0][gamma ? 1 : 0];
+  if (q.id == 0) {
+    const std::string defines = std::string("#define CURVETEXT_BOX ") + (box ? "1" : "0") +
+                                "\n#define CURVETEXT_GAMMA " + (gamma ? "1" : "0") + "\n";
+    q = quad_program(shader_source::paint_composite_frag_glsl, gles, defines.c_str(), "gradient composite program");
+    paint_u[box ? 1 : 0][gamma ? 1 : 0] = gpu::PaintUniforms::of(q.id);
+  }
+  return q;
+}
+
 Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
   if (glGetString(GL_VERSION) == nullptr) {
     throw Error(ErrorCode::Gl, "no current GL context (create a HeadlessContext or make one current)");
@@ -483,11 +500,21 @@ void Renderer::draw(const DrawBatch& batch, const Placement& placement, const Dr
     r.draw_debug_edges(b, full, vw, vh);
     return;
   }
+  if (options.gradient) {
+    // Evaluated in the composite pass only.
+    validate_gradient(*options.gradient);
+    if (options.antialiasing == AntiAliasing::None || options.antialiasing == AntiAliasing::Curves || options.debug ||
+        (options.antialiasing == AntiAliasing::Vbaa && options.vbaa_ring > 0.0f))
+      throw Error(ErrorCode::InvalidArgument,
+                  "a gradient is drawn with antialiasing full, vbaa (without a filter ring) or msaa, not debug");
+  }
   if (options.antialiasing == AntiAliasing::None || options.antialiasing == AntiAliasing::Curves) {
     r.draw_curves(b, full, vw, vh, options);
     return;
   }
   if (r.draw_offscreen(b, full, vw, vh, state, options)) return;
+  if (options.gradient)
+    throw Error(ErrorCode::InvalidArgument, "a gradient cannot be drawn where no coverage buffer fits the block");
   // No coverage buffer fits (a block past the GL texture limit, or a
   // perspective that puts part of it behind the eye): the triangles' areas
   // blend straight into the target. Where two triangles split a pixel,
@@ -650,15 +677,18 @@ namespace {
 // pixels: one fetch per pixel (full, msaa), or vbaa's filter over the r x r
 // texels of each pixel and their ring.
 void composite_tile(RendererImpl& r, const RendererImpl::Slot& slot, int tx, int ty, int w, int h, float vw, float vh,
-                    const DrawOptions& options, bool filter) {
+                    const DrawOptions& options, bool filter, const Transform& full) {
   const int factor = slot.key.factor;
   const float ring = std::clamp(options.vbaa_ring, 0.0f, 1.0f);
   // vbaa's box filter without the ring's loop (composite.frag.glsl with
   // CURVETEXT_BOX); with a ring, resolve.frag.glsl.
   const bool box = filter && ring == 0.0f;
   const bool gamma = coverage_exponent(options.gamma) != 1.0f;
-  const RendererImpl::QuadProgram& q = filter && !box ? r.resolve_program() : r.composite_program(box, gamma);
+  const RendererImpl::QuadProgram& q = options.gradient ? r.paint_program(box, gamma)
+                                       : filter && !box ? r.resolve_program()
+                                                        : r.composite_program(box, gamma);
   glUseProgram(q.id);
+  if (options.gradient) r.paint_u[box ? 1 : 0][gamma ? 1 : 0].set(*options.gradient, full, r.target_blending);
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, slot.texture);
   glUniform1i(q.texture, 0);
@@ -795,7 +825,7 @@ bool Renderer::Impl::draw_offscreen(const gpu::BatchImpl& b, const Transform& fu
         ++r.offscreen_passes;
       }
       r.apply_target(target);
-      composite_tile(r, slot, tx, ty, w, h, vw, vh, options, vbaa && factor > 1);
+      composite_tile(r, slot, tx, ty, w, h, vw, vh, options, vbaa && factor > 1, full);
     }
   }
   if (GLenum err = glGetError(); err != GL_NO_ERROR) {

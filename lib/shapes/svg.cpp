@@ -1,286 +1,65 @@
-// A minimal SVG reader: the <svg> element's width, height and viewBox, and
-// every <path> with its d, fill and fill-rule (attributes, a style attribute,
-// or inherited from enclosing <g> elements). Anything that would change the
-// drawing and is not understood (transform, <rect>, <use>, ...) is an error,
-// not silently dropped. SVG's y axis points down; the document is mirrored to
-// y-up (Outline's frame), which leaves both fill rules unchanged.
+// The SVG document reader: the element tree (svg_xml), each element's
+// computed style (svg_style's cascade and inheritance), and a walk from the
+// root that turns every drawn shape element into a Shape in document space,
+// through transforms, <use>, <symbol> and nested <svg>. What would change the
+// picture and is not drawn is refused by name with its position; what SVG
+// says does not draw (metadata, unknown and foreign elements, defs) is
+// skipped. SVG's y axis points down; the document is mirrored to y-up
+// (Outline's frame), which leaves both fill rules unchanged.
 #include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fstream>
 #include <string>
+#include <unordered_map>
 
 #include "check.hpp"
+#include "core/tolerances.hpp"
 #include "curvetext/error.hpp"
 #include "curvetext/shapes.hpp"
-#include "core/tolerances.hpp"
+#include "svg_reader.hpp"
 
 namespace curvetext {
 
+namespace svg {
 namespace {
 
-struct Tag {
-  std::string name;
-  std::vector<std::pair<std::string, std::string>> attributes;
-  bool closing = false;       // </name>
-  bool self_closing = false;  // <name ... />
-  const std::string* find(std::string_view key) const {
-    for (const auto& [k, v] : attributes)
-      if (k == key) return &v;
-    return nullptr;
-  }
-};
-
-[[noreturn]] void fail(const std::string& message) { throw Error(ErrorCode::InvalidArgument, "SVG: " + message); }
-
-std::string decode_entities(std::string_view s) {
-  std::string out;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    if (s[i] != '&') {
-      out += s[i];
-      continue;
-    }
-    const std::size_t end = s.find(';', i);
-    if (end == std::string_view::npos) fail("unterminated entity in an attribute");
-    const std::string_view name = s.substr(i + 1, end - i - 1);
-    if (name == "amp")
-      out += '&';
-    else if (name == "lt")
-      out += '<';
-    else if (name == "gt")
-      out += '>';
-    else if (name == "quot")
-      out += '"';
-    else if (name == "apos")
-      out += '\'';
-    else if (!name.empty() && name[0] == '#') {
-      unsigned cp = 0;
-      const bool hex = name.size() > 1 && (name[1] == 'x' || name[1] == 'X');
-      const std::string_view digits = name.substr(hex ? 2 : 1);
-      const auto [p, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), cp, hex ? 16 : 10);
-      if (ec != std::errc() || p != digits.data() + digits.size() || cp > 0x7f)
-        fail("unsupported character reference &" + std::string(name) + ";");
-      out += static_cast<char>(cp);
-    } else {
-      fail("unknown entity &" + std::string(name) + ";");
-    }
-    i = end;
-  }
-  return out;
+[[noreturn]] void fail(const XmlElement& e, const std::string& message) {
+  throw Error(ErrorCode::InvalidArgument, "SVG: " + position(e) + message);
 }
 
-class XmlScanner {
- public:
-  explicit XmlScanner(std::string_view text) : s_(text) {}
-
-  // The next tag, skipping text, comments, processing instructions, DOCTYPE
-  // and CDATA; false at the end.
-  bool next(Tag& tag) {
-    for (;;) {
-      const std::size_t lt = s_.find('<', pos_);
-      if (lt == std::string_view::npos) return false;
-      pos_ = lt;
-      if (s_.substr(pos_, 4) == "<!--") {
-        skip_past("-->");
-      } else if (s_.substr(pos_, 9) == "<![CDATA[") {
-        skip_past("]]>");
-      } else if (s_.substr(pos_, 2) == "<?") {
-        skip_past("?>");
-      } else if (s_.substr(pos_, 2) == "<!") {
-        skip_past(">");
-      } else {
-        read_tag(tag);
-        return true;
-      }
-    }
-  }
-
- private:
-  std::string_view s_;
-  std::size_t pos_ = 0;
-
-  void skip_past(std::string_view end) {
-    const std::size_t e = s_.find(end, pos_);
-    if (e == std::string_view::npos) fail("unterminated " + std::string(s_.substr(pos_, 4)) + "...");
-    pos_ = e + end.size();
-  }
-
-  static bool space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
-  static bool name_char(char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_' ||
-           c == ':' || c == '.';
-  }
-
-  void read_tag(Tag& tag) {
-    tag = {};
-    ++pos_;
-    if (pos_ < s_.size() && s_[pos_] == '/') {
-      tag.closing = true;
-      ++pos_;
-    }
-    const std::size_t n0 = pos_;
-    while (pos_ < s_.size() && name_char(s_[pos_])) ++pos_;
-    tag.name = std::string(s_.substr(n0, pos_ - n0));
-    if (tag.name.empty()) fail("a '<' not followed by an element name");
-    for (;;) {
-      while (pos_ < s_.size() && space(s_[pos_])) ++pos_;
-      if (pos_ >= s_.size()) fail("unterminated <" + tag.name + "> tag");
-      if (s_[pos_] == '>') {
-        ++pos_;
-        return;
-      }
-      if (s_.substr(pos_, 2) == "/>") {
-        tag.self_closing = true;
-        pos_ += 2;
-        return;
-      }
-      const std::size_t a0 = pos_;
-      while (pos_ < s_.size() && name_char(s_[pos_])) ++pos_;
-      if (pos_ == a0) fail("unexpected '" + std::string(1, s_[pos_]) + "' in <" + tag.name + ">");
-      std::string key(s_.substr(a0, pos_ - a0));
-      while (pos_ < s_.size() && space(s_[pos_])) ++pos_;
-      if (pos_ >= s_.size() || s_[pos_] != '=') fail("attribute " + key + " of <" + tag.name + "> has no value");
-      ++pos_;
-      while (pos_ < s_.size() && space(s_[pos_])) ++pos_;
-      if (pos_ >= s_.size() || (s_[pos_] != '"' && s_[pos_] != '\'')) fail("attribute " + key + " needs quotes");
-      const char q = s_[pos_++];
-      const std::size_t end = s_.find(q, pos_);
-      if (end == std::string_view::npos) fail("unterminated value of attribute " + key);
-      tag.attributes.emplace_back(std::move(key), decode_entities(s_.substr(pos_, end - pos_)));
-      pos_ = end + 1;
-    }
-  }
-};
-
-std::string trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\n' || s.front() == '\r'))
-    s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\n' || s.back() == '\r'))
-    s.remove_suffix(1);
-  return std::string(s);
+// Elements that draw something this reader does not: refused by name.
+bool refused_element(const std::string& name) {
+  static const char* const kRefused[] = {"text",  "image",         "foreignObject",    "switch",      "video",
+                                         "audio", "iframe",        "canvas",           "script",      "animate",
+                                         "set",   "animateMotion", "animateTransform", "animateColor"};
+  return std::any_of(std::begin(kRefused), std::end(kRefused), [&](const char* r) { return name == r; });
 }
 
-// Paint properties that <g> passes down to <path>, and the element's own
-// opacity (not inherited: it fades the element as one layer).
-struct Paint {
-  std::string fill = "black";
-  std::string fill_rule = "nonzero";
-  std::string fill_opacity = "1";
-  std::string stroke = "none";
-  std::string display = "inline";
-  std::string opacity;  // empty: 1
-};
-
-void set_property(Paint& paint, const std::string& key, const std::string& value) {
-  if (key == "fill")
-    paint.fill = value;
-  else if (key == "fill-rule")
-    paint.fill_rule = value;
-  else if (key == "fill-opacity")
-    paint.fill_opacity = value;
-  else if (key == "stroke")
-    paint.stroke = value;
-  else if (key == "display")
-    paint.display = value;
-  else if (key == "opacity")
-    paint.opacity = value;
+// Elements that never draw where they stand (only when referenced).
+bool definition_element(const std::string& name) {
+  static const char* const kDefs[] = {"defs",           "symbol",         "clipPath", "mask",      "pattern", "marker",
+                                      "linearGradient", "radialGradient", "filter",   "style",     "title",   "desc",
+                                      "metadata",       "cursor",         "font",     "font-face", "view"};
+  return std::any_of(std::begin(kDefs), std::end(kDefs), [&](const char* r) { return name == r; });
 }
 
-// An opacity value: a number in [0, 1] or a percentage.
-double opacity_value(const std::string& key, const std::string& text) {
-  if (text.empty()) return 1.0;
-  std::string s = text;
-  const bool percent = s.ends_with("%");
+// A number or percentage in [0, 1] (opacity, fill-opacity, stop-opacity).
+double unit_value(const XmlElement& e, const char* what, const std::string& text) {
+  std::string s = trim(text);
+  const bool percent = !s.empty() && s.back() == '%';
   if (percent) s.pop_back();
   double v = 0.0;
   const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
   if (s.empty() || ec != std::errc() || p != s.data() + s.size() || !std::isfinite(v))
-    fail(key + " '" + text + "' is not a number");
+    fail(e, std::string(what) + " '" + text + "' is not a number");
   return std::clamp(percent ? v / 100.0 : v, 0.0, 1.0);
-}
-
-// The element's properties over those it inherits; opacity starts at 1.
-void apply_paint(const Tag& tag, Paint& paint) {
-  paint.opacity.clear();
-  for (const char* key : {"fill", "fill-rule", "fill-opacity", "stroke", "display", "opacity"})
-    if (const std::string* v = tag.find(key)) set_property(paint, key, trim(*v));
-  if (const std::string* style = tag.find("style")) {
-    std::string_view rest = *style;
-    while (!rest.empty()) {
-      const std::size_t semi = rest.find(';');
-      const std::string_view decl = rest.substr(0, semi);
-      rest = semi == std::string_view::npos ? std::string_view{} : rest.substr(semi + 1);
-      const std::size_t colon = decl.find(':');
-      if (colon == std::string_view::npos) continue;
-      set_property(paint, trim(decl.substr(0, colon)), trim(decl.substr(colon + 1)));
-    }
-  }
-  if (tag.find("transform")) fail("<" + tag.name + "> has a transform attribute, which is not supported");
-}
-
-// A group's opacity fades its children as one layer, which is not drawn so.
-void refuse_group_opacity(const Tag& tag, const Paint& paint) {
-  if (opacity_value("opacity", paint.opacity) != 1.0)
-    fail("<" + tag.name + "> has opacity " + paint.opacity +
-         ", which is not supported on groups; set fill-opacity or opacity on each path");
-}
-
-// "#rgb", "#rrggbb", names parse_color knows, and rgb(r, g, b) with 0..255.
-Color svg_color(const std::string& text) {
-  if (text.starts_with("rgb(") && text.ends_with(")")) {
-    std::string_view inner(text);
-    inner = inner.substr(4, inner.size() - 5);
-    float c[3] = {};
-    for (int i = 0; i < 3; ++i) {
-      const std::size_t comma = inner.find(',');
-      const std::string part = trim(inner.substr(0, comma));
-      int v = -1;
-      const auto [p, ec] = std::from_chars(part.data(), part.data() + part.size(), v);
-      if (ec != std::errc() || p != part.data() + part.size() || v < 0 || v > 255 ||
-          (i < 2) == (comma == std::string_view::npos))
-        fail("unsupported colour '" + text + "'");
-      c[i] = static_cast<float>(v) / 255.0f;
-      inner = comma == std::string_view::npos ? std::string_view{} : inner.substr(comma + 1);
-    }
-    return {c[0], c[1], c[2], 1.0f};
-  }
-  try {
-    return parse_color(text);
-  } catch (const Error& e) {
-    fail(std::string("fill: ") + e.what());
-  }
-}
-
-// The path's fill colour with fill-opacity and opacity (one path fades
-// alone as one layer would); refuses a stroke rather than drop it.
-Color path_color(const Paint& paint) {
-  if (paint.stroke != "none")
-    fail("<path> has stroke '" + paint.stroke +
-         "': strokes are not drawn (only fills are); convert the stroke to a filled path or set stroke=\"none\"");
-  Color c = svg_color(paint.fill);
-  c.a *=
-      static_cast<float>(opacity_value("fill-opacity", paint.fill_opacity) * opacity_value("opacity", paint.opacity));
-  return c;
-}
-
-// A length in user units: a plain number or "...px"; other units and
-// percentages give 0 (the viewBox decides then).
-double length_attribute(const std::string* value) {
-  if (!value) return 0.0;
-  std::string s = trim(*value);
-  if (s.ends_with("px")) s.resize(s.size() - 2);
-  double v = 0.0;
-  const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (ec != std::errc() || p != s.data() + s.size()) return 0.0;
-  if (!std::isfinite(v) || v <= 0.0) fail("width/height must be positive, got '" + *value + "'");
-  if (v > 16384) fail("width/height " + *value + " is larger than 16384 px");
-  return v;
 }
 
 // True when every point of the contour lies on the line through its first
 // point and the point farthest from it (within tolerance::kConicFlatnessRelative
-// of that distance): it encloses no area.
+// of that distance): a fill of it covers nothing.
 bool on_one_line(const ShapeContour& c) {
   const Vec2 origin = c.pieces.front().points.front();
   Vec2 far = origin;
@@ -299,137 +78,424 @@ bool on_one_line(const ShapeContour& c) {
   return true;
 }
 
-void add_path(ShapeDocument& doc, const std::string& d, const Paint& paint, std::size_t& segments) {
-  Shape shape;
-  shape.color = path_color(paint);
-  try {
-    shape.fill_rule = parse_fill_rule(paint.fill_rule);
-  } catch (const Error& e) {
-    fail(e.what());
+void scale_alpha(Shape& s, float alpha) {
+  s.color.a *= alpha;
+  if (s.stroke) s.stroke->color.a *= alpha;
+  for (std::optional<Gradient>* g : {&s.gradient, &s.stroke_gradient})
+    if (*g)
+      for (GradientStop& stop : (*g)->stops) stop.color.a *= alpha;
+}
+
+// Limits for fan-out: elements visited (through <use>, one element may be
+// visited many times) and <use> nesting.
+constexpr std::size_t kMaxVisits = 1000000;
+constexpr std::size_t kMaxUseDepth = 64;
+
+class Reader {
+ public:
+  Reader(const XmlDocument& doc, const SvgOptions& options) : doc_(doc), specified_(cascade(doc)), options_(options) {
+    for (std::size_t i = 0; i < doc.elements.size(); ++i)
+      if (const std::string* id = doc.elements[i].find("id")) ids_.emplace(*id, i);  // the first wins
   }
-  for (ShapeContour& c : parse_svg_path(d)) {
-    // A line (an open two-point subpath) is drawn by a stroke in SVG; filled,
-    // it would draw nothing without a word.
-    if (on_one_line(c))
-      fail("<path> " + std::to_string(doc.shapes.size() + 1) + ", subpath " +
-           std::to_string(shape.contours.size() + 1) +
-           ": its points lie on one line, so it encloses no area and would draw nothing (only fills are drawn, not "
-           "strokes)");
-    segments += c.pieces.size();
-    if (segments > tolerance::kMaxSegmentsPerDocument)
-      fail("more than " + std::to_string(tolerance::kMaxSegmentsPerDocument) + " path segments in the document");
+
+  ShapeDocument run();
+
+ private:
+  const XmlDocument& doc_;
+  std::vector<Specified> specified_;
+  SvgOptions options_;
+  std::unordered_map<std::string, std::size_t> ids_;
+  ShapeDocument out_;
+  std::size_t segments_ = 0;
+  std::size_t visits_ = 0;
+  std::vector<std::size_t> use_stack_;
+
+  void element(std::size_t i, const Computed& parent, const Affine& ctm, const Viewport& vp);
+  void children(std::size_t i, const Computed& style, const Affine& ctm, const Viewport& vp);
+  void layer(std::size_t i, const Computed& style, const Affine& ctm, const Viewport& vp, bool own_children);
+  void use(std::size_t i, const Computed& style, const Affine& ctm, const Viewport& vp);
+  void viewport_element(std::size_t i, const XmlElement& sizing, const Computed& style, const Affine& ctm,
+                        const Viewport& vp);
+  void shape(std::size_t i, const Computed& style, const Affine& ctm, const Viewport& vp);
+  std::vector<ShapeContour> placed(const XmlElement& e, std::vector<ShapeContour> contours, const Affine& m,
+                                   bool area_only);
+  void check_unsupported(const XmlElement& e, const Computed& style) const;
+  // A paint: none, a colour, or a gradient element (index > 0).
+  struct PaintRef {
+    std::optional<Color> color;
+    std::size_t gradient = 0;
+    bool none() const { return !color && gradient == 0; }
+  };
+  PaintRef paint(const XmlElement& e, const Computed& style, int prop) const;
+  PaintRef gradient_paint(std::size_t g) const;
+  GradientSource gradient_source() const;
+  bool set_paint(Shape& s, const PaintRef& fill, const XmlElement& e, const std::vector<ShapeContour>& user,
+                 const Affine& m, const Viewport& vp, double alpha) const;
+  std::optional<Shape> fill_shape(const XmlElement& e, const Computed& style, const Affine& m, const Viewport& vp,
+                                  const std::vector<ShapeContour>& contours);
+  std::optional<Shape> stroke_shape(const XmlElement& e, const Computed& style, const Affine& m, const Viewport& vp,
+                                    const std::vector<ShapeContour>& contours);
+  const XmlElement* reference(const XmlElement& e, const std::string& href) const;
+  void check_inside(const XmlElement& e, std::size_t first_shape, const Affine& ctm, double x, double y, double w,
+                    double h) const;
+  Color color_value(const XmlElement& e, const std::string& value) const;
+  void fade(const XmlElement& e, std::size_t first_shape, double opacity);
+
+  // Draws through `draw`, then applies the element's opacity to what it drew.
+  template <class Draw>
+  void with_opacity(const XmlElement& e, const Computed& style, Draw draw) {
+    const double opacity = unit_value(e, "opacity", style[kOpacity]);
+    const std::size_t first = out_.shapes.size();
+    draw();
+    fade(e, first, opacity);
+  }
+};
+
+// The token standing for the caller's current colour among computed values.
+constexpr const char* kCallerColor = "-curvetext-current-color";
+
+ShapeDocument Reader::run() {
+  const XmlElement& root = doc_.elements[0];
+  if (root.name != "svg") fail(root, "the first element must be <svg>, got <" + root.name + ">");
+  const auto box = parse_view_box(root);
+  Viewport vp = box ? Viewport{(*box)[2], (*box)[3]} : Viewport{};
+  auto side = [&](const char* name, Axis axis) -> double {
+    const std::string* v = root.find(name);
+    const std::string t = v ? trim(*v) : "";
+    if (t.empty() || t.back() == '%' || t == "auto") return 0.0;  // from the viewBox, else the content
+    const std::optional<double> l = parse_length(t, axis, vp);
+    if (!l) fail(root, std::string(name) + " '" + *v + "' is not a length");
+    if (!(*l > 0.0)) fail(root, "width/height must be positive, got '" + *v + "'");
+    if (*l > 16384) fail(root, "width/height " + *v + " is larger than 16384 px");
+    return *l;
+  };
+  double w = side("width", Axis::X), h = side("height", Axis::Y);
+  Affine user;  // user space to the viewport, y down
+  if (box) {
+    if (w > 0.0 && h == 0.0) h = w * (*box)[3] / (*box)[2];
+    if (h > 0.0 && w == 0.0) w = h * (*box)[2] / (*box)[3];
+    if (w > 0.0) {
+      const std::string* aspect = root.find("preserveAspectRatio");
+      user = view_box_transform(*box, aspect ? *aspect : "", 0, 0, w, h, position(root));
+    } else {
+      user = Affine::translate(-(*box)[0], -(*box)[1]);
+      w = (*box)[2];
+      h = (*box)[3];
+    }
+  } else if (w > 0.0 && h > 0.0) {
+    vp = {w, h};
+  }
+  if (box || (w > 0.0 && h > 0.0)) {
+    out_.view.add({0, -h});
+    out_.view.add({w, 0});
+  }
+  if (!box || root.find("width") || root.find("height")) {
+    out_.width_px = w;
+    out_.height_px = h;
+  }
+  const Affine mirror{1, 0, 0, -1, 0, 0};
+  const Computed style = compute(initial_style(kCallerColor), specified_[0]);
+  if (style[kDisplay] == "none") return std::move(out_);
+  check_unsupported(root, style);
+  with_opacity(root, style, [&] { children(0, style, mirror * user, vp); });
+  return std::move(out_);
+}
+
+void Reader::element(std::size_t i, const Computed& parent, const Affine& ctm, const Viewport& vp) {
+  const XmlElement& e = doc_.elements[i];
+  if (++visits_ > kMaxVisits) fail(e, "more than " + std::to_string(kMaxVisits) + " elements drawn (through <use>)");
+  if (e.name.starts_with("{")) return;  // another namespace's element: not rendered
+  if (refused_element(e.name)) fail(e, "<" + e.name + "> is not supported");
+  if (definition_element(e.name)) return;
+  if (e.name != "g" && e.name != "a" && e.name != "use" && e.name != "svg" && !is_shape_element(e.name))
+    return;  // SVG: unknown elements are not rendered
+  const Computed style = compute(parent, specified_[i]);
+  if (style[kDisplay] == "none") return;
+  Affine m = ctm;
+  if (const std::string* t = e.find("transform")) m = ctm * parse_transform(*t, position(e));
+  if (!(std::abs(m.determinant()) > 0.0) || !std::isfinite(m.determinant())) return;  // SVG: not rendered
+  check_unsupported(e, style);
+  if (e.name == "use") return use(i, style, m, vp);
+  if (e.name == "svg") return viewport_element(i, e, style, m, vp);
+  if (is_shape_element(e.name)) {
+    for (std::size_t c : e.children)  // animation of the shape
+      if (refused_element(doc_.elements[c].name))
+        fail(doc_.elements[c], "<" + doc_.elements[c].name + "> is not supported");
+    return shape(i, style, m, vp);
+  }
+  with_opacity(e, style, [&] { children(i, style, m, vp); });
+}
+
+void Reader::children(std::size_t i, const Computed& style, const Affine& ctm, const Viewport& vp) {
+  for (std::size_t c : doc_.elements[i].children) element(c, style, ctm, vp);
+}
+
+// Opacity on what one element drew: exact for one shape (its alpha); a
+// group of several is one layer composited at that opacity, which shapes
+// drawn one by one cannot show where they overlap: refused.
+void Reader::fade(const XmlElement& e, std::size_t first_shape, double opacity) {
+  const std::size_t n = out_.shapes.size() - first_shape;
+  if (opacity == 1.0 || n == 0) return;
+  if (n > 1)
+    fail(e, "opacity " + shapes_detail::number_text(opacity) + " on <" + e.name + "> of " + std::to_string(n) +
+                " shapes is not supported (a group's opacity needs a layer); set it on each shape");
+  scale_alpha(out_.shapes.back(), static_cast<float>(opacity));
+}
+
+void Reader::check_unsupported(const XmlElement& e, const Computed& style) const {
+  for (int p : {kClipPath, kMask, kFilter})
+    if (style[p] != "none") fail(e, std::string(prop_name(p)) + " '" + style[p] + "' is not supported");
+  if (style[kMixBlendMode] != "normal") fail(e, "mix-blend-mode '" + style[kMixBlendMode] + "' is not supported");
+  if (style[kTransformProperty] != "none")
+    fail(e, "the CSS transform property is not supported (the transform attribute is)");
+}
+
+const XmlElement* Reader::reference(const XmlElement& e, const std::string& href) const {
+  const std::string h = trim(href);
+  if (h.empty() || h[0] != '#') fail(e, "reference '" + href + "' is not supported (only #id in the same document)");
+  const auto it = ids_.find(h.substr(1));
+  return it == ids_.end() ? nullptr : &doc_.elements[it->second];
+}
+
+void Reader::use(std::size_t i, const Computed& style, const Affine& m, const Viewport& vp) {
+  const XmlElement& e = doc_.elements[i];
+  const std::string* href = e.find("href");
+  if (!href) href = e.find("xlink:href");
+  if (!href) return;  // refers to nothing: draws nothing
+  const XmlElement* target = reference(e, *href);
+  if (!target) return;  // SVG 2: a missing reference is not rendered
+  const std::size_t t = static_cast<std::size_t>(target - doc_.elements.data());
+  bool cycle = std::find(use_stack_.begin(), use_stack_.end(), t) != use_stack_.end();
+  for (std::size_t up = i; up != 0 && !cycle;) cycle = (up = doc_.elements[up].parent) == t;
+  if (cycle || t == i) fail(e, "<use> refers to " + *href + ", which contains it (a cycle)");
+  if (use_stack_.size() >= kMaxUseDepth) fail(e, "<use> nested deeper than " + std::to_string(kMaxUseDepth));
+  const Affine placed = m * Affine::translate(parse_length(e.find("x") ? *e.find("x") : "0", Axis::X, vp).value_or(0),
+                                              parse_length(e.find("y") ? *e.find("y") : "0", Axis::Y, vp).value_or(0));
+  use_stack_.push_back(t);
+  with_opacity(e, style, [&] {
+    if (target->name == "symbol" || target->name == "svg") {
+      const Computed own = compute(style, specified_[t]);
+      if (own[kDisplay] == "none") return;
+      check_unsupported(*target, own);
+      viewport_element(t, e, own, placed, vp);
+    } else {
+      element(t, style, placed, vp);
+    }
+  });
+  use_stack_.pop_back();
+}
+
+// A nested <svg> (sized by itself) or a <symbol> or <svg> placed by <use>
+// (sized by the <use>): a new viewport with its viewBox. Content reaching
+// outside a clipping viewport (overflow hidden, their default) is refused.
+void Reader::viewport_element(std::size_t t, const XmlElement& sizing, const Computed& style, const Affine& m,
+                              const Viewport& vp) {
+  const XmlElement& v = doc_.elements[t];
+  auto len = [&](const char* name, Axis axis, const char* fallback) {
+    const std::string* s = sizing.find(name);
+    if (!s && &sizing != &v) s = v.find(name);
+    const std::optional<double> l = parse_length(s && trim(*s) != "auto" ? *s : fallback, axis, vp);
+    if (!l) fail(sizing, std::string(name) + " '" + *s + "' is not a length");
+    return *l;
+  };
+  const bool placed_by_use = &sizing != &v;
+  const double x = placed_by_use ? 0.0 : len("x", Axis::X, "0"), y = placed_by_use ? 0.0 : len("y", Axis::Y, "0");
+  const double w = len("width", Axis::X, "100%"), h = len("height", Axis::Y, "100%");
+  if (!(w > 0.0) || !(h > 0.0)) return;
+  const auto box = parse_view_box(v);
+  Affine inner = m * Affine::translate(x, y);
+  Viewport inner_vp{w, h};
+  if (box) {
+    const std::string* aspect = v.find("preserveAspectRatio");
+    inner = m * view_box_transform(*box, aspect ? *aspect : "", x, y, w, h, position(v));
+    inner_vp = {(*box)[2], (*box)[3]};
+  }
+  const std::size_t first = out_.shapes.size();
+  with_opacity(v, style, [&] { children(t, style, inner, inner_vp); });
+  const std::optional<std::string>& overflow = specified_[t][kOverflow];
+  if (!overflow || (*overflow != "visible" && *overflow != "auto")) check_inside(v, first, m, x, y, w, h);
+}
+
+void Reader::check_inside(const XmlElement& e, std::size_t first_shape, const Affine& ctm, double x, double y, double w,
+                          double h) const {
+  const Affine back = ctm.inverse();
+  const double slack = tolerance::kConicFlatnessRelative * std::max(w, h);
+  for (std::size_t s = first_shape; s < out_.shapes.size(); ++s)
+    for (const ShapeContour& c : out_.shapes[s].contours)
+      for (const RationalBezier& piece : c.pieces)
+        for (Vec2 p : piece.points) {
+          const Vec2 q = back.apply(p);
+          if (q.x < x - slack || q.x > x + w + slack || q.y < y - slack || q.y > y + h + slack)
+            fail(e, "<" + e.name +
+                        "> content reaches outside its viewport, which clips it; clipping is not "
+                        "supported (overflow=\"visible\" draws it unclipped)");
+        }
+}
+
+Color Reader::color_value(const XmlElement& e, const std::string& value) const {
+  if (value == kCallerColor || lower(value) == "currentcolor") return options_.current_color;
+  const std::optional<Color> c = parse_css_color(value);
+  if (!c) fail(e, "color '" + value + "' is not a colour");
+  return *c;
+}
+
+Reader::PaintRef Reader::paint(const XmlElement& e, const Computed& style, int prop) const {
+  std::string v = style[prop];
+  const std::string name = prop_name(prop);
+  if (lower(v).starts_with("url(")) {
+    const std::size_t close = v.find(')');
+    if (close == std::string::npos) fail(e, name + " '" + v + "' is malformed");
+    std::string ref = trim(std::string_view(v).substr(4, close - 4));
+    if (ref.size() >= 2 && (ref.front() == '"' || ref.front() == '\'')) ref = ref.substr(1, ref.size() - 2);
+    if (const XmlElement* target = reference(e, ref)) {
+      if (target->name == "linearGradient" || target->name == "radialGradient")
+        return gradient_paint(static_cast<std::size_t>(target - doc_.elements.data()));
+      fail(e, name + " refers to <" + target->name + ">, which is not supported as paint");
+    }
+    v = trim(std::string_view(v).substr(close + 1));  // the fallback, else none
+    if (v.empty()) return {};
+  }
+  const std::string l = lower(v);
+  if (l == "none") return {};
+  if (l == "currentcolor") return {color_value(e, style[kColor])};
+  if (l.starts_with("context-")) fail(e, name + " '" + v + "' is not supported");
+  const std::optional<Color> c = parse_css_color(v);
+  if (!c) fail(e, name + " '" + v + "' is not a colour");
+  return {c};
+}
+
+GradientSource Reader::gradient_source() const {
+  return {doc_, specified_, [this](const XmlElement& from, const std::string& href) { return reference(from, href); },
+          [this](const XmlElement& at, const std::string& value) { return color_value(at, value); }, kCallerColor};
+}
+
+// A gradient whose stops all have one colour is that colour (and one without
+// stops is none, as SVG says).
+Reader::PaintRef Reader::gradient_paint(std::size_t g) const {
+  const std::vector<GradientStop> stops = gradient_stops(gradient_source(), g);
+  if (stops.empty()) return {};
+  for (const GradientStop& k : stops) {
+    const Color& a = k.color;
+    const Color& b = stops[0].color;
+    if (a.r != b.r || a.g != b.g || a.b != b.b || a.a != b.a) return {std::nullopt, g};
+  }
+  return {stops[0].color};
+}
+
+// The fill's paint as the shape's colour or gradient, times `alpha`; false
+// when it paints nothing.
+bool Reader::set_paint(Shape& s, const PaintRef& fill, const XmlElement& e, const std::vector<ShapeContour>& user,
+                       const Affine& m, const Viewport& vp, double alpha) const {
+  if (fill.color) {
+    s.color = *fill.color;
+  } else {
+    const GradientSource source = gradient_source();
+    std::optional<Gradient> g =
+        make_gradient(source, fill.gradient, e, user, m, vp, gradient_stops(source, fill.gradient));
+    if (!g) return false;
+    if (g->stops.size() == 1)
+      s.color = g->stops[0].color;
+    else
+      s.gradient = std::move(g);
+  }
+  scale_alpha(s, static_cast<float>(alpha));
+  return s.gradient || s.color.a > 0.0f;
+}
+
+// The element's contours in document space, each checked; `area_only`
+// leaves out those that enclose nothing (a fill of them draws nothing).
+std::vector<ShapeContour> Reader::placed(const XmlElement& e, std::vector<ShapeContour> contours, const Affine& m,
+                                         bool area_only) {
+  std::vector<ShapeContour> out;
+  for (ShapeContour& c : contours) {
     for (RationalBezier& piece : c.pieces)
-      for (Vec2& q : piece.points) q.y = -q.y;
-    shape.contours.push_back(std::move(c));
+      for (Vec2& q : piece.points) {
+        q = m.apply(q);
+        shapes_detail::check_point(q, "SVG: " + position(e) + "<" + e.name + ">");
+      }
+    if (area_only && on_one_line(c)) continue;
+    segments_ += c.pieces.size();
+    if (segments_ > tolerance::kMaxSegmentsPerDocument)
+      fail(e, "more than " + std::to_string(tolerance::kMaxSegmentsPerDocument) + " path segments in the document");
+    out.push_back(std::move(c));
   }
-  doc.shapes.push_back(std::move(shape));
+  return out;
+}
+
+// The stroke as a shape that is not filled, or nothing.
+std::optional<Shape> Reader::stroke_shape(const XmlElement& e, const Computed& style, const Affine& m,
+                                          const Viewport& vp, const std::vector<ShapeContour>& contours) {
+  const PaintRef stroke = paint(e, style, kStroke);
+  if (stroke.none()) return std::nullopt;
+  const std::optional<StrokeStyle> st = stroke_style(e, style, m, vp);
+  if (!st) return std::nullopt;
+  // The paint is set as a fill's, then moved to the stroke.
+  Shape paint_of;
+  const double alpha =
+      unit_value(e, "stroke-opacity", style[kStrokeOpacity]) * unit_value(e, "opacity", style[kOpacity]);
+  if (!set_paint(paint_of, stroke, e, contours, m, vp, alpha)) return std::nullopt;
+  Shape s;
+  s.filled = false;
+  s.stroke = ShapeStroke{*st, paint_of.color};
+  s.stroke_gradient = std::move(paint_of.gradient);
+  s.contours = placed(e, contours, m, false);
+  if (s.contours.empty()) return std::nullopt;
+  return s;
+}
+
+std::optional<Shape> Reader::fill_shape(const XmlElement& e, const Computed& style, const Affine& m, const Viewport& vp,
+                                        const std::vector<ShapeContour>& contours) {
+  const PaintRef fill = paint(e, style, kFill);
+  if (fill.none()) return std::nullopt;
+  Shape s;
+  const double alpha = unit_value(e, "fill-opacity", style[kFillOpacity]) * unit_value(e, "opacity", style[kOpacity]);
+  if (!set_paint(s, fill, e, contours, m, vp, alpha)) return std::nullopt;
+  try {
+    s.fill_rule = parse_fill_rule(style[kFillRule]);
+  } catch (const Error& err) {
+    fail(e, err.what());
+  }
+  s.contours = placed(e, contours, m, true);
+  if (s.contours.empty()) return std::nullopt;
+  return s;
+}
+
+// Fill and stroke as two shapes in paint order. With opacity below 1 the
+// element is one layer of both, which is refused where both draw (fade).
+void Reader::shape(std::size_t i, const Computed& style, const Affine& m, const Viewport& vp) {
+  const XmlElement& e = doc_.elements[i];
+  if (style[kVisibility] != "visible") return;
+  const std::vector<ShapeContour> contours = element_geometry(e, vp);
+  if (contours.empty()) return;
+  if (e.name != "rect" && e.name != "circle" && e.name != "ellipse")
+    for (int p : {kMarkerStart, kMarkerMid, kMarkerEnd})
+      if (style[p] != "none") fail(e, std::string(prop_name(p)) + " '" + style[p] + "': markers are not supported");
+  const double opacity = unit_value(e, "opacity", style[kOpacity]);
+  Computed opaque = style;
+  opaque[kOpacity] = "1";  // applied once, by fade, to what the element drew
+  std::optional<Shape> fill = fill_shape(e, opaque, m, vp, contours);
+  std::optional<Shape> stroke = stroke_shape(e, opaque, m, vp, contours);
+  const std::size_t first = out_.shapes.size();
+  const bool stroke_first = style[kPaintOrder].starts_with("stroke");
+  if (stroke && stroke_first) out_.shapes.push_back(std::move(*stroke));
+  if (fill) out_.shapes.push_back(std::move(*fill));
+  if (stroke && !stroke_first) out_.shapes.push_back(std::move(*stroke));
+  fade(e, first, opacity);
 }
 
 }  // namespace
+}  // namespace svg
 
-ShapeDocument parse_svg(std::string_view text) {
-  XmlScanner scanner(text);
-  Tag tag;
-  ShapeDocument doc;
-  bool in_svg = false;
-  std::vector<Paint> stack;  // paint of each open <svg>/<g>
-  // Inside <defs>, <clipPath>, <mask>, ... paths are not drawn directly.
-  std::string skipping;
-  int skip_depth = 0;
-  std::size_t segments = 0;  // in the document so far
-  while (scanner.next(tag)) {
-    if (skip_depth > 0) {
-      if (tag.name == skipping && !tag.self_closing) skip_depth += tag.closing ? -1 : 1;
-      continue;
-    }
-    if (!in_svg) {
-      if (tag.name != "svg" || tag.closing) fail("the first element must be <svg>, got <" + tag.name + ">");
-      in_svg = true;
-      doc.width_px = length_attribute(tag.find("width"));
-      doc.height_px = length_attribute(tag.find("height"));
-      if (const std::string* vb = tag.find("viewBox")) {
-        std::vector<double> v;
-        std::string_view rest = *vb;
-        for (;;) {
-          while (!rest.empty() && (rest.front() == ' ' || rest.front() == ',' || rest.front() == '\t' ||
-                                   rest.front() == '\n' || rest.front() == '\r'))
-            rest.remove_prefix(1);
-          if (rest.empty()) break;
-          double x = 0.0;
-          const auto [p, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), x);
-          if (ec != std::errc()) fail("viewBox '" + *vb + "' is not four numbers");
-          v.push_back(x);
-          rest.remove_prefix(static_cast<std::size_t>(p - rest.data()));
-        }
-        if (v.size() != 4) fail("viewBox '" + *vb + "' is not four numbers");
-        for (double c : v) shapes_detail::check_coordinate(c, "SVG viewBox");
-        if (!(v[2] > 0 && v[3] > 0)) fail("viewBox '" + *vb + "' needs a positive width and height");
-        // Mirrored: SVG y in [min-y, min-y + height] is y-up [-(min-y + height), -min-y].
-        doc.view.add({v[0], -(v[1] + v[3])});
-        doc.view.add({v[0] + v[2], -v[1]});
-      } else if (doc.width_px > 0 && doc.height_px > 0) {
-        doc.view.add({0, -doc.height_px});
-        doc.view.add({doc.width_px, 0});
-      }
-      Paint root;
-      apply_paint(tag, root);
-      refuse_group_opacity(tag, root);
-      if (root.display == "none") break;
-      stack.push_back(root);
-      if (tag.self_closing) break;
-      continue;
-    }
-    if (tag.closing) {
-      if (tag.name == "svg" || tag.name == "g") {
-        if (stack.empty()) fail("unbalanced </" + tag.name + ">");
-        stack.pop_back();
-        if (stack.empty()) break;  // the end of the root <svg>
-      }
-      continue;
-    }
-    if (tag.name == "defs" || tag.name == "clipPath" || tag.name == "mask" || tag.name == "pattern" ||
-        tag.name == "marker" || tag.name == "symbol") {
-      if (!tag.self_closing) {
-        skipping = tag.name;
-        skip_depth = 1;
-      }
-      continue;
-    }
-    if (tag.name == "g" || tag.name == "svg") {
-      if (tag.name == "svg") fail("nested <svg> elements are not supported");
-      Paint p = stack.back();
-      apply_paint(tag, p);
-      refuse_group_opacity(tag, p);
-      if (p.display == "none" && !tag.self_closing) {  // not drawn, nor anything inside
-        skipping = tag.name;
-        skip_depth = 1;
-      } else if (!tag.self_closing) {
-        stack.push_back(p);
-      }
-      continue;
-    }
-    if (tag.name == "path") {
-      Paint p = stack.back();
-      apply_paint(tag, p);
-      const std::string* d = tag.find("d");
-      if (!d || p.display == "none") continue;  // draws nothing
-      if (p.fill == "none" && p.stroke == "none") continue;
-      add_path(doc, *d, p, segments);
-      continue;
-    }
-    static const char* const kRefused[] = {"rect", "circle", "ellipse", "line",   "polyline", "polygon",
-                                           "text", "image",  "use",     "switch", "a"};
-    for (const char* name : kRefused)
-      if (tag.name == name)
-        fail("<" + tag.name + "> is not supported (only <path> elements are read; convert shapes to paths)");
-    // Everything else (title, desc, metadata, defs, style, ...) does not draw
-    // by itself here; it is skipped.
-  }
-  if (!in_svg) fail("no <svg> element");
-  return doc;
+ShapeDocument parse_svg(std::string_view text, const SvgOptions& options) {
+  const svg::XmlDocument doc = svg::parse_xml(text);
+  return svg::Reader(doc, options).run();
 }
 
-ShapeDocument read_shape_file(const std::string& path) {
+ShapeDocument parse_svg(std::string_view text) { return parse_svg(text, SvgOptions{}); }
+
+ShapeDocument read_shape_file(const std::string& path) { return read_shape_file(path, SvgOptions{}); }
+
+ShapeDocument read_shape_file(const std::string& path, const SvgOptions& options) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(ErrorCode::Io, "cannot read shape file " + path);
   // Chunk by chunk up to the limit: an endless file (/dev/zero) stops there.
@@ -450,7 +516,7 @@ ShapeDocument read_shape_file(const std::string& path) {
   };
   try {
     if (ends_with(".json")) return parse_shape_json(text);
-    if (ends_with(".svg")) return parse_svg(text);
+    if (ends_with(".svg")) return parse_svg(text, options);
   } catch (const Error& e) {
     throw Error(e.code(), path + ": " + e.what());
   }

@@ -173,14 +173,17 @@ class PathParser {
     return p;
   }
 
-  void finish_subpath() {
+  // `closed`: ended by Z (a stroke joins its ends) rather than by M or the
+  // end of the data (a stroke caps them); a fill closes both.
+  void finish_subpath(bool closed = false) {
+    current_.closed = closed;
     if (!current_.pieces.empty()) contours_.push_back(std::move(current_));
     current_ = {};
   }
 
   void close_path() {
-    // Filling closes every subpath anyway; Z also moves the pen back.
-    finish_subpath();
+    // Z also moves the pen back.
+    finish_subpath(true);
     pen_ = start_;
     last_ = 'Z';
   }

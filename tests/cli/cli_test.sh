@@ -298,7 +298,13 @@ expect_error "render: markup nested 1000 deep" 1 "nested deeper than 64" -- rend
 python3 -c "import sys; sys.stdout.write('a' + '\u0301' * 20000)" >"$tmp/marks.txt"
 expect_error "render: a + 20000 combining marks" 1 "grapheme cluster of 20001" -- render --size 16 --text-file "$tmp/marks.txt" -o "$tmp/out.png"
 printf '<svg width="100" height="100"><path d="M10 10 L90 90 L10 90 Z" fill="none" stroke="black"/></svg>' >"$tmp/stroke.svg"
-expect_error "shape: SVG stroke refused by name" 1 "stroke 'black'" -- shape --input "$tmp/stroke.svg" -o "$tmp/out.png"
+# An SVG stroke is drawn: a triangle's outline 1 unit wide has about 273 px of ink at 1 px per unit.
+if timeout 60 "$CURVETEXT" shape --input "$tmp/stroke.svg" -o "$tmp/stroke.png" 2>"$tmp/stderr" &&
+   read -r _ _ _ ink _ <<<"$(python3 "$(dirname "$0")/png_diff.py" "$tmp/stroke.png" "$tmp/stroke.png")" &&
+   [ "$ink" -gt $((250 * 255)) ] && [ "$ink" -lt $((300 * 255)) ]; then ok "shape: SVG stroke drawn (ink $ink)"
+else bad "shape: SVG stroke: $(cat "$tmp/stderr") ink ${ink:-?}"; fi
+printf '<svg width="100" height="100"><path d="M10 10 L90 90" stroke="black" transform="scale(1 2)"/></svg>' >"$tmp/stroke2.svg"
+expect_error "shape: SVG stroke under a non-uniform scale refused by name" 1 "scales unevenly" -- shape --input "$tmp/stroke2.svg" -o "$tmp/out.png"
 expect_error "layout: markup error names its byte" 1 "markup, byte 7: </b> does not close <i>" -- layout --size 16 --markup --text "<b><i>x</b></i>" --json
 # Markup nests: the bold word inside a coloured span is still bold.
 if timeout 60 "$CURVETEXT" layout --size 16 --markup --text "<color=red>red <b>bold</b></color>" --json >"$tmp/tree.json" 2>"$tmp/stderr" &&

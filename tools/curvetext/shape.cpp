@@ -28,6 +28,7 @@ void parse_size(const std::string& text, int& width, int& height) {
 void shape(const std::vector<std::string>& arguments) {
   std::optional<std::string> input, output;
   std::optional<Color> foreground;
+  SvgOptions svg;
   ShapeImageOptions options;
   StyleCli style(/*scale_is_transform=*/false);
 
@@ -47,6 +48,8 @@ void shape(const std::vector<std::string>& arguments) {
         throw Error(ErrorCode::InvalidArgument, "--scale must be a positive number of pixels per unit");
     } else if (a == "--fg")
       foreground = parse_color(args.value());
+    else if (a == "--current-color")
+      svg.current_color = parse_color(args.value());
     else if (a == "--jobs")
       throw UsageError{kJobsAlone};
     else
@@ -57,10 +60,12 @@ void shape(const std::vector<std::string>& arguments) {
   if (output_format(*output, std::nullopt) != OutputFormat::Png)
     throw Error(ErrorCode::InvalidArgument, "cannot write '" + *output + "': shape writes PNG only");
 
-  ShapeDocument doc = read_shape_file(*input);
+  ShapeDocument doc = read_shape_file(*input, svg);
   if (foreground)
     for (Shape& s : doc.shapes) {
       s.color = *foreground;
+      s.gradient.reset();
+      s.stroke_gradient.reset();
       if (s.stroke) s.stroke->color = *foreground;
     }
   // Everything that can be checked without a GL device is checked first.

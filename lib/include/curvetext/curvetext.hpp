@@ -5,8 +5,9 @@
 //   one line you position glyph by glyph shape_line (shaping.hpp) -> DrawBatch (draw_batch.hpp)
 //   a PNG without a window               HeadlessContext (headless.hpp) + render_text_image
 //                                        (text_image.hpp) or render_paragraph_image (paragraph_image.hpp)
-//   2D curved shapes                     shapes.hpp -> render_shape_image (shape_image.hpp), or
-//                                        build_mesh (mesh.hpp) -> DrawBatch::from_mesh
+//   2D curved shapes, SVG icons          shapes.hpp (parse_svg, read_shape_file) -> ShapeDrawing
+//                                        (shape_drawing.hpp) in your render loop, render_shape_image
+//                                        (shape_image.hpp) for a PNG, or build_mesh (mesh.hpp)
 //   strokes (lines with a width, dashes) stroke_outline (stroke.hpp) -> build_mesh, or a Shape's stroke
 // Each header below is self-contained and may be included alone.
 #pragma once
@@ -33,8 +34,10 @@
 #include "curvetext/markup.hpp"
 #include "curvetext/mesh.hpp"
 #include "curvetext/outline.hpp"
+#include "curvetext/paint.hpp"
 #include "curvetext/paragraph_image.hpp"
 #include "curvetext/renderer.hpp"
+#include "curvetext/shape_drawing.hpp"
 #include "curvetext/shape_image.hpp"
 #include "curvetext/shapes.hpp"
 #include "curvetext/shaping.hpp"

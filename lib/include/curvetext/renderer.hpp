@@ -19,6 +19,8 @@
 
 namespace curvetext {
 
+struct Gradient;  // paint.hpp
+
 enum class AntiAliasing {
   None,    // in/out test only
   Curves,  // the paper's single pass: curved edges antialiased, straight edges aliased
@@ -119,6 +121,9 @@ struct DrawOptions {
   // discards (outside its curve) in orange, and every triangle's edges in
   // blue. vbaa / msaa draw as full while debugging.
   bool debug = false;
+  // Paints with this gradient (paint.hpp) instead of `color`, in full, vbaa
+  // (without a ring) and msaa; not owned, read during draw() only.
+  const Gradient* gradient = nullptr;
 
   DrawOptions() = default;
   DrawOptions(Color color_, AntiAliasing aa = AntiAliasing::Full, CurveMode mode = CurveMode::Exact)

@@ -4,7 +4,7 @@
 // (stroke_style.hpp; stroke.hpp builds its region). Two inputs:
 //  - JSON with NURBS curves (any degree, weights, knot vector) and lines
 //    (docs/shapes/README.md gives the format);
-//  - SVG path data (M L H V Q T C S A Z) and a minimal SVG file reader.
+//  - SVG path data (M L H V Q T C S A Z) and SVG documents (docs/svg.md).
 // Exact where it can be: lines, quadratic NURBS/Beziers (rational or not) and
 // SVG elliptical arcs become exact rational quadratics (docs/design.md section 3).
 // Polynomial cubics use cubic_to_quadratics (curves.hpp); rational cubics and
@@ -22,6 +22,7 @@
 #include "curvetext/color.hpp"
 #include "curvetext/export.hpp"
 #include "curvetext/outline.hpp"
+#include "curvetext/paint.hpp"
 #include "curvetext/stroke_style.hpp"
 
 namespace curvetext {
@@ -70,9 +71,14 @@ struct Shape {
   std::vector<ShapeContour> contours;
   FillRule fill_rule = FillRule::NonZero;
   Color color{0, 0, 0, 1};  // the fill's
-  bool filled = true;       // false: SVG fill="none"; the shape draws only its stroke
+  // Paints the fill instead of `color` when set; its from_outline maps
+  // document coordinates (y-up) to the gradient's.
+  std::optional<Gradient> gradient;
+  bool filled = true;  // false: SVG fill="none"; the shape draws only its stroke
   std::optional<ShapeStroke> stroke;
   PaintOrder paint_order = PaintOrder::FillStroke;
+  // Paints the stroke instead of its colour when set (as `gradient` the fill).
+  std::optional<Gradient> stroke_gradient;
 };
 
 // Coordinates are y-up (SVG's y-down input is mirrored when read).
@@ -162,13 +168,22 @@ CURVETEXT_API Outline even_odd_to_nonzero(const Outline& outline);
 CURVETEXT_API ShapeDocument parse_shape_json(std::string_view text);
 // SVG path data in its own coordinates (no mirroring). Arcs become exact conics.
 CURVETEXT_API std::vector<ShapeContour> parse_svg_path(std::string_view d);
-// Minimal SVG: <svg width height viewBox> and its <path d fill fill-rule>
-// elements (also inside <g>, which is otherwise ignored); a `transform`
-// attribute is refused rather than ignored.
+// An SVG document: the static subset icons and drawings use (docs/svg.md):
+// shapes and paths, transforms, viewBox, <use>/<symbol>/<defs>, the CSS
+// cascade of <style> sheets, style and presentation attributes, colours,
+// opacity. Every part it does not draw (strokes, gradients, filters, text,
+// ...) is refused by name with its line and column, never dropped.
+struct SvgOptions {
+  // The value of `currentColor` where the document does not set `color`
+  // (icon themes leave it to the toolkit: its text colour).
+  Color current_color{0, 0, 0, 1};
+};
+CURVETEXT_API ShapeDocument parse_svg(std::string_view text, const SvgOptions& options);
 CURVETEXT_API ShapeDocument parse_svg(std::string_view text);
 // By extension: .json or .svg (any case). Throws Error(Io) when unreadable,
 // Error(InvalidArgument) for another extension, and the readers' errors
 // prefixed with the path.
+CURVETEXT_API ShapeDocument read_shape_file(const std::string& path, const SvgOptions& options);
 CURVETEXT_API ShapeDocument read_shape_file(const std::string& path);
 
 }  // namespace curvetext
