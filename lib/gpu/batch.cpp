@@ -1,5 +1,6 @@
 // Glyph cache (packed meshes per glyph and level of detail, LRU within a byte
 // budget, with GPU buffers per glyph for instanced blocks) and draw batches.
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdio>
@@ -50,8 +51,10 @@ GlyphCache::Impl::Packed GlyphCache::Impl::get(const Font& font, std::uint32_t g
       break;
     }
   }
+  bool mesh_fresh = false;  // scratch.mesh holds this glyph's mesh
   if (entry == lru.end()) {
     ++stats.misses;
+    mesh_fresh = true;
     Outline& outline = scratch.outline;
     font.glyph_outline(glyph_id, outline);
     int lod = 0;
@@ -80,6 +83,19 @@ GlyphCache::Impl::Packed GlyphCache::Impl::get(const Font& font, std::uint32_t g
     stats.bytes += glyph.buffers->bytes;
     stats.gpu_bytes += glyph.buffers->bytes;
   }
+  if (upload && !glyph.bands.tried && !glyph.packed.empty()) {
+    if (!mesh_fresh) {
+      // Packed without bands before (a GLES2 block): the mesh again.
+      font.glyph_outline(glyph_id, scratch.outline);
+      MeshOptions options;
+      if (entry->key.lod != 0) options.cubic_tolerance = cubic_tolerance_for_lod(entry->key.lod, upem);
+      build_mesh(scratch.outline, options, scratch.mesh);
+    }
+    add_bands(glyph);
+    entry->cost += 2 * glyph.bands.bytes;  // the page's texels on the CPU and on the GPU
+    stats.bytes += 2 * glyph.bands.bytes;
+    stats.gpu_bytes += glyph.bands.bytes;
+  }
   Packed result = entry->glyph;
   evict();
   return result;
@@ -91,10 +107,56 @@ void GlyphCache::Impl::evict() {
     const Entry& victim = lru.back();
     stats.bytes -= victim.cost;
     if (victim.glyph->buffers) stats.gpu_bytes -= victim.glyph->buffers->bytes;
+    stats.gpu_bytes -= victim.glyph->bands.bytes;
     stats.glyphs -= 1;
     index.erase(victim.key);
     lru.pop_back();
   }
+}
+
+void GlyphCache::Impl::add_bands(gpu::CachedGlyph& glyph) {
+  glyph.bands.tried = true;
+  gpu::build_bands(scratch.mesh, scratch.bands, scratch.band);
+  const gpu::GlyphBands& b = scratch.bands;
+  constexpr std::size_t kWidth = gpu::kBandTextureWidth;
+  constexpr std::size_t kPageTexels = gpu::kMaxBandPageRows * kWidth;
+  if (b.empty() || b.texels.size() > kPageTexels) return;  // drawn through its mesh
+  if (!band_page || band_page->used + b.texels.size() > kPageTexels) band_page = std::make_shared<gpu::BandPage>();
+  gpu::BandPage& page = *band_page;
+  const std::size_t first = page.used, end = first + b.texels.size();
+  const int rows = static_cast<int>((end + kWidth - 1) / kWidth);
+  const bool grow = rows > page.rows;
+  if (grow) {
+    page.rows = std::max(rows, std::min(std::max(2 * page.rows, 8), gpu::kMaxBandPageRows));
+    page.texels.resize(static_cast<std::size_t>(page.rows) * kWidth);
+  }
+  std::copy(b.texels.begin(), b.texels.end(), page.texels.begin() + static_cast<std::ptrdiff_t>(first));
+  page.used = end;
+  if (page.texture == 0) glGenTextures(1, &page.texture);
+  if (page.texture == 0) throw Error(ErrorCode::Gl, "glGenTextures failed (is a GL context current?)");
+  {
+    const gpu::TextureUploadScope bound(page.texture);
+    if (grow) {
+      // Re-specified whole: blocks drawing from the page keep its texture name.
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, static_cast<GLsizei>(kWidth), page.rows, 0, GL_RGBA, GL_FLOAT,
+                   page.texels.data());
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    } else {
+      const int row0 = static_cast<int>(first / kWidth);
+      glTexSubImage2D(GL_TEXTURE_2D, 0, 0, row0, static_cast<GLsizei>(kWidth), rows - row0, GL_RGBA, GL_FLOAT,
+                      page.texels.data() + static_cast<std::size_t>(row0) * kWidth);
+    }
+  }
+  if (GLenum err = glGetError(); err != GL_NO_ERROR)
+    throw Error(ErrorCode::Gl, "band texture upload failed (GL error 0x" + std::to_string(err) + ")");
+  glyph.bands.page = band_page;
+  glyph.bands.first = static_cast<int>(first);
+  glyph.bands.levels = b.levels;
+  glyph.bands.box = b.box;
+  glyph.bands.bytes = b.bytes();
 }
 
 GlyphCache::GlyphCache(std::size_t budget_bytes) : impl_(std::make_unique<Impl>(budget_bytes)) {}
@@ -237,6 +299,33 @@ std::unique_ptr<BatchImpl> expanded_block(std::span<const CacheImpl::Packed> gly
   return upload(std::move(packed));
 }
 
+// One pass exact area: per inked placement its glyph's box and (offset,
+// first texel, levels), grouped by band page (shaders/bands.vert.glsl). Left
+// out (the block drawn through its meshes) when a glyph has no bands.
+void band_instances(std::span<const CacheImpl::Packed> glyphs, std::span<const PlacedGlyph> placed, BatchImpl& impl) {
+  std::vector<std::pair<std::shared_ptr<const BandPage>, std::vector<float>>> pages;
+  for (std::size_t i = 0; i < placed.size(); ++i) {
+    const CachedGlyph& g = *glyphs[i];
+    if (g.packed.empty()) continue;
+    if (!g.bands.page) return;
+    auto it = std::find_if(pages.begin(), pages.end(), [&](const auto& p) { return p.first == g.bands.page; });
+    if (it == pages.end()) it = pages.insert(pages.end(), {g.bands.page, {}});
+    const Box& box = g.bands.box;
+    it->second.insert(it->second.end(),
+                      {static_cast<float>(box.min.x), static_cast<float>(box.min.y), static_cast<float>(box.max.x),
+                       static_cast<float>(box.max.y), static_cast<float>(placed[i].x), static_cast<float>(placed[i].y),
+                       static_cast<float>(g.bands.first), static_cast<float>(g.bands.levels)});
+  }
+  impl.banded = true;
+  std::vector<float> all;
+  for (auto& [page, floats] : pages) {
+    const auto first = static_cast<GLint>(all.size() / 8);
+    impl.band_runs.push_back({page, first, static_cast<GLsizei>(floats.size() / 8)});
+    all.insert(all.end(), floats.begin(), floats.end());
+  }
+  if (!all.empty()) upload_buffer(GL_ARRAY_BUFFER, impl.bands_vbo, all);
+}
+
 // Instancing: one offset per placement, grouped by glyph (a counting sort:
 // linear in the placements).
 std::unique_ptr<BatchImpl> instanced_block(std::span<const CacheImpl::Packed> glyphs,
@@ -273,6 +362,7 @@ std::unique_ptr<BatchImpl> instanced_block(std::span<const CacheImpl::Packed> gl
     offsets[2 * slot + 1] = static_cast<float>(placed[i].y);
   }
   upload_buffer(GL_ARRAY_BUFFER, impl->offsets_vbo, offsets);
+  band_instances(glyphs, placed, *impl);
   if (GLenum err = glGetError(); err != GL_NO_ERROR)
     throw Error(ErrorCode::Gl, "text block upload failed (GL error 0x" + gl_error_text(err) + ")");
   return impl;
@@ -333,7 +423,11 @@ std::size_t DrawBatch::vertex_count() const {
 }
 std::size_t DrawBatch::gpu_bytes() const {
   if (!impl_) return 0;
-  if (impl_->instanced()) return impl_->placements * 2 * sizeof(float);
+  if (impl_->instanced()) {
+    std::size_t banded = 0;
+    for (const Impl::BandRun& run : impl_->band_runs) banded += static_cast<std::size_t>(run.count);
+    return impl_->placements * 2 * sizeof(float) + banded * 8 * sizeof(float);
+  }
   if (impl_->bitmaps()) return impl_->vertex_count * 4 * sizeof(float);
   const std::size_t index_bytes = impl_->index_type == GL_UNSIGNED_SHORT ? 2
                                   : impl_->index_type == GL_UNSIGNED_INT ? 4

@@ -11,4 +11,6 @@ extern const char* const resolve_frag_glsl;
 extern const char* const composite_frag_glsl;
 extern const char* const bitmap_vert_glsl;
 extern const char* const bitmap_frag_glsl;
+extern const char* const bands_vert_glsl;
+extern const char* const bands_frag_glsl;
 }  // namespace curvetext::shader_source
