@@ -97,6 +97,8 @@ float arc_x_dy(vec2 p0, vec2 c, vec2 p2, float w, float t0, float t1) {
 // height right of the box plus the integral of (x + 1/2) dy over its part
 // across the box, both within the box's rows.
 float piece_area(vec2 p0, vec2 c, vec2 p2, float w) {
+  // Wholly right of the box: its height within the rows (monotone in y).
+  if (min(p0.x, p2.x) >= 0.5) return clamp(p2.y, -0.5, 0.5) - clamp(p0.y, -0.5, 0.5);
   float ty0 = crossing(p0.y, c.y, p2.y, w, -0.5);
   float ty1 = crossing(p0.y, c.y, p2.y, w, 0.5);
   float lo = min(ty0, ty1);

@@ -117,6 +117,7 @@ double piece_box_integral(const BandPiece& p) {
 }
 
 double monotone_piece_box_integral(const BandPiece& p) {
+  if (std::min(p.p0.x, p.p2.x) >= 0.5) return std::clamp(p.p2.y, -0.5, 0.5) - std::clamp(p.p0.y, -0.5, 0.5);
   const double ty0 = monotone_crossing(p.p0.y, p.c.y, p.p2.y, p.w, -0.5);
   const double ty1 = monotone_crossing(p.p0.y, p.c.y, p.p2.y, p.w, 0.5);
   const double lo = std::min(ty0, ty1), hi = std::max(ty0, ty1);
@@ -206,10 +207,11 @@ PieceBounds bounds_of(const BandPiece& p) {
           round_up(std::max({p.p0.y, p.c.y, p.p2.y}))};
 }
 
-// Levels so that the finest level's bands hold a few pieces each.
+// Levels so that the finest level's bands hold a few pieces each: a band
+// of level L spans 2 / 2^L of the glyph's height.
 int levels_for(std::size_t pieces) {
   int levels = 1;
-  while (levels < kMaxBandLevels && (std::size_t{4} << (levels - 1)) < pieces) ++levels;
+  while (levels < kMaxBandLevels && (std::size_t{1} << (levels - 1)) < pieces) ++levels;
   return levels;
 }
 
