@@ -7,7 +7,8 @@
 // sum over the pieces of the integral of clamp(x + 1/2, 0, 1) dy over their
 // parts within the box's rows (pixel units from its centre). A band's pieces
 // come by decreasing largest x, so the loop stops at the first piece wholly
-// left of the box: those add nothing.
+// left of the box: those add nothing; one wholly right adds its height
+// within the rows, read from its entry alone.
 #ifdef GL_ES
 precision highp float;
 precision highp int;
@@ -97,8 +98,6 @@ float arc_x_dy(vec2 p0, vec2 c, vec2 p2, float w, float t0, float t1) {
 // height right of the box plus the integral of (x + 1/2) dy over its part
 // across the box, both within the box's rows.
 float piece_area(vec2 p0, vec2 c, vec2 p2, float w) {
-  // Wholly right of the box: its height within the rows (monotone in y).
-  if (min(p0.x, p2.x) >= 0.5) return clamp(p2.y, -0.5, 0.5) - clamp(p0.y, -0.5, 0.5);
   float ty0 = crossing(p0.y, c.y, p2.y, w, -0.5);
   float ty1 = crossing(p0.y, c.y, p2.y, w, 0.5);
   float lo = min(ty0, ty1);
@@ -118,6 +117,26 @@ float piece_area(vec2 p0, vec2 c, vec2 p2, float w) {
   return sum;
 }
 
+// A straight piece p -> q: the integral of clamp(x + 1/2, 0, 1) dy over its
+// part within the rows, the mean of the clamped width between its clipped
+// ends (exact: the width is linear in y along a line), written with
+// differences so that a short piece keeps its digits.
+float line_area(vec2 p, vec2 q) {
+  float y0 = clamp(p.y, -0.5, 0.5);
+  float y1 = clamp(q.y, -0.5, 0.5);
+  float dy = q.y - p.y;
+  float inv = dy != 0.0 ? 1.0 / dy : 0.0;
+  float x0 = p.x + (q.x - p.x) * clamp((y0 - p.y) * inv, 0.0, 1.0) + 0.5;
+  float x1 = p.x + (q.x - p.x) * clamp((y1 - p.y) * inv, 0.0, 1.0) + 0.5;
+  float lo = min(x0, x1);
+  float hi = max(x0, x1);
+  float cl = clamp(lo, 0.0, 1.0);
+  float ch = clamp(hi, 0.0, 1.0);
+  float integral = 0.5 * (ch + cl) * (ch - cl) + max(hi - max(lo, 1.0), 0.0);
+  float len = hi - lo;
+  return (y1 - y0) * (len > 0.0 ? clamp(integral / len, 0.0, 1.0) : cl);
+}
+
 void main() {
   int first = int(v_glyph.x);
   int levels = int(v_glyph.y);
@@ -132,22 +151,37 @@ void main() {
   float row_lo = v_local.y - u_half.y;
   float row_hi = v_local.y + u_half.y;
   float left = v_local.x - u_half.x;
+  float right = v_local.x + u_half.x;
   int k = clamp(int(floor((row_lo - v_rect.y) / h)), 0, n - 1);
   int band = n - 1 + k;
-  vec4 header = texel(first + band / 2);
+  vec4 regions = texel(first);  // (first entry texel, first reference texel)
+  int entry_texel = first + int(regions.x);
+  int ref_texel = first + int(regions.y);
+  vec4 header = texel(first + 1 + band / 2);
   vec2 entries = (band & 1) == 0 ? header.xy : header.zw;
-  int start = first + int(entries.x);
+  int start = int(entries.x);
   int count = int(entries.y);
   vec2 scale = 0.5 / u_half;
   float sum = 0.0;
-  for (int i = 0; i < count; ++i) {
-    vec4 e = texel(start + i);  // (piece texel, largest x, smallest y, largest y)
-    if (e.y < left) break;
-    if (e.w < row_lo || e.z > row_hi) continue;
-    int piece = first + int(e.x);
+  for (int j = start; j < start + count; ++j) {
+    vec4 e = texel(entry_texel + j);  // (largest x, smallest x, y of p0, y of p2)
+    if (e.x < left) break;
+    if (max(e.z, e.w) < row_lo || min(e.z, e.w) > row_hi) continue;
+    if (e.y >= right) {
+      // Wholly right of the box: its height within the rows (monotone in y).
+      sum += clamp((e.w - v_local.y) * scale.y, -0.5, 0.5) - clamp((e.z - v_local.y) * scale.y, -0.5, 0.5);
+      continue;
+    }
+    int piece = first + int(texel(ref_texel + (j >> 2))[j & 3]);
     vec4 a = texel(piece);
     vec4 b = texel(piece + 1);
-    sum += piece_area((a.xy - v_local) * scale, (a.zw - v_local) * scale, (b.xy - v_local) * scale, b.z);
+    vec2 p0 = (a.xy - v_local) * scale;
+    vec2 p2 = (b.xy - v_local) * scale;
+    if (b.w > 0.5) {
+      sum += line_area(p0, p2);
+    } else {
+      sum += piece_area(p0, (a.zw - v_local) * scale, p2, b.z);
+    }
   }
   float coverage = clamp(sum, 0.0, 1.0);
   if (coverage <= 0.0) discard;

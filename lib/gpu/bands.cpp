@@ -198,14 +198,15 @@ float round_up(double v) {
   return static_cast<double>(f) < v ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
 }
 
-struct PieceBounds {
-  float x_max, y_min, y_max;
-};
-
-PieceBounds bounds_of(const BandPiece& p) {
-  return {round_up(std::max({p.p0.x, p.c.x, p.p2.x})), round_down(std::min({p.p0.y, p.c.y, p.p2.y})),
-          round_up(std::max({p.p0.y, p.c.y, p.p2.y}))};
+// An entry's texel: the piece's x range (outward to floats) and its end
+// points' heights (first, last: a monotone piece's y range, and its height).
+std::array<float, 4> entry_of(const BandPiece& p) {
+  return {round_up(std::max({p.p0.x, p.c.x, p.p2.x})), round_down(std::min({p.p0.x, p.c.x, p.p2.x})),
+          static_cast<float>(p.p0.y), static_cast<float>(p.p2.y)};
 }
+
+// A line is stored as the conic whose control point is its midpoint (w 1).
+bool is_line(const BandPiece& p) { return p.w == 1.0 && p.c == 0.5 * (p.p0 + p.p2); }
 
 // Levels so that the finest level's bands hold a few pieces each: a band
 // of level L spans 2 / 2^L of the glyph's height.
@@ -217,52 +218,75 @@ int levels_for(std::size_t pieces) {
 
 }  // namespace
 
-void build_bands(const Mesh& mesh, GlyphBands& out, BandScratch& scratch) {
-  out = GlyphBands{};
-  out.texels.clear();
-  std::vector<BandPiece>& pieces = scratch.pieces;
-  boundary_pieces(mesh, pieces);
-  Box box;
-  for (const BandPiece& p : pieces)
-    for (Vec2 v : {p.p0, p.c, p.p2}) box.add({static_cast<float>(v.x), static_cast<float>(v.y)});
-  if (pieces.empty() || !(box.max.y > box.min.y)) return;
-  out.box = box;
-  out.levels = levels_for(pieces.size());
-  out.pieces = pieces.size();
-  const std::size_t bands = (std::size_t{1} << out.levels) - 1;
-  const std::size_t headers = (bands + 1) / 2;
-  out.texels.assign(headers + 2 * pieces.size(), {0.0f, 0.0f, 0.0f, 0.0f});
-  std::vector<PieceBounds> bounds(pieces.size());
-  for (std::size_t i = 0; i < pieces.size(); ++i) {
-    const BandPiece& p = pieces[i];
-    bounds[i] = bounds_of(p);
-    const auto f = [](double v) { return static_cast<float>(v); };
-    out.texels[headers + 2 * i] = {f(p.p0.x), f(p.p0.y), f(p.c.x), f(p.c.y)};
-    out.texels[headers + 2 * i + 1] = {f(p.p2.x), f(p.p2.y), f(p.w), 0.0f};
-  }
-  // Pieces by decreasing largest x: each band's list comes out sorted.
+namespace {
+
+// The entries of every band of every level (level L, band k: 2^L - 1 + k),
+// a band's by decreasing largest x, and their pieces' texels in `refs`.
+void add_entries(const std::vector<BandPiece>& pieces, std::size_t piece_texel, GlyphBands& out,
+                 BandScratch& scratch) {
   std::vector<std::uint32_t>& order = scratch.order;
   order.resize(pieces.size());
   for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(),
-            [&](std::uint32_t a, std::uint32_t b) { return bounds[a].x_max > bounds[b].x_max; });
-  const double y0 = box.min.y, height = box.max.y - box.min.y;
+  std::vector<std::array<float, 4>>& entries = scratch.entries;
+  entries.resize(pieces.size());
+  for (std::size_t i = 0; i < pieces.size(); ++i) entries[i] = entry_of(pieces[i]);
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return entries[a][0] > entries[b][0]; });
+  const double y0 = out.box.min.y, height = out.box.max.y - out.box.min.y;
+  scratch.refs.clear();
   for (int level = 0; level < out.levels; ++level) {
     const std::size_t n = std::size_t{1} << level;
     const double h = height / static_cast<double>(n), margin = 1e-4 * h;
     for (std::size_t k = 0; k < n; ++k) {
       const double lo = y0 + static_cast<double>(k) * h - margin, hi = y0 + static_cast<double>(k + 2) * h + margin;
-      const std::size_t band = n - 1 + k, first = out.texels.size();
+      const std::size_t band = n - 1 + k, first = scratch.refs.size();
       for (std::uint32_t i : order) {
-        if (bounds[i].y_max < lo || bounds[i].y_min > hi) continue;
-        out.texels.push_back({static_cast<float>(headers + 2 * i), bounds[i].x_max, bounds[i].y_min, bounds[i].y_max});
+        const BandPiece& p = pieces[i];
+        if (std::max({p.p0.y, p.c.y, p.p2.y}) < lo || std::min({p.p0.y, p.c.y, p.p2.y}) > hi) continue;
+        out.texels.push_back(entries[i]);
+        scratch.refs.push_back(static_cast<std::uint32_t>(piece_texel + 2 * i));
       }
-      std::array<float, 4>& header = out.texels[band / 2];
+      std::array<float, 4>& header = out.texels[1 + band / 2];
       header[2 * (band % 2)] = static_cast<float>(first);
-      header[2 * (band % 2) + 1] = static_cast<float>(out.texels.size() - first);
+      header[2 * (band % 2) + 1] = static_cast<float>(scratch.refs.size() - first);
     }
   }
-  out.entries = out.texels.size() - headers - 2 * pieces.size();
+}
+
+}  // namespace
+
+void build_bands(const Mesh& mesh, GlyphBands& out, BandScratch& scratch) {
+  out.texels.clear();
+  out.levels = 0;
+  out.pieces = out.entries = 0;
+  std::vector<BandPiece>& pieces = scratch.pieces;
+  boundary_pieces(mesh, pieces);
+  Box box;
+  for (const BandPiece& p : pieces)
+    for (Vec2 v : {p.p0, p.c, p.p2}) box.add({static_cast<float>(v.x), static_cast<float>(v.y)});
+  out.box = box;
+  if (pieces.empty() || !(box.max.y > box.min.y)) return;
+  out.levels = levels_for(pieces.size());
+  out.pieces = pieces.size();
+  const std::size_t bands = (std::size_t{1} << out.levels) - 1;
+  const std::size_t piece_texel = 1 + (bands + 1) / 2;
+  out.texels.assign(piece_texel + 2 * pieces.size(), {0.0f, 0.0f, 0.0f, 0.0f});
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    const BandPiece& p = pieces[i];
+    const auto f = [](double v) { return static_cast<float>(v); };
+    out.texels[piece_texel + 2 * i] = {f(p.p0.x), f(p.p0.y), f(p.c.x), f(p.c.y)};
+    out.texels[piece_texel + 2 * i + 1] = {f(p.p2.x), f(p.p2.y), f(p.w), is_line(p) ? 1.0f : 0.0f};
+  }
+  const std::size_t entry_texel = out.texels.size();
+  add_entries(pieces, piece_texel, out, scratch);
+  const std::vector<std::uint32_t>& refs = scratch.refs;
+  out.entries = refs.size();
+  const std::size_t ref_texel = out.texels.size();
+  for (std::size_t j = 0; j < refs.size(); j += 4) {
+    std::array<float, 4> t{0.0f, 0.0f, 0.0f, 0.0f};
+    for (std::size_t q = 0; q < 4 && j + q < refs.size(); ++q) t[q] = static_cast<float>(refs[j + q]);
+    out.texels.push_back(t);
+  }
+  out.texels[0] = {static_cast<float>(entry_texel), static_cast<float>(ref_texel), 0.0f, 0.0f};
 }
 
 double box_coverage(std::span<const BandPiece> pieces, Vec2 centre, Vec2 half) {
@@ -287,21 +311,28 @@ double band_box_coverage(const GlyphBands& bands, Vec2 centre, Vec2 half) {
   const int level = band_level(bands, half.y);
   const int n = 1 << level;
   const double h = (bands.box.max.y - bands.box.min.y) / n;
-  const double row_lo = centre.y - half.y, row_hi = centre.y + half.y, left = centre.x - half.x;
+  const double row_lo = centre.y - half.y, row_hi = centre.y + half.y;
+  const double left = centre.x - half.x, right = centre.x + half.x;
   const int k = std::clamp(static_cast<int>(std::floor((row_lo - bands.box.min.y) / h)), 0, n - 1);
   const int band = n - 1 + k;
-  const std::array<float, 4>& header = bands.texels[static_cast<std::size_t>(band / 2)];
+  const auto texel = [&](std::size_t i) -> const std::array<float, 4>& { return bands.texels[i]; };
+  const auto entry_texel = static_cast<std::size_t>(texel(0)[0]), ref_texel = static_cast<std::size_t>(texel(0)[1]);
+  const std::array<float, 4>& header = texel(1 + static_cast<std::size_t>(band / 2));
   const auto first = static_cast<std::size_t>(header[2 * (band % 2)]);
   const auto count = static_cast<std::size_t>(header[2 * (band % 2) + 1]);
   const double kx = 0.5 / half.x, ky = 0.5 / half.y;
+  const auto px = [&](double x, double y) { return Vec2{(x - centre.x) * kx, (y - centre.y) * ky}; };
   double sum = 0.0;
-  for (std::size_t i = first; i < first + count; ++i) {
-    const std::array<float, 4>& e = bands.texels[i];
-    if (e[1] < left) break;
-    if (e[3] < row_lo || e[2] > row_hi) continue;
-    const std::array<float, 4>& a = bands.texels[static_cast<std::size_t>(e[0])];
-    const std::array<float, 4>& b = bands.texels[static_cast<std::size_t>(e[0]) + 1];
-    const auto px = [&](double x, double y) { return Vec2{(x - centre.x) * kx, (y - centre.y) * ky}; };
+  for (std::size_t j = first; j < first + count; ++j) {
+    const std::array<float, 4>& e = texel(entry_texel + j);  // (largest x, smallest x, y first, y last)
+    if (e[0] < left) break;
+    if (std::max(e[2], e[3]) < row_lo || std::min(e[2], e[3]) > row_hi) continue;
+    if (e[1] >= right) {  // wholly right: its height within the rows
+      sum += std::clamp((e[3] - centre.y) * ky, -0.5, 0.5) - std::clamp((e[2] - centre.y) * ky, -0.5, 0.5);
+      continue;
+    }
+    const auto piece = static_cast<std::size_t>(texel(ref_texel + j / 4)[j % 4]);
+    const std::array<float, 4>&a = texel(piece), &b = texel(piece + 1);
     sum += monotone_piece_box_integral({px(a[0], a[1]), px(a[2], a[3]), px(b[0], b[1]), b[2]});
   }
   return sum;

@@ -7,18 +7,22 @@
 //
 // Texel layout of one glyph, from its first texel (RGBA32F, a row-major
 // texture kBandTextureWidth texels wide; offsets relative to that texel):
+//   texel 0: (first entry texel E, first reference texel R, 0, 0).
 //   headers: band b (level L, band k: b = 2^L - 1 + k, L = 0..levels-1) in
-//            texel b / 2, components 2 (b % 2) and 2 (b % 2) + 1: (first
-//            entry texel, entry count).
-//   entries: one texel per piece in a band, (piece texel, largest x of the
-//            piece, smallest y, largest y), a band's entries by decreasing
-//            largest x, so the loop over them stops at the first entry wholly
-//            left of the pixel (such pieces add nothing, below).
-//   pieces:  two texels, (x0, y0, cx, cy), (x2, y2, w, 0): the rational
+//            texel 1 + b / 2, components 2 (b % 2) and 2 (b % 2) + 1: (its
+//            first entry j, relative to E, and its entry count).
+//   pieces:  two texels, (x0, y0, cx, cy), (x2, y2, w, line): the rational
 //            quadratic (p0, c, p2) with end weights 1 and middle weight w, in
 //            the outline's units, directed with the fill on its left (y up).
 //            A line is stored as the conic whose control point is its
-//            midpoint, w = 1 (its segment area is 0).
+//            midpoint, w = 1 (its segment area is 0), with line = 1 (the
+//            shader takes a shorter path for it; 0 for a conic).
+//   entries: texel E + j, one per piece in a band: (largest x, smallest x,
+//            y of p0, y of p2), a band's entries by decreasing largest x, so
+//            the loop over them stops at the first entry wholly left of the
+//            pixel (such pieces add nothing, below); a piece wholly right of
+//            it adds its height within the rows, read from the entry alone.
+//   refs:    entry j's piece texel in component j % 4 of texel R + j / 4.
 // Level L has 2^L bands; with H = (box height) / 2^L, band k holds the pieces
 // that reach into [y0 + k H, y0 + (k + 2) H]: overlapping bands, so a pixel
 // row at most H tall lies wholly in band floor((row's bottom - y0) / H).
@@ -35,6 +39,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -77,7 +82,8 @@ struct GlyphBands {
 // Reused from glyph to glyph by a cache building many in a row.
 struct BandScratch {
   std::vector<BandPiece> pieces;
-  std::vector<std::uint32_t> order;
+  std::vector<std::uint32_t> order, refs;
+  std::vector<std::array<float, 4>> entries;
 };
 
 void build_bands(const Mesh& mesh, GlyphBands& out, BandScratch& scratch);
