@@ -1144,6 +1144,13 @@ void labels(Bench& b) {
     quads[n].upload(q, GL_STATIC_DRAW);
     batches.push_back(DrawBatch::from_glyphs(b.cache, b.font, blocks[n], kLabelPx));
   }
+  // The same labels as blocks without bands (as on a GLES2 context): full
+  // through its mesh and offscreen pass, side by side.
+  std::vector<DrawBatch> mesh_batches;
+  if (batches.front().instanced())
+    for (const auto& blk : blocks)
+      mesh_batches.push_back(curvetext::DrawBatchAccess::make(curvetext::gpu::text_block(
+          curvetext::GlyphCacheAccess::impl(b.cache), b.font, blk, kLabelPx, curvetext::gpu::BlockPath::Expanded)));
   std::vector<Contender> cs;
   cs.push_back({"bitmap atlas", &b.renderer("atlas"),
                 [&](int f) {
@@ -1162,7 +1169,18 @@ void labels(Bench& b) {
                     }
                   }});
   }
+  if (!mesh_batches.empty()) {
+    Renderer* r = &b.renderer("full mesh path");
+    cs.push_back({"curvetext full, GLES2 path", r, [&, r](int f) {
+                    for (std::size_t n = 0; n < mesh_batches.size(); ++n) {
+                      const Origin o = label_origin(static_cast<int>(n), f);
+                      r->draw(mesh_batches[n], Placement(b.scale(kLabelPx), o.x, o.y),
+                              DrawOptions(kBlack, AntiAliasing::Full));
+                    }
+                  }});
+  }
   run_interleaved(b.target, cs, b.opt.frames, b.opt.warmup);
+  b.renderers.erase("full mesh path");
   const Summary atlas = summarize(cs[0].ms);
   for (const auto& c : cs) {
     const Summary s = summarize(c.ms);

@@ -402,7 +402,7 @@ TEST(Text, GlyphBatchMatchesFreeTypeReference) {
   if (batch.instanced()) {
     // Per glyph but the space: an offset (the meshes' instances) and the
     // glyph's box, offset and bands (full's quads).
-    EXPECT_EQ(batch.gpu_bytes(), 40u * (line.glyphs.size() - 1));
+    EXPECT_EQ(batch.gpu_bytes(), (DrawBatchAccess::impl(batch).banded ? 40u : 8u) * (line.glyphs.size() - 1));
   } else {
     EXPECT_GT(batch.gpu_bytes(), batch.vertex_count() * sizeof(gpu::Vertex));  // and the indices
   }
@@ -551,7 +551,9 @@ TEST(Text, BlockUploadsBytesInProportionToItsGlyphs) {
     instanced_bytes.push_back(instanced.gpu_bytes());
     expanded_bytes.push_back(expanded.gpu_bytes());
     const auto n = static_cast<std::size_t>(copies);
-    EXPECT_EQ(instanced_bytes.back(), 40u * inked * n) << copies << " copies";  // gpu_test above
+    // An offset, and where the context has float textures the band quad's data (above).
+    const std::size_t per_glyph = DrawBatchAccess::impl(instanced).banded ? 40u : 8u;
+    EXPECT_EQ(instanced_bytes.back(), per_glyph * inked * n) << copies << " copies";
     const std::size_t index_bytes = n * vertices <= gpu::kMaxShortIndexedVertices ? 2 : 4;
     EXPECT_EQ(expanded_bytes.back(), n * (vertices * sizeof(gpu::Vertex) + indices * index_bytes))
         << copies << " copies";
@@ -567,9 +569,10 @@ TEST(Text, CacheEvictsWithinBudget) {
   context();
   const Font font = Font::open(test::kDejaVuSans);
   const ShapedLine line = shape_line(font, "abcdefghijklmnopqrstuvwxyz");
-  GlyphCache cache(8 * 1024);
+  // A glyph with its mesh and curve bands costs about 10 KB (draw_bench's bytes table).
+  GlyphCache cache(32 * 1024);
   DrawBatch batch = DrawBatch::from_text(cache, font, line, 16.0);
-  EXPECT_LE(cache.stats().bytes, 8u * 1024u + 0u);
+  EXPECT_LE(cache.stats().bytes, 32u * 1024u);
   EXPECT_LT(cache.stats().glyphs, line.glyphs.size());
   EXPECT_GT(batch.vertex_count(), 0u);
 }

@@ -222,15 +222,15 @@ namespace {
 
 // The entries of every band of every level (level L, band k: 2^L - 1 + k),
 // a band's by decreasing largest x, and their pieces' texels in `refs`.
-void add_entries(const std::vector<BandPiece>& pieces, std::size_t piece_texel, GlyphBands& out,
-                 BandScratch& scratch) {
+void add_entries(const std::vector<BandPiece>& pieces, std::size_t piece_texel, GlyphBands& out, BandScratch& scratch) {
   std::vector<std::uint32_t>& order = scratch.order;
   order.resize(pieces.size());
   for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
   std::vector<std::array<float, 4>>& entries = scratch.entries;
   entries.resize(pieces.size());
   for (std::size_t i = 0; i < pieces.size(); ++i) entries[i] = entry_of(pieces[i]);
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return entries[a][0] > entries[b][0]; });
+  std::sort(order.begin(), order.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return entries[a][0] > entries[b][0]; });
   const double y0 = out.box.min.y, height = out.box.max.y - out.box.min.y;
   scratch.refs.clear();
   for (int level = 0; level < out.levels; ++level) {

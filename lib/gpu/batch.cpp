@@ -83,7 +83,8 @@ GlyphCache::Impl::Packed GlyphCache::Impl::get(const Font& font, std::uint32_t g
     stats.bytes += glyph.buffers->bytes;
     stats.gpu_bytes += glyph.buffers->bytes;
   }
-  if (upload && !glyph.bands.tried && !glyph.packed.empty()) {
+  // Bands need float textures and texelFetch (GLES 3, GL 3.3).
+  if (upload && !glyph.bands.tried && !glyph.packed.empty() && gpu::ContextInfo::current().gl3()) {
     if (!mesh_fresh) {
       // Packed without bands before (a GLES2 block): the mesh again.
       font.glyph_outline(glyph_id, scratch.outline);
@@ -117,46 +118,7 @@ void GlyphCache::Impl::evict() {
 void GlyphCache::Impl::add_bands(gpu::CachedGlyph& glyph) {
   glyph.bands.tried = true;
   gpu::build_bands(scratch.mesh, scratch.bands, scratch.band);
-  const gpu::GlyphBands& b = scratch.bands;
-  constexpr std::size_t kWidth = gpu::kBandTextureWidth;
-  constexpr std::size_t kPageTexels = gpu::kMaxBandPageRows * kWidth;
-  if (b.empty() || b.texels.size() > kPageTexels) return;  // drawn through its mesh
-  if (!band_page || band_page->used + b.texels.size() > kPageTexels) band_page = std::make_shared<gpu::BandPage>();
-  gpu::BandPage& page = *band_page;
-  const std::size_t first = page.used, end = first + b.texels.size();
-  const int rows = static_cast<int>((end + kWidth - 1) / kWidth);
-  const bool grow = rows > page.rows;
-  if (grow) {
-    page.rows = std::max(rows, std::min(std::max(2 * page.rows, 8), gpu::kMaxBandPageRows));
-    page.texels.resize(static_cast<std::size_t>(page.rows) * kWidth);
-  }
-  std::copy(b.texels.begin(), b.texels.end(), page.texels.begin() + static_cast<std::ptrdiff_t>(first));
-  page.used = end;
-  if (page.texture == 0) glGenTextures(1, &page.texture);
-  if (page.texture == 0) throw Error(ErrorCode::Gl, "glGenTextures failed (is a GL context current?)");
-  {
-    const gpu::TextureUploadScope bound(page.texture);
-    if (grow) {
-      // Re-specified whole: blocks drawing from the page keep its texture name.
-      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, static_cast<GLsizei>(kWidth), page.rows, 0, GL_RGBA, GL_FLOAT,
-                   page.texels.data());
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    } else {
-      const int row0 = static_cast<int>(first / kWidth);
-      glTexSubImage2D(GL_TEXTURE_2D, 0, 0, row0, static_cast<GLsizei>(kWidth), rows - row0, GL_RGBA, GL_FLOAT,
-                      page.texels.data() + static_cast<std::size_t>(row0) * kWidth);
-    }
-  }
-  if (GLenum err = glGetError(); err != GL_NO_ERROR)
-    throw Error(ErrorCode::Gl, "band texture upload failed (GL error 0x" + std::to_string(err) + ")");
-  glyph.bands.page = band_page;
-  glyph.bands.first = static_cast<int>(first);
-  glyph.bands.levels = b.levels;
-  glyph.bands.box = b.box;
-  glyph.bands.bytes = b.bytes();
+  gpu::append_bands(scratch.bands, band_page, glyph.bands);  // false: drawn through its mesh
 }
 
 GlyphCache::GlyphCache(std::size_t budget_bytes) : impl_(std::make_unique<Impl>(budget_bytes)) {}
@@ -369,6 +331,74 @@ std::unique_ptr<BatchImpl> instanced_block(std::span<const CacheImpl::Packed> gl
 }
 
 }  // namespace
+
+bool append_bands(const GlyphBands& bands, std::shared_ptr<BandPage>& page_slot, GlyphBandRef& out) {
+  constexpr std::size_t kWidth = kBandTextureWidth;
+  constexpr std::size_t kPageTexels = kMaxBandPageRows * kWidth;
+  if (bands.empty() || bands.texels.size() > kPageTexels) return false;
+  if (!page_slot || page_slot->used + bands.texels.size() > kPageTexels) page_slot = std::make_shared<BandPage>();
+  BandPage& page = *page_slot;
+  const std::size_t first = page.used, end = first + bands.texels.size();
+  const int rows = static_cast<int>((end + kWidth - 1) / kWidth);
+  const bool grow = rows > page.rows;
+  if (grow) {
+    page.rows = std::max(rows, std::min(std::max(2 * page.rows, 8), kMaxBandPageRows));
+    page.texels.resize(static_cast<std::size_t>(page.rows) * kWidth);
+  }
+  std::copy(bands.texels.begin(), bands.texels.end(), page.texels.begin() + static_cast<std::ptrdiff_t>(first));
+  page.used = end;
+  if (page.texture == 0) glGenTextures(1, &page.texture);
+  if (page.texture == 0) throw Error(ErrorCode::Gl, "glGenTextures failed (is a GL context current?)");
+  {
+    const TextureUploadScope bound(page.texture);
+    if (grow) {
+      // Re-specified whole: blocks drawing from the page keep its texture name.
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, static_cast<GLsizei>(kWidth), page.rows, 0, GL_RGBA, GL_FLOAT,
+                   page.texels.data());
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    } else {
+      const int row0 = static_cast<int>(first / kWidth);
+      glTexSubImage2D(GL_TEXTURE_2D, 0, 0, row0, static_cast<GLsizei>(kWidth), rows - row0, GL_RGBA, GL_FLOAT,
+                      page.texels.data() + static_cast<std::size_t>(row0) * kWidth);
+    }
+  }
+  if (GLenum err = glGetError(); err != GL_NO_ERROR)
+    throw Error(ErrorCode::Gl, "band texture upload failed (GL error 0x" + gl_error_text(err) + ")");
+  out.page = page_slot;
+  out.first = static_cast<int>(first);
+  out.levels = bands.levels;
+  out.box = bands.box;
+  out.bytes = bands.bytes();
+  return true;
+}
+
+void add_mesh_bands(BatchImpl& impl, std::span<const Mesh* const> meshes, std::span<const Vec2> offsets) {
+  std::shared_ptr<BandPage> page;
+  BandScratch scratch;
+  GlyphBands bands;
+  std::vector<float> instances;
+  std::vector<BatchImpl::BandRun> runs;
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    build_bands(*meshes[i], bands, scratch);
+    if (bands.empty()) continue;
+    GlyphBandRef ref;
+    const BandPage* before = page.get();
+    if (!append_bands(bands, page, ref)) return;  // too large for a page: the mesh path only
+    if (runs.empty() || page.get() != before) runs.push_back({page, static_cast<GLint>(instances.size() / 8), 0});
+    ++runs.back().count;
+    const Box& box = ref.box;
+    instances.insert(instances.end(),
+                     {static_cast<float>(box.min.x), static_cast<float>(box.min.y), static_cast<float>(box.max.x),
+                      static_cast<float>(box.max.y), static_cast<float>(offsets[i].x), static_cast<float>(offsets[i].y),
+                      static_cast<float>(ref.first), static_cast<float>(ref.levels)});
+  }
+  if (!instances.empty()) upload_buffer(GL_ARRAY_BUFFER, impl.bands_vbo, instances);
+  impl.band_runs = std::move(runs);
+  impl.banded = true;
+}
 
 std::unique_ptr<BatchImpl> text_block(CacheImpl& cache, const Font& font, std::span<const PlacedGlyph> glyphs,
                                       double pixels_per_em, BlockPath path) {

@@ -268,8 +268,17 @@ std::unique_ptr<BatchImpl> text_block(CacheImpl& cache, const Font& font, std::s
 std::shared_ptr<const GlyphBuffers> upload_glyph(const PackedMesh& packed);
 // Whether the current context draws instanced (GLES 3+, desktop GL 3.3+).
 bool context_instances();
-// Texels a band page holds at most (tolerance: its texture's rows).
+// Rows a band page has at most (16 MiB of RGBA32F texels).
 inline constexpr int kMaxBandPageRows = 1024;
+// Appends a glyph's bands to the page in `page_slot` (a new page there when
+// it is full) and uploads them; false, and nothing added, when they are
+// empty or larger than a page. Error(Gl) if the upload fails.
+bool append_bands(const GlyphBands& bands, std::shared_ptr<BandPage>& page_slot, GlyphBandRef& out);
+// Gives a batch (its meshes uploaded already) the bands of `meshes`, each
+// placed at its offset (outline units), in pages of its own: full then draws
+// it in one pass (the shapes' and tests' way to the band path). Leaves it
+// without bands if one is too large for a page.
+void add_mesh_bands(BatchImpl& impl, std::span<const Mesh* const> meshes, std::span<const Vec2> offsets);
 }  // namespace gpu
 
 }  // namespace curvetext
