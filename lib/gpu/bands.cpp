@@ -103,7 +103,9 @@ double piece_box_integral(const BandPiece& p) {
     n += roots_in_unit(p.p0.x - level, p.w * (p.c.x - level), p.p2.x - level, ts + n);
     n += roots_in_unit(p.p0.y - level, p.w * (p.c.y - level), p.p2.y - level, ts + n);
   }
-  std::sort(ts, ts + n);
+  // Insertion sort: at most 10 values.
+  for (int i = 1; i < n; ++i)
+    for (int j = i; j > 0 && ts[j - 1] > ts[j]; --j) std::swap(ts[j - 1], ts[j]);
   double sum = 0.0;
   for (int i = 0; i + 1 < n; ++i) {
     const double t0 = ts[i], t1 = ts[i + 1];
@@ -220,36 +222,60 @@ int levels_for(std::size_t pieces) {
 
 namespace {
 
+// The bands of `level` that piece i's heights [lo, hi] (from y0) reach, a
+// little generously (an extra piece is culled by the shader's height test).
+std::pair<std::size_t, std::size_t> band_range(double lo, double hi, double h, std::size_t n) {
+  // Band k holds [k h, (k + 2) h]; a margin of 1e-4 h covers the shader's
+  // rounding of the row's band.
+  const double k0 = std::floor(lo / h - 1e-4) - 2.0, k1 = std::floor(hi / h + 1e-4);
+  const auto clamp_k = [&](double k) {
+    return static_cast<std::size_t>(std::clamp(k, 0.0, static_cast<double>(n - 1)));
+  };
+  return {clamp_k(k0), clamp_k(k1)};
+}
+
 // The entries of every band of every level (level L, band k: 2^L - 1 + k),
-// a band's by decreasing largest x, and their pieces' texels in `refs`.
+// a band's by decreasing largest x, and their pieces' texels in `refs`:
+// counted per band, then placed, pieces taken in that order (linear in the
+// entries after one sort of the pieces).
 void add_entries(const std::vector<BandPiece>& pieces, std::size_t piece_texel, GlyphBands& out, BandScratch& scratch) {
-  std::vector<std::uint32_t>& order = scratch.order;
-  order.resize(pieces.size());
-  for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+  const std::size_t n = pieces.size(), bands = (std::size_t{1} << out.levels) - 1;
   std::vector<std::array<float, 4>>& entries = scratch.entries;
-  entries.resize(pieces.size());
-  for (std::size_t i = 0; i < pieces.size(); ++i) entries[i] = entry_of(pieces[i]);
+  entries.resize(n);
+  for (std::size_t i = 0; i < n; ++i) entries[i] = entry_of(pieces[i]);
+  std::vector<std::uint32_t>& order = scratch.order;
+  order.resize(n);
+  for (std::uint32_t i = 0; i < n; ++i) order[i] = i;
   std::sort(order.begin(), order.end(),
             [&](std::uint32_t a, std::uint32_t b) { return entries[a][0] > entries[b][0]; });
   const double y0 = out.box.min.y, height = out.box.max.y - out.box.min.y;
-  scratch.refs.clear();
-  for (int level = 0; level < out.levels; ++level) {
-    const std::size_t n = std::size_t{1} << level;
-    const double h = height / static_cast<double>(n), margin = 1e-4 * h;
-    for (std::size_t k = 0; k < n; ++k) {
-      const double lo = y0 + static_cast<double>(k) * h - margin, hi = y0 + static_cast<double>(k + 2) * h + margin;
-      const std::size_t band = n - 1 + k, first = scratch.refs.size();
-      for (std::uint32_t i : order) {
-        const BandPiece& p = pieces[i];
-        if (std::max({p.p0.y, p.c.y, p.p2.y}) < lo || std::min({p.p0.y, p.c.y, p.p2.y}) > hi) continue;
-        out.texels.push_back(entries[i]);
-        scratch.refs.push_back(static_cast<std::uint32_t>(piece_texel + 2 * i));
-      }
-      std::array<float, 4>& header = out.texels[1 + band / 2];
-      header[2 * (band % 2)] = static_cast<float>(first);
-      header[2 * (band % 2) + 1] = static_cast<float>(scratch.refs.size() - first);
+  std::vector<std::uint32_t>& next = scratch.next;  // per band: its next entry
+  next.assign(bands + 1, 0);
+  const auto each_band = [&](std::size_t i, auto&& visit) {
+    const BandPiece& p = pieces[i];
+    const double lo = std::min({p.p0.y, p.c.y, p.p2.y}) - y0, hi = std::max({p.p0.y, p.c.y, p.p2.y}) - y0;
+    for (int level = 0; level < out.levels; ++level) {
+      const std::size_t count = std::size_t{1} << level;
+      const auto [k0, k1] = band_range(lo, hi, height / static_cast<double>(count), count);
+      for (std::size_t k = k0; k <= k1; ++k) visit(count - 1 + k);
     }
+  };
+  for (std::size_t i = 0; i < n; ++i) each_band(i, [&](std::size_t band) { ++next[band + 1]; });
+  for (std::size_t b = 0; b < bands; ++b) {
+    std::array<float, 4>& header = out.texels[1 + b / 2];
+    header[2 * (b % 2)] = static_cast<float>(next[b]);
+    header[2 * (b % 2) + 1] = static_cast<float>(next[b + 1]);
+    next[b + 1] += next[b];
   }
+  const std::size_t total = next[bands], entry_texel = out.texels.size();
+  out.texels.resize(entry_texel + total);
+  scratch.refs.resize(total);
+  for (std::uint32_t i : order)
+    each_band(i, [&](std::size_t band) {
+      const std::uint32_t j = next[band]++;
+      out.texels[entry_texel + j] = entries[i];
+      scratch.refs[j] = static_cast<std::uint32_t>(piece_texel + 2 * i);
+    });
 }
 
 }  // namespace
@@ -268,7 +294,7 @@ void build_bands(const Mesh& mesh, GlyphBands& out, BandScratch& scratch) {
   out.levels = levels_for(pieces.size());
   out.pieces = pieces.size();
   const std::size_t bands = (std::size_t{1} << out.levels) - 1;
-  const std::size_t piece_texel = 1 + (bands + 1) / 2;
+  const std::size_t piece_texel = 1 + (bands + 1) / 2;  // after texel 0 and the headers
   out.texels.assign(piece_texel + 2 * pieces.size(), {0.0f, 0.0f, 0.0f, 0.0f});
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     const BandPiece& p = pieces[i];

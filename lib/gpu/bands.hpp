@@ -68,7 +68,7 @@ void boundary_pieces(const Mesh& mesh, std::vector<BandPiece>& out);
 inline constexpr int kBandTextureWidthLog2 = 10;
 inline constexpr int kBandTextureWidth = 1 << kBandTextureWidthLog2;
 // Most levels a glyph's bands have (2^kMaxBandLevels - 1 bands in all).
-inline constexpr int kMaxBandLevels = 6;
+inline constexpr int kMaxBandLevels = 5;
 
 struct GlyphBands {
   std::vector<std::array<float, 4>> texels;
@@ -82,7 +82,7 @@ struct GlyphBands {
 // Reused from glyph to glyph by a cache building many in a row.
 struct BandScratch {
   std::vector<BandPiece> pieces;
-  std::vector<std::uint32_t> order, refs;
+  std::vector<std::uint32_t> order, refs, next;
   std::vector<std::array<float, 4>> entries;
 };
 
