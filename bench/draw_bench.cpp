@@ -19,12 +19,13 @@
 // never evicts another's.
 //
 // Sections: steady scene (static and moving placement), cold first frame,
-// zoom animation, static block plus a changing label, every glyph changing,
-// block build time against glyph count, bytes per glyph.
+// zoom animation, static block plus a changing label, 200 small labels each
+// drawn on its own, every glyph changing, block build time against glyph
+// count, bytes per glyph (and vertices per placed glyph) of each path.
 //
 // Run: build/bench/draw_bench [--frames N] [--sizes 12,16,32,64,128]
 //        [--modes none,curves,full,vbaa,msaa] [--zoom-modes full,...]
-//        [--zoom-frames 60] [--sections steady,cold,zoom,label,churn,build,bytes]
+//        [--zoom-frames 60] [--sections steady,cold,zoom,label,labels,churn,build,bytes]
 //        [--quick] [--csv]
 #include <GLES2/gl2.h>
 
@@ -639,7 +640,7 @@ struct Options {
   std::vector<AntiAliasing> modes{AntiAliasing::None, AntiAliasing::Curves, AntiAliasing::Full, AntiAliasing::Vbaa,
                                   AntiAliasing::Msaa};
   std::vector<AntiAliasing> zoom_modes{AntiAliasing::Curves, AntiAliasing::Full};
-  std::vector<std::string> sections{"steady", "cold", "zoom", "label", "churn", "build", "bytes"};
+  std::vector<std::string> sections{"steady", "cold", "zoom", "label", "labels", "churn", "build", "bytes"};
   std::vector<int> label_sizes{16, 64};
   int build_reps = 9;
   int warmup = 1;  // uncounted rounds before the counted ones (the steady scene always has one)
@@ -1107,6 +1108,93 @@ void label(Bench& b) {
 }
 
 // ---------------------------------------------------------------------------
+// 4b. A GUI screen: many small labels, each its own draw call, scrolling.
+
+constexpr int kLabelCount = 200, kLabelChars = 12;
+constexpr double kLabelPx = 14.0;
+
+// Label n: 12 characters of the paragraph from character 7 n, in a grid of 5
+// columns of 40 rows, laid out on its own (one block each).
+std::vector<std::vector<PlacedGlyph>> label_blocks(const Font& font) {
+  const std::string text = kParagraph;
+  std::vector<std::vector<PlacedGlyph>> out;
+  for (int n = 0; n < kLabelCount; ++n) {
+    const std::size_t at = (static_cast<std::size_t>(n) * 7) % (text.size() - kLabelChars);
+    out.push_back(layout_block(font, {text.substr(at, kLabelChars)}));
+  }
+  return out;
+}
+
+Origin label_origin(int n, int frame) {
+  return Origin{kMarginPx + (n % 5) * 380.0, 30.0 + (n / 5) * 26.0 - moving_shift(frame)};
+}
+
+void labels(Bench& b) {
+  Table t{"Labels: 200 labels of 12 characters at 14 px, each its own block and draw call, scrolling " +
+              fmt("%.2f", kMovePerFramePx) + " px a frame, ms per frame",
+          {"implementation", "median ms", "min ms", "median / atlas", "min / atlas", "offscreen passes / frame"}};
+  const auto blocks = label_blocks(b.font);
+  GlyphAtlas bitmap(b.ft, GlyphAtlas::Kind::Bitmap);
+  bitmap.set_size(kLabelPx);
+  std::vector<QuadBuffer> quads(blocks.size());
+  std::vector<DrawBatch> batches;
+  for (std::size_t n = 0; n < blocks.size(); ++n) {
+    Quads q;
+    build_quads(bitmap, b.upem, blocks[n], q);
+    quads[n].upload(q, GL_STATIC_DRAW);
+    batches.push_back(DrawBatch::from_glyphs(b.cache, b.font, blocks[n], kLabelPx));
+  }
+  // The same labels as blocks without bands (as on a GLES2 context): full
+  // through its mesh and offscreen pass, side by side.
+  std::vector<DrawBatch> mesh_batches;
+  if (batches.front().instanced())
+    for (const auto& blk : blocks)
+      mesh_batches.push_back(curvetext::DrawBatchAccess::make(curvetext::gpu::text_block(
+          curvetext::GlyphCacheAccess::impl(b.cache), b.font, blk, kLabelPx, curvetext::gpu::BlockPath::Expanded)));
+  std::vector<Contender> cs;
+  cs.push_back({"bitmap atlas", &b.renderer("atlas"),
+                [&](int f) {
+                  for (std::size_t n = 0; n < quads.size(); ++n)
+                    draw_quads(b.program(bitmap), bitmap, quads[n], 1.0,
+                               Bench::atlas_origin(bitmap, label_origin(static_cast<int>(n), f)));
+                },
+                false});
+  for (AntiAliasing aa : b.opt.modes) {
+    const std::string name = std::string("curvetext ") + mode_name(aa);
+    Renderer* r = &b.renderer(name);
+    cs.push_back({name, r, [&, r, aa](int f) {
+                    for (std::size_t n = 0; n < batches.size(); ++n) {
+                      const Origin o = label_origin(static_cast<int>(n), f);
+                      r->draw(batches[n], Placement(b.scale(kLabelPx), o.x, o.y), DrawOptions(kBlack, aa));
+                    }
+                  }});
+  }
+  if (!mesh_batches.empty()) {
+    Renderer* r = &b.renderer("full mesh path");
+    cs.push_back({"curvetext full, GLES2 path", r, [&, r](int f) {
+                    for (std::size_t n = 0; n < mesh_batches.size(); ++n) {
+                      const Origin o = label_origin(static_cast<int>(n), f);
+                      r->draw(mesh_batches[n], Placement(b.scale(kLabelPx), o.x, o.y),
+                              DrawOptions(kBlack, AntiAliasing::Full));
+                    }
+                  }});
+  }
+  run_interleaved(b.target, cs, b.opt.frames, b.opt.warmup);
+  b.renderers.erase("full mesh path");
+  const Summary atlas = summarize(cs[0].ms);
+  for (const auto& c : cs) {
+    const Summary s = summarize(c.ms);
+    t.rows.push_back({c.name, ms_text(s.median), ms_text(s.min), ratio_text(s.median / atlas.median),
+                      ratio_text(s.min / atlas.min), passes_text(c, b.opt.frames)});
+  }
+  for (AntiAliasing aa : b.opt.modes) b.renderers.erase(std::string("curvetext ") + mode_name(aa));
+  t.notes.push_back(
+      "Each label is a block of its own (built once) drawn with a draw call of its own; the bitmap "
+      "atlas draws each label's quads with a draw call of their own, at whole pixels.");
+  t.print();
+}
+
+// ---------------------------------------------------------------------------
 // 5. Every glyph changing every frame.
 
 void churn(Bench& b) {
@@ -1214,6 +1302,9 @@ void build(Bench& b) {
 // ---------------------------------------------------------------------------
 // 7. Bytes per glyph.
 
+void bytes_per_path(Bench& b);
+void bytes_notes(Table& t, double placed, bool instanced);
+
 void bytes(Bench& b) {
   Table t{"Bytes per glyph (the 40-line block)",
           {"px", "curvetext block B / placed glyph", "curvetext cache B / cached glyph", "of which GPU",
@@ -1240,6 +1331,42 @@ void bytes(Bench& b) {
                       fmt("%.0f", d(bitmap.cell_bytes()) / inked), fmt("%.0f", d(bitmap.padded_cell_bytes()) / inked),
                       fmt("%.0f", d(sdf.cell_bytes()) / d(sdf.distinct_inked()))});
   }
+  bytes_notes(t, placed, instanced);
+  t.print();
+  bytes_per_path(b);
+}
+
+// GPU bytes per distinct glyph and vertices per placed glyph of each path:
+// the mesh (none, curves, msaa, vbaa, and full where bands are not used)
+// and the curve bands (full for text blocks).
+void bytes_per_path(Bench& b) {
+  Table t{"GPU bytes per distinct glyph and vertices per placed glyph, by path (the 40-line block)",
+          {"path", "GPU B / distinct glyph", "vertices / placed glyph", "block B / placed glyph"}};
+  GlyphCache fresh;
+  DrawBatch batch = DrawBatch::from_glyphs(fresh, b.font, b.block, 16.0);
+  const auto& impl = curvetext::DrawBatchAccess::impl(batch);
+  std::size_t glyphs = 0, mesh_bytes = 0, band_bytes = 0;
+  for (const auto& entry : curvetext::GlyphCacheAccess::impl(fresh).lru) {
+    if (entry.glyph->packed.empty()) continue;
+    ++glyphs;
+    mesh_bytes += entry.glyph->buffers ? entry.glyph->buffers->bytes : 0;
+    band_bytes += entry.glyph->bands.bytes;
+  }
+  std::size_t placements = 0;
+  for (const auto& run : impl.band_runs) placements += static_cast<std::size_t>(run.count);
+  auto d = [](std::size_t v) { return static_cast<double>(v); };
+  const double g = d(std::max<std::size_t>(glyphs, 1)), p = d(std::max<std::size_t>(impl.placements, 1));
+  t.rows.push_back(
+      {"mesh (instanced)", fmt("%.0f", d(mesh_bytes) / g), fmt("%.1f", d(batch.vertex_count()) / p), fmt("%.1f", 8.0)});
+  if (impl.banded) t.rows.push_back({"curve bands (full)", fmt("%.0f", d(band_bytes) / g), "4", fmt("%.1f", 32.0)});
+  t.notes.push_back(fmt("%.0f distinct inked glyphs, ", g) + fmt("%.0f inked placements. ", p) +
+                    "Mesh: the glyph's vertex and index buffers; bands: its RGBA32F texels (headers, entries, "
+                    "pieces; bands.hpp). A block holds both per placement (40 bytes): the mesh's offset and the "
+                    "band quad's box, offset, first texel and levels.");
+  t.print();
+}
+
+void bytes_notes(Table& t, double placed, bool instanced) {
   t.notes.push_back(fmt("%.0f placed glyphs (spaces included) in the block; ", placed) +
                     (instanced ? "the block is instanced here (its buffer holds one offset per placed glyph; the "
                                  "glyph meshes are uploaded once, into the cache's entries). "
@@ -1251,7 +1378,6 @@ void bytes(Bench& b) {
                     "the texture (shelf waste not counted); the SDF bitmaps include FreeType's 8 px spread. Peak "
                     "offscreen memory of full/vbaa/msaa is not visible through the "
                     "API and not measured.");
-  t.print();
 }
 
 // ---------------------------------------------------------------------------
@@ -1336,7 +1462,7 @@ Options parse_args(int argc, char** argv) {
           "  --modes none,...    curvetext modes (default none,curves,full,vbaa,msaa)\n"
           "  --zoom-modes ...    curvetext modes of the zoom (default curves,full)\n"
           "  --zoom-frames N     frames of the zoom (default 60)\n"
-          "  --sections ...      steady,cold,zoom,label,churn,build,bytes (default all)\n"
+          "  --sections ...      steady,cold,zoom,label,labels,churn,build,bytes (default all)\n"
           "  --quick             a smoke run: 1 frame, 16 px, a 3-frame zoom, no warm-up outside the steady scene, "
           "every section\n"
           "  --csv               CSV instead of markdown tables\n");
@@ -1356,7 +1482,8 @@ Options parse_args(int argc, char** argv) {
   if (frames) o.frames = *frames;
   if (sizes) o.sizes = *sizes;
   for (const auto& s : o.sections)
-    if (s != "steady" && s != "cold" && s != "zoom" && s != "label" && s != "churn" && s != "build" && s != "bytes")
+    if (s != "steady" && s != "cold" && s != "zoom" && s != "label" && s != "labels" && s != "churn" && s != "build" &&
+        s != "bytes")
       fail("--sections: unknown section '" + s + "'");
   return o;
 }
@@ -1383,6 +1510,7 @@ int main(int argc, char** argv) {
     if (b.opt.wants("cold")) cold(b);
     if (b.opt.wants("zoom")) zoom(b);
     if (b.opt.wants("label")) label(b);
+    if (b.opt.wants("labels")) labels(b);
     if (b.opt.wants("churn")) churn(b);
     if (b.opt.wants("build")) build(b);
     if (b.opt.wants("bytes")) bytes(b);

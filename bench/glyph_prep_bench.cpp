@@ -38,6 +38,7 @@
 #include "curvetext/font.hpp"
 #include "curvetext/lod.hpp"
 #include "curvetext/mesh.hpp"
+#include "gpu/bands.hpp"
 #include "gpu/vertex_format.hpp"
 #include "tessellate/stage_timing.hpp"
 
@@ -122,7 +123,7 @@ struct FtFace {
 // median is of per-glyph costs without scheduler noise. The mesh side is what
 // the glyph cache pays on a miss: outline load + build_mesh (into a reused
 // scratch outline and mesh, as the cache does) + gpu::pack_mesh into a new
-// vector,
+// vector + gpu::build_bands (where the context draws full from bands),
 // with the cubic tolerance of the 32 px level of detail. The FreeType side is
 // what an atlas renderer pays: FT_Load_Glyph + FT_Render_Glyph (AA, 32 px).
 // With `warm`, each glyph's rounds run back to back instead (the predictors
@@ -145,6 +146,8 @@ PrepResult measure(const FontCase& fc, const std::vector<unsigned>& glyphs, int 
   curvetext::Outline outline;  // reused, as GlyphCache reuses its scratch outline
   curvetext::Mesh mesh;        // and mesh
   curvetext::gpu::PackScratch pack_scratch;
+  curvetext::gpu::GlyphBands bands;  // the cache copies them into its band page
+  curvetext::gpu::BandScratch band_scratch;
   const std::size_t n = glyphs.size();
   // (Only filled with CURVETEXT_STAGE_TIMING: ticks per glyph and stage.)
   std::vector<double> stage_ticks(detail::kStageTiming ? n * kStageColumns : 0, 1e300);
@@ -173,6 +176,9 @@ PrepResult measure(const FontCase& fc, const std::vector<unsigned>& glyphs, int 
       benchmark::DoNotOptimize(packed.vertices.data());
       benchmark::DoNotOptimize(packed.indices.data());
       packed_bytes = packed.gpu_bytes();
+      // The curve bands full draws text from in one pass (GLES 3 / GL 3.3).
+      curvetext::gpu::build_bands(mesh, bands, band_scratch);
+      benchmark::DoNotOptimize(bands.texels.data());
       s3 = stage_tick();
     }  // (freed inside the timed span, as the cache would free a replaced mesh)
     auto t1 = clock::now();
@@ -375,7 +381,8 @@ int main(int argc, char** argv) {
   }
 
   std::printf(
-      "\nmesh = outline load + build_mesh + gpu::pack_mesh (cubic tolerance of the 32 px level of detail);\n"
+      "\nmesh = outline load + build_mesh + gpu::pack_mesh + gpu::build_bands (cubic tolerance of the 32 px level of "
+      "detail);\n"
       "FT32 = FT_Load_Glyph + FT_Render_Glyph, AA, 32 px. Fastest of %d rounds per glyph, median over glyphs;\n"
       "ratio = FT32 / mesh (>= 1: the mesh is prepared at least as fast); faster = share of glyphs whose\n"
       "mesh is faster than their bitmap; triangles, GPU bytes (%zu-byte vertices and 16-bit indices) and\n"

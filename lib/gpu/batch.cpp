@@ -1,5 +1,6 @@
 // Glyph cache (packed meshes per glyph and level of detail, LRU within a byte
 // budget, with GPU buffers per glyph for instanced blocks) and draw batches.
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdio>
@@ -50,8 +51,10 @@ GlyphCache::Impl::Packed GlyphCache::Impl::get(const Font& font, std::uint32_t g
       break;
     }
   }
+  bool mesh_fresh = false;  // scratch.mesh holds this glyph's mesh
   if (entry == lru.end()) {
     ++stats.misses;
+    mesh_fresh = true;
     Outline& outline = scratch.outline;
     font.glyph_outline(glyph_id, outline);
     int lod = 0;
@@ -80,6 +83,20 @@ GlyphCache::Impl::Packed GlyphCache::Impl::get(const Font& font, std::uint32_t g
     stats.bytes += glyph.buffers->bytes;
     stats.gpu_bytes += glyph.buffers->bytes;
   }
+  // Bands need float textures and texelFetch (GLES 3, GL 3.3).
+  if (upload && !glyph.bands.tried && !glyph.packed.empty() && gpu::ContextInfo::current().gl3()) {
+    if (!mesh_fresh) {
+      // Packed without bands before (a GLES2 block): the mesh again.
+      font.glyph_outline(glyph_id, scratch.outline);
+      MeshOptions options;
+      if (entry->key.lod != 0) options.cubic_tolerance = cubic_tolerance_for_lod(entry->key.lod, upem);
+      build_mesh(scratch.outline, options, scratch.mesh);
+    }
+    add_bands(glyph);
+    entry->cost += 2 * glyph.bands.bytes;  // the page's texels on the CPU and on the GPU
+    stats.bytes += 2 * glyph.bands.bytes;
+    stats.gpu_bytes += glyph.bands.bytes;
+  }
   Packed result = entry->glyph;
   evict();
   return result;
@@ -91,10 +108,17 @@ void GlyphCache::Impl::evict() {
     const Entry& victim = lru.back();
     stats.bytes -= victim.cost;
     if (victim.glyph->buffers) stats.gpu_bytes -= victim.glyph->buffers->bytes;
+    stats.gpu_bytes -= victim.glyph->bands.bytes;
     stats.glyphs -= 1;
     index.erase(victim.key);
     lru.pop_back();
   }
+}
+
+void GlyphCache::Impl::add_bands(gpu::CachedGlyph& glyph) {
+  glyph.bands.tried = true;
+  gpu::build_bands(scratch.mesh, scratch.bands, scratch.band);
+  gpu::append_bands(scratch.bands, band_page, glyph.bands);  // false: drawn through its mesh
 }
 
 GlyphCache::GlyphCache(std::size_t budget_bytes) : impl_(std::make_unique<Impl>(budget_bytes)) {}
@@ -237,6 +261,33 @@ std::unique_ptr<BatchImpl> expanded_block(std::span<const CacheImpl::Packed> gly
   return upload(std::move(packed));
 }
 
+// One pass exact area: per inked placement its glyph's box and (offset,
+// first texel, levels), grouped by band page (shaders/bands.vert.glsl). Left
+// out (the block drawn through its meshes) when a glyph has no bands.
+void band_instances(std::span<const CacheImpl::Packed> glyphs, std::span<const PlacedGlyph> placed, BatchImpl& impl) {
+  std::vector<std::pair<std::shared_ptr<const BandPage>, std::vector<float>>> pages;
+  for (std::size_t i = 0; i < placed.size(); ++i) {
+    const CachedGlyph& g = *glyphs[i];
+    if (g.packed.empty()) continue;
+    if (!g.bands.page) return;
+    auto it = std::find_if(pages.begin(), pages.end(), [&](const auto& p) { return p.first == g.bands.page; });
+    if (it == pages.end()) it = pages.insert(pages.end(), {g.bands.page, {}});
+    const Box& box = g.bands.box;
+    it->second.insert(it->second.end(),
+                      {static_cast<float>(box.min.x), static_cast<float>(box.min.y), static_cast<float>(box.max.x),
+                       static_cast<float>(box.max.y), static_cast<float>(placed[i].x), static_cast<float>(placed[i].y),
+                       static_cast<float>(g.bands.first), static_cast<float>(g.bands.levels)});
+  }
+  impl.banded = true;
+  std::vector<float> all;
+  for (auto& [page, floats] : pages) {
+    const auto first = static_cast<GLint>(all.size() / 8);
+    impl.band_runs.push_back({page, first, static_cast<GLsizei>(floats.size() / 8)});
+    all.insert(all.end(), floats.begin(), floats.end());
+  }
+  if (!all.empty()) upload_buffer(GL_ARRAY_BUFFER, impl.bands_vbo, all);
+}
+
 // Instancing: one offset per placement, grouped by glyph (a counting sort:
 // linear in the placements).
 std::unique_ptr<BatchImpl> instanced_block(std::span<const CacheImpl::Packed> glyphs,
@@ -273,12 +324,81 @@ std::unique_ptr<BatchImpl> instanced_block(std::span<const CacheImpl::Packed> gl
     offsets[2 * slot + 1] = static_cast<float>(placed[i].y);
   }
   upload_buffer(GL_ARRAY_BUFFER, impl->offsets_vbo, offsets);
+  band_instances(glyphs, placed, *impl);
   if (GLenum err = glGetError(); err != GL_NO_ERROR)
     throw Error(ErrorCode::Gl, "text block upload failed (GL error 0x" + gl_error_text(err) + ")");
   return impl;
 }
 
 }  // namespace
+
+bool append_bands(const GlyphBands& bands, std::shared_ptr<BandPage>& page_slot, GlyphBandRef& out) {
+  constexpr std::size_t kWidth = kBandTextureWidth;
+  constexpr std::size_t kPageTexels = kMaxBandPageRows * kWidth;
+  if (bands.empty() || bands.texels.size() > kPageTexels) return false;
+  if (!page_slot || page_slot->used + bands.texels.size() > kPageTexels) page_slot = std::make_shared<BandPage>();
+  BandPage& page = *page_slot;
+  const std::size_t first = page.used, end = first + bands.texels.size();
+  const int rows = static_cast<int>((end + kWidth - 1) / kWidth);
+  const bool grow = rows > page.rows;
+  if (grow) {
+    page.rows = std::max(rows, std::min(std::max(2 * page.rows, 8), kMaxBandPageRows));
+    page.texels.resize(static_cast<std::size_t>(page.rows) * kWidth);
+  }
+  std::copy(bands.texels.begin(), bands.texels.end(), page.texels.begin() + static_cast<std::ptrdiff_t>(first));
+  page.used = end;
+  if (page.texture == 0) glGenTextures(1, &page.texture);
+  if (page.texture == 0) throw Error(ErrorCode::Gl, "glGenTextures failed (is a GL context current?)");
+  {
+    const TextureUploadScope bound(page.texture);
+    if (grow) {
+      // Re-specified whole: blocks drawing from the page keep its texture name.
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, static_cast<GLsizei>(kWidth), page.rows, 0, GL_RGBA, GL_FLOAT,
+                   page.texels.data());
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    } else {
+      const int row0 = static_cast<int>(first / kWidth);
+      glTexSubImage2D(GL_TEXTURE_2D, 0, 0, row0, static_cast<GLsizei>(kWidth), rows - row0, GL_RGBA, GL_FLOAT,
+                      page.texels.data() + static_cast<std::size_t>(row0) * kWidth);
+    }
+  }
+  if (GLenum err = glGetError(); err != GL_NO_ERROR)
+    throw Error(ErrorCode::Gl, "band texture upload failed (GL error 0x" + gl_error_text(err) + ")");
+  out.page = page_slot;
+  out.first = static_cast<int>(first);
+  out.levels = bands.levels;
+  out.box = bands.box;
+  out.bytes = bands.bytes();
+  return true;
+}
+
+void add_mesh_bands(BatchImpl& impl, std::span<const Mesh* const> meshes, std::span<const Vec2> offsets) {
+  std::shared_ptr<BandPage> page;
+  BandScratch scratch;
+  GlyphBands bands;
+  std::vector<float> instances;
+  std::vector<BatchImpl::BandRun> runs;
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    build_bands(*meshes[i], bands, scratch);
+    if (bands.empty()) continue;
+    GlyphBandRef ref;
+    const BandPage* before = page.get();
+    if (!append_bands(bands, page, ref)) return;  // too large for a page: the mesh path only
+    if (runs.empty() || page.get() != before) runs.push_back({page, static_cast<GLint>(instances.size() / 8), 0});
+    ++runs.back().count;
+    const Box& box = ref.box;
+    instances.insert(instances.end(),
+                     {static_cast<float>(box.min.x), static_cast<float>(box.min.y), static_cast<float>(box.max.x),
+                      static_cast<float>(box.max.y), static_cast<float>(offsets[i].x), static_cast<float>(offsets[i].y),
+                      static_cast<float>(ref.first), static_cast<float>(ref.levels)});
+  }
+  if (!instances.empty()) upload_buffer(GL_ARRAY_BUFFER, impl.bands_vbo, instances);
+  impl.band_runs = std::move(runs);
+  impl.banded = true;
+}
 
 std::unique_ptr<BatchImpl> text_block(CacheImpl& cache, const Font& font, std::span<const PlacedGlyph> glyphs,
                                       double pixels_per_em, BlockPath path) {
@@ -333,7 +453,11 @@ std::size_t DrawBatch::vertex_count() const {
 }
 std::size_t DrawBatch::gpu_bytes() const {
   if (!impl_) return 0;
-  if (impl_->instanced()) return impl_->placements * 2 * sizeof(float);
+  if (impl_->instanced()) {
+    std::size_t banded = 0;
+    for (const Impl::BandRun& run : impl_->band_runs) banded += static_cast<std::size_t>(run.count);
+    return impl_->placements * 2 * sizeof(float) + banded * 8 * sizeof(float);
+  }
   if (impl_->bitmaps()) return impl_->vertex_count * 4 * sizeof(float);
   const std::size_t index_bytes = impl_->index_type == GL_UNSIGNED_SHORT ? 2
                                   : impl_->index_type == GL_UNSIGNED_INT ? 4

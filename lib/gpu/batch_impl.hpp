@@ -3,6 +3,7 @@
 
 #include <GLES2/gl2.h>
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <list>
@@ -13,6 +14,7 @@
 
 #include "curvetext/draw_batch.hpp"
 #include "curvetext/glyph_cache.hpp"
+#include "gpu/bands.hpp"
 #include "gpu/vertex_format.hpp"
 
 namespace curvetext {
@@ -40,12 +42,42 @@ struct GlyphBuffers {
   }
 };
 
+// A texture of glyphs' curve bands (bands.hpp): RGBA32F, kBandTextureWidth
+// texels a row, rows added as glyphs are (the texels kept here too, to fill
+// a grown texture). Shared by the cache and every block that draws from it;
+// deleted with the last of them (the context that made it current).
+struct BandPage {
+  GLuint texture = 0;
+  int rows = 0;                              // allocated
+  std::size_t used = 0;                      // texels
+  std::vector<std::array<float, 4>> texels;  // rows * kBandTextureWidth
+
+  BandPage() = default;
+  BandPage(const BandPage&) = delete;
+  BandPage& operator=(const BandPage&) = delete;
+  ~BandPage() {
+    if (texture != 0) glDeleteTextures(1, &texture);
+  }
+};
+
+// A glyph's place in a band page: its first texel, its bands' levels and
+// the box of its pieces (outline units, the floats the shader reads).
+struct GlyphBandRef {
+  std::shared_ptr<BandPage> page;  // null: no bands (not built, or too large for a page)
+  int first = 0, levels = 0;
+  Box box;
+  std::size_t bytes = 0;  // its texels
+  bool tried = false;     // built (or found too large) already
+};
+
 // A glyph cache entry: the packed mesh, the box of its base positions
-// (outline units), and its GPU buffers once an instanced block needed them.
+// (outline units), its GPU buffers once an instanced block needed them, and
+// its curve bands then (where the context has float textures).
 struct CachedGlyph {
   PackedMesh packed;
   Box bounds;
   std::shared_ptr<const GlyphBuffers> buffers;
+  GlyphBandRef bands;
 };
 
 // A page of the colour bitmap atlas (lib/gpu/color_bitmaps.cpp): one RGBA8
@@ -98,6 +130,18 @@ struct DrawBatch::Impl {
   std::vector<Run> runs;
   std::size_t placements = 0;
 
+  // One pass exact area (bands.hpp): per placement 8 floats, the glyph's
+  // box (a_rect) and (offset, first texel, levels) (a_place), one run of
+  // placements per band page. `banded`: every inked placement has bands.
+  struct BandRun {
+    std::shared_ptr<const gpu::BandPage> page;
+    GLint first = 0;
+    GLsizei count = 0;
+  };
+  GLuint bands_vbo = 0;
+  std::vector<BandRun> band_runs;
+  bool banded = false;
+
   // Colour bitmaps: textured quads (6 vertices of x, y, u, v each, outline
   // units and texture coordinates), one run per atlas page.
   struct BitmapRun {
@@ -119,6 +163,7 @@ struct DrawBatch::Impl {
     if (vbo != 0) glDeleteBuffers(1, &vbo);
     if (ibo != 0) glDeleteBuffers(1, &ibo);
     if (offsets_vbo != 0) glDeleteBuffers(1, &offsets_vbo);
+    if (bands_vbo != 0) glDeleteBuffers(1, &bands_vbo);
     if (bitmap_vbo != 0) glDeleteBuffers(1, &bitmap_vbo);
   }
   bool instanced() const { return offsets_vbo != 0; }
@@ -163,7 +208,11 @@ struct GlyphCache::Impl {
     Outline outline;
     Mesh mesh;
     gpu::PackScratch pack;
+    gpu::BandScratch band;
+    gpu::GlyphBands bands;
   } scratch;
+  // The band page being filled (older ones live while glyphs on them do).
+  std::shared_ptr<gpu::BandPage> band_page;
   std::list<Entry> lru;  // most recently used first
   std::unordered_map<Key, std::list<Entry>::iterator, KeyHash> index;
   Stats stats;
@@ -178,6 +227,9 @@ struct GlyphCache::Impl {
 
  private:
   void evict();
+  // Builds the glyph's bands from scratch.mesh (the entry's mesh) and adds
+  // them to the band page; leaves them null where they do not fit a page.
+  void add_bands(gpu::CachedGlyph& glyph);
 };
 
 // Reach the private state of DrawBatch and GlyphCache (friends of each):
@@ -216,6 +268,17 @@ std::unique_ptr<BatchImpl> text_block(CacheImpl& cache, const Font& font, std::s
 std::shared_ptr<const GlyphBuffers> upload_glyph(const PackedMesh& packed);
 // Whether the current context draws instanced (GLES 3+, desktop GL 3.3+).
 bool context_instances();
+// Rows a band page has at most (16 MiB of RGBA32F texels).
+inline constexpr int kMaxBandPageRows = 1024;
+// Appends a glyph's bands to the page in `page_slot` (a new page there when
+// it is full) and uploads them; false, and nothing added, when they are
+// empty or larger than a page. Error(Gl) if the upload fails.
+bool append_bands(const GlyphBands& bands, std::shared_ptr<BandPage>& page_slot, GlyphBandRef& out);
+// Gives a batch (its meshes uploaded already) the bands of `meshes`, each
+// placed at its offset (outline units), in pages of its own: full then draws
+// it in one pass (the shapes' and tests' way to the band path). Leaves it
+// without bands if one is too large for a page.
+void add_mesh_bands(BatchImpl& impl, std::span<const Mesh* const> meshes, std::span<const Vec2> offsets);
 }  // namespace gpu
 
 }  // namespace curvetext

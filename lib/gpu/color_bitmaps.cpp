@@ -18,44 +18,6 @@ namespace curvetext {
 
 namespace {
 
-// Binds a texture for an upload with tightly packed rows, and puts the
-// application's binding (of the active unit) and unpack state back.
-class TextureUploadScope {
- public:
-  explicit TextureUploadScope(GLuint texture) : info_(gpu::ContextInfo::current()) {
-    glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture_);
-    glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment_);
-    if (info_.gl3()) {
-      glGetIntegerv(GL_UNPACK_ROW_LENGTH, &row_length_);
-      glGetIntegerv(GL_UNPACK_SKIP_ROWS, &skip_rows_);
-      glGetIntegerv(GL_UNPACK_SKIP_PIXELS, &skip_pixels_);
-      glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &unpack_buffer_);
-      glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-      glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
-      glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
-      glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
-    }
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glBindTexture(GL_TEXTURE_2D, texture);
-  }
-  ~TextureUploadScope() {
-    glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(texture_));
-    glPixelStorei(GL_UNPACK_ALIGNMENT, alignment_);
-    if (info_.gl3()) {
-      glPixelStorei(GL_UNPACK_ROW_LENGTH, row_length_);
-      glPixelStorei(GL_UNPACK_SKIP_ROWS, skip_rows_);
-      glPixelStorei(GL_UNPACK_SKIP_PIXELS, skip_pixels_);
-      glBindBuffer(GL_PIXEL_UNPACK_BUFFER, static_cast<GLuint>(unpack_buffer_));
-    }
-  }
-  TextureUploadScope(const TextureUploadScope&) = delete;
-  TextureUploadScope& operator=(const TextureUploadScope&) = delete;
-
- private:
-  gpu::ContextInfo info_;
-  GLint texture_ = 0, alignment_ = 4, row_length_ = 0, skip_rows_ = 0, skip_pixels_ = 0, unpack_buffer_ = 0;
-};
-
 void check_gl(const char* what) {
   if (GLenum err = glGetError(); err != GL_NO_ERROR)
     throw Error(ErrorCode::Gl, std::string(what) + " failed (GL error " + gpu::hex(err) + ")");
@@ -107,7 +69,7 @@ std::shared_ptr<gpu::AtlasPage> new_page(int needed) {
   auto page = std::make_shared<gpu::AtlasPage>();
   glGenTextures(1, &page->texture);
   if (page->texture == 0) throw Error(ErrorCode::Gl, "glGenTextures failed (is a GL context current?)");
-  const TextureUploadScope bound(page->texture);
+  const gpu::TextureUploadScope bound(page->texture);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, side, side, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -179,7 +141,7 @@ gpu::CachedBitmap gpu::CacheImpl::bitmap(const Font& font, std::uint32_t glyph_i
       place(*pages.back(), l.w + 2, l.h + 2, x, y);
     }
     {
-      const TextureUploadScope bound(pages.back()->texture);
+      const gpu::TextureUploadScope bound(pages.back()->texture);
       glTexSubImage2D(GL_TEXTURE_2D, 0, x, y, l.w + 2, l.h + 2, GL_RGBA, GL_UNSIGNED_BYTE, l.rgba.data());
     }
     check_gl("uploading a colour bitmap");

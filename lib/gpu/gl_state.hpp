@@ -80,4 +80,42 @@ class BufferBindingScope {
   GLint previous_ = 0;
 };
 
+// Binds a texture for an upload with tightly packed rows, and puts the
+// application's binding (of the active unit) and unpack state back.
+class TextureUploadScope {
+ public:
+  explicit TextureUploadScope(GLuint texture) : info_(ContextInfo::current()) {
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture_);
+    glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment_);
+    if (info_.gl3()) {
+      glGetIntegerv(GL_UNPACK_ROW_LENGTH, &row_length_);
+      glGetIntegerv(GL_UNPACK_SKIP_ROWS, &skip_rows_);
+      glGetIntegerv(GL_UNPACK_SKIP_PIXELS, &skip_pixels_);
+      glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &unpack_buffer_);
+      glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+      glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+      glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+      glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    }
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glBindTexture(GL_TEXTURE_2D, texture);
+  }
+  ~TextureUploadScope() {
+    glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(texture_));
+    glPixelStorei(GL_UNPACK_ALIGNMENT, alignment_);
+    if (info_.gl3()) {
+      glPixelStorei(GL_UNPACK_ROW_LENGTH, row_length_);
+      glPixelStorei(GL_UNPACK_SKIP_ROWS, skip_rows_);
+      glPixelStorei(GL_UNPACK_SKIP_PIXELS, skip_pixels_);
+      glBindBuffer(GL_PIXEL_UNPACK_BUFFER, static_cast<GLuint>(unpack_buffer_));
+    }
+  }
+  TextureUploadScope(const TextureUploadScope&) = delete;
+  TextureUploadScope& operator=(const TextureUploadScope&) = delete;
+
+ private:
+  ContextInfo info_;
+  GLint texture_ = 0, alignment_ = 4, row_length_ = 0, skip_rows_ = 0, skip_pixels_ = 0, unpack_buffer_ = 0;
+};
+
 }  // namespace curvetext::gpu

@@ -17,6 +17,7 @@
 
 #include "curvetext/error.hpp"
 #include "core/tolerances.hpp"
+#include "gpu/bands.hpp"
 #include "gpu/batch_impl.hpp"
 #include "gpu/gl_state.hpp"
 #include "gpu/gl_util.hpp"
@@ -46,6 +47,8 @@ bool is_gles() {
   const char* v = reinterpret_cast<const char*>(glGetString(GL_VERSION));
   return v != nullptr && std::strncmp(v, "OpenGL ES", 9) == 0;
 }
+
+void compile_text(const Shader& shader, GLenum type, const std::string& text);
 
 // The shader files are GLSL ES 1.00 without a #version line; desktop core
 // profiles (GUI toolkits) get 3.30 with the renamed built-ins mapped back.
@@ -83,6 +86,21 @@ void compile(const Shader& shader, GLenum type, const char* source, bool gles, c
       line += n;
     }
   }
+  compile_text(shader, type, text);
+}
+
+// The band shaders (bands.vert/frag.glsl) are GLSL ES 3.00 / desktop 3.30
+// (texelFetch, integer operations, flat varyings); the preamble is only the
+// #version line and the band texture's width.
+void compile_glsl3(const Shader& shader, GLenum type, const char* source, bool gles, const std::string& defines) {
+  char width[96];
+  std::snprintf(width, sizeof width, "#define CURVETEXT_BAND_WIDTH %d\n#define CURVETEXT_BAND_WIDTH_LOG2 %d\n",
+                gpu::kBandTextureWidth, gpu::kBandTextureWidthLog2);
+  compile_text(shader, type,
+               std::string(gles ? "#version 300 es\n" : "#version 330 core\n") + width + defines + source);
+}
+
+void compile_text(const Shader& shader, GLenum type, const std::string& text) {
   const char* src = text.c_str();
   glShaderSource(shader.id, 1, &src, nullptr);
   glCompileShader(shader.id);
@@ -186,6 +204,16 @@ struct Renderer::Impl {
   // The same with a gradient's colour per pixel (paint_composite.frag.glsl).
   QuadProgram paint_composite[2][2];
   gpu::PaintUniforms paint_u[2][2];
+  // One pass exact area from curve bands (bands.vert/frag.glsl), without
+  // and with gamma; a quad's corners for its instances.
+  struct BandProgram {
+    GLuint id = 0;
+    ProgramUniforms view;
+    GLint half = -1, bands = -1;
+  };
+  BandProgram band_program[2];
+  GLuint corner_vbo = 0;
+  std::size_t band_draws = 0;
   // Colour bitmaps: textured quads (bitmap.vert/frag.glsl).
   GLuint bitmap_program = 0;
   GLint bitmap_transform = -1, bitmap_viewport = -1, bitmap_depth = -1, bitmap_texture = -1, bitmap_opacity = -1,
@@ -314,6 +342,7 @@ struct Renderer::Impl {
   // Each program compiled and linked on first use (Error(Gl) if it fails).
   void make_curve_program();
   void make_area_programs(bool gamma);  // area_program[gamma]
+  const BandProgram& make_band_program(bool gamma);
   const QuadProgram& composite_program(bool box, bool gamma);
   const QuadProgram& resolve_program();
   const QuadProgram& paint_program(bool box, bool gamma);
@@ -325,18 +354,20 @@ struct Renderer::Impl {
   void draw_area(const gpu::BatchImpl& b, const Transform& full, float vw, float vh, const std::array<float, 4>& color,
                  float gamma, CurveMode curve_mode, bool accumulate);
   void draw_debug_edges(const gpu::BatchImpl& b, const Transform& full, float vw, float vh);
+  bool draw_bands(const gpu::BatchImpl& b, const Transform& full, float vw, float vh, const DrawOptions& options);
   void draw_bitmaps(const gpu::BatchImpl& b, const Transform& full, float vw, float vh, const DrawOptions& options);
 
   Impl() = default;
   Impl(const Impl&) = delete;
   Impl& operator=(const Impl&) = delete;
   ~Impl() {
-    for (GLuint p :
-         {program, area_program[0][0], area_program[0][1], area_program[1][0], area_program[1][1], resolve.id,
-          composite[0][0].id, composite[0][1].id, composite[1][0].id, composite[1][1].id, bitmap_program,
-          paint_composite[0][0].id, paint_composite[0][1].id, paint_composite[1][0].id, paint_composite[1][1].id})
+    for (GLuint p : {program, area_program[0][0], area_program[0][1], area_program[1][0], area_program[1][1],
+                     resolve.id, composite[0][0].id, composite[0][1].id, composite[1][0].id, composite[1][1].id,
+                     bitmap_program, paint_composite[0][0].id, paint_composite[0][1].id, paint_composite[1][0].id,
+                     paint_composite[1][1].id, band_program[0].id, band_program[1].id})
       if (p != 0) glDeleteProgram(p);
     if (quad_vbo != 0) glDeleteBuffers(1, &quad_vbo);
+    if (corner_vbo != 0) glDeleteBuffers(1, &corner_vbo);
     if (vao != 0) glDeleteVertexArrays(1, &vao);
     for (Slot& s : slots) {
       if (s.fbo != 0) glDeleteFramebuffers(1, &s.fbo);
@@ -404,6 +435,26 @@ void Renderer::Impl::make_area_programs(bool gamma) {
     area_program[g][curved] = link_program(vs, fs, {"a_pos", "a_info", "a_offset"}, "full antialiasing program");
     area_u[g][curved] = ProgramUniforms::of(area_program[g][curved]);
   }
+}
+
+const Renderer::Impl::BandProgram& Renderer::Impl::make_band_program(bool gamma) {
+  BandProgram& p = band_program[gamma ? 1 : 0];
+  if (p.id != 0) return p;
+  Shader vs(GL_VERTEX_SHADER), fs(GL_FRAGMENT_SHADER);
+  compile_glsl3(vs, GL_VERTEX_SHADER, shader_source::bands_vert_glsl, gles, "");
+  compile_glsl3(fs, GL_FRAGMENT_SHADER, shader_source::bands_frag_glsl, gles,
+                std::string("#define CURVETEXT_GAMMA ") + (gamma ? "1" : "0") + "\n");
+  p.id = link_program(vs, fs, {"a_corner", "a_rect", "a_place"}, "band program");
+  p.view = ProgramUniforms::of(p.id);
+  p.half = glGetUniformLocation(p.id, "u_half");
+  p.bands = glGetUniformLocation(p.id, "u_bands");
+  if (corner_vbo == 0) {
+    const GLfloat corners[8] = {0, 0, 1, 0, 0, 1, 1, 1};
+    glGenBuffers(1, &corner_vbo);
+    const gpu::BufferBindingScope bound(GL_ARRAY_BUFFER, corner_vbo);
+    glBufferData(GL_ARRAY_BUFFER, sizeof corners, corners, GL_STATIC_DRAW);
+  }
+  return p;
 }
 
 const Renderer::Impl::QuadProgram& Renderer::Impl::composite_program(bool box, bool gamma) {
@@ -512,6 +563,9 @@ void Renderer::draw(const DrawBatch& batch, const Placement& placement, const Dr
     r.draw_curves(b, full, vw, vh, options);
     return;
   }
+  if (options.antialiasing == AntiAliasing::Full && b.banded && options.curve_mode == CurveMode::Exact &&
+      options.gradient == nullptr && r.draw_bands(b, full, vw, vh, options))
+    return;
   if (r.draw_offscreen(b, full, vw, vh, state, options)) return;
   if (options.gradient)
     throw Error(ErrorCode::InvalidArgument, "a gradient cannot be drawn where no coverage buffer fits the block");
@@ -878,6 +932,73 @@ class SamplerScope {
 };
 
 }  // namespace
+
+// full for text blocks (docs/design.md section 9): one instanced quad per
+// placed glyph, each pixel's exact area from the glyph's curve bands
+// blended straight into the target (premultiplied source-over, its depth
+// test): no offscreen pass. Under a map that keeps the axes (scale, flips,
+// translation; false otherwise: the caller takes the mesh path), where a
+// pixel's footprint in outline units is a box of half-size u_half.
+// Where the application writes depth, the glyphs' quads overlap at one
+// depth: the colour pass leaves depth alone (a glyph would hide its
+// neighbour's fringe), and a second pass writes it where there is ink.
+bool Renderer::Impl::draw_bands(const gpu::BatchImpl& b, const Transform& full, float vw, float vh,
+                                const DrawOptions& options) {
+  const auto& m = full.m;
+  if (m[1] != 0.0 || m[3] != 0.0 || m[6] != 0.0 || m[7] != 0.0 || !(m[8] > 0.0)) return false;
+  const double sx = std::abs(m[0] / m[8]), sy = std::abs(m[4] / m[8]);
+  if (!(sx > 0.0) || !(sy > 0.0) || !std::isfinite(sx) || !std::isfinite(sy)) return false;
+  const bool gamma = coverage_exponent(options.gamma) != 1.0f;
+  const BandProgram& p = make_band_program(gamma);
+  glUseProgram(p.id);
+  set_view(p.view, full, vw, vh, pass_depth);
+  glUniform2f(p.half, static_cast<float>(0.5 / sx), static_cast<float>(0.5 / sy));
+  const std::array<float, 4> color = premultiplied(options.color, target_blending);
+  glUniform4f(p.view.color, color[0], color[1], color[2], color[3]);
+  glUniform1f(p.view.coverage_exponent, coverage_exponent(options.gamma));
+  glUniform1i(p.bands, 0);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  glActiveTexture(GL_TEXTURE0);
+  const SamplerScope sampler(true);
+  glBindBuffer(GL_ARRAY_BUFFER, corner_vbo);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glBindBuffer(GL_ARRAY_BUFFER, b.bands_vbo);
+  for (GLuint a = 1; a <= 2; ++a) {
+    glEnableVertexAttribArray(a);
+    glVertexAttribDivisor(a, 1);
+  }
+  GLboolean depth_writes = GL_FALSE;
+  glGetBooleanv(GL_DEPTH_WRITEMASK, &depth_writes);
+  const bool depth_pass = depth_writes == GL_TRUE && glIsEnabled(GL_DEPTH_TEST) == GL_TRUE;
+  if (depth_pass) glDepthMask(GL_FALSE);
+  for (int pass = 0; pass < (depth_pass ? 2 : 1); ++pass) {
+    if (pass == 1) {
+      glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // restored with the application's state
+      glDepthMask(GL_TRUE);
+    }
+    for (const gpu::BatchImpl::BandRun& run : b.band_runs) {
+      glBindTexture(GL_TEXTURE_2D, run.page->texture);
+      const auto at = [&](std::size_t offset) {
+        return reinterpret_cast<const void*>(static_cast<std::uintptr_t>(run.first) * 32u + offset);
+      };
+      glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, 32, at(0));
+      glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, 32, at(16));
+      glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, run.count);
+    }
+  }
+  for (GLuint a = 0; a <= 2; ++a) {
+    glVertexAttribDivisor(a, 0);
+    glDisableVertexAttribArray(a);
+  }
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  ++band_draws;
+  if (GLenum err = glGetError(); err != GL_NO_ERROR)
+    throw Error(ErrorCode::Gl, "drawing curve bands failed (GL error " + hex(err) + ")");
+  return true;
+}
 
 // Colour bitmaps: one draw per atlas page, premultiplied source-over into
 // the application's framebuffer (its depth test as it is).

@@ -374,8 +374,10 @@ if timeout 120 "$CURVETEXT" render --size 24 --text "Hamburg Qg" -o "$tmp/vec.sv
    timeout 120 "$CURVETEXT" shape --input "$tmp/vec.svg" -o "$tmp/vec-back.png" 2>>"$tmp/stderr" &&
    read -r w h maxdiff ink_png ink_svg <<<"$(python3 "$here/png_diff.py" "$tmp/vec.png" "$tmp/vec-back.png")" &&
    # The SVG's outlines (rounded to 1/1000 px) drawn as a shape: the same
-   # exact-area coverage as the text, so at most a level or two apart.
-   [ "$maxdiff" -le 2 ] && [ "$ink_png" -gt 10000 ] &&
+   # exact-area coverage as the text, so at most a few levels apart (the
+   # text's glyphs blend one over another where two share a pixel, the
+   # shape's union is one coverage; the shape goes through an 8-bit buffer).
+   [ "$maxdiff" -le 4 ] && [ "$ink_png" -gt 10000 ] &&
    python3 -c "import sys; a, b = int(sys.argv[1]), int(sys.argv[2]); sys.exit(abs(a - b) > 1e-3 * a)" "$ink_png" "$ink_svg"; then
   ok "render -o x.svg: outlines drawn back equal the PNG (${w}x${h}, max diff $maxdiff, ink $ink_png vs $ink_svg)"
 else

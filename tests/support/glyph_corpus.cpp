@@ -9,6 +9,7 @@
 #include "curvetext/curves.hpp"
 #include "curvetext/error.hpp"
 #include "curvetext/lod.hpp"
+#include "gpu/batch_impl.hpp"
 #include "support/coverage.hpp"
 #include "support/union_coverage.hpp"
 
@@ -305,7 +306,19 @@ class Checker {
     Coverage drawn;
     try {
       const Mesh merged = merge_page(page, options_.drop_a_triangle);
-      DrawBatch batch = DrawBatch::from_mesh(merged);
+      auto impl = gpu::upload(gpu::pack_mesh(merged));
+      // full in one pass from each glyph's curve bands where the context
+      // instances (as text blocks draw); the broken mesh through its triangles.
+      if (!options_.drop_a_triangle && gpu::context_instances()) {
+        std::vector<const Mesh*> meshes;
+        std::vector<Vec2> offsets;
+        for (const Prepared& g : page.glyphs) {
+          meshes.push_back(&g.mesh);
+          offsets.push_back(Vec2{g.dx, g.dy});
+        }
+        gpu::add_mesh_bands(*impl, meshes, offsets);
+      }
+      DrawBatch batch = DrawBatchAccess::make(std::move(impl));
       target_.begin(page.width, page.height, Color{1, 1, 1, 1});
       DrawOptions draw;
       draw.antialiasing = AntiAliasing::Full;

@@ -1,0 +1,367 @@
+// Per-glyph curve bands and the exact pixel-box area over them (bands.hpp).
+#include "gpu/bands.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <utility>
+
+namespace curvetext::gpu {
+
+namespace {
+
+// A point of the conic in homogeneous form (x w, y w, w).
+struct Homogeneous {
+  double x, y, w;
+  Vec2 point() const { return {x / w, y / w}; }
+};
+
+Homogeneous at(const BandPiece& p, double t) {
+  const double a = 1.0 - t;
+  const double b0 = a * a, b1 = 2.0 * t * a * p.w, b2 = t * t;
+  return {b0 * p.p0.x + b1 * p.c.x + b2 * p.p2.x, b0 * p.p0.y + b1 * p.c.y + b2 * p.p2.y, b0 + b1 + b2};
+}
+
+// The blossom at (t0, t1): the homogeneous control point of the arc between them.
+Homogeneous blossom(const BandPiece& p, double t0, double t1) {
+  const double k0 = (1.0 - t0) * (1.0 - t1), k1 = ((1.0 - t0) * t1 + t0 * (1.0 - t1)) * p.w, k2 = t0 * t1;
+  return {k0 * p.p0.x + k1 * p.c.x + k2 * p.p2.x, k0 * p.p0.y + k1 * p.c.y + k2 * p.p2.y, k0 + k1 + k2};
+}
+
+// The arc between parameters t0 and t1 as a conic of its own (end weights 1).
+BandPiece sub_arc(const BandPiece& p, double t0, double t1) {
+  const Homogeneous q0 = at(p, t0), q1 = blossom(p, t0, t1), q2 = at(p, t1);
+  return {q0.point(), q1.point(), q2.point(), q1.w / std::sqrt(q0.w * q2.w)};
+}
+
+// The roots in (0, 1) of b0 (1-t)^2 + 2 b1 t (1-t) + b2 t^2 (Bernstein
+// coefficients), by the cancellation-free pair q / a and c / q.
+int roots_in_unit(double b0, double b1, double b2, double out[2]) {
+  const double a = b0 - 2.0 * b1 + b2, b = b1 - b0, c = b0;
+  int n = 0;
+  auto keep = [&](double t) {
+    if (t > 0.0 && t < 1.0) out[n++] = t;
+  };
+  if (a == 0.0) {
+    if (b != 0.0) keep(-c / (2.0 * b));
+    return n;
+  }
+  const double d = b * b - a * c;
+  if (d < 0.0) return 0;
+  const double q = -(b + std::copysign(std::sqrt(d), b));
+  keep(q / a);
+  if (q != 0.0 && c / q != q / a) keep(c / q);
+  return n;
+}
+
+// The parameter where one coordinate (a0, a1, a2 at p0, c, p2) of a conic
+// monotone in it reaches `level`; 0 or 1, the nearer end, where it does not.
+double monotone_crossing(double a0, double a1, double a2, double w, double level) {
+  const double b0 = a0 - level, b1 = w * (a1 - level), b2 = a2 - level;
+  const bool increasing = a2 > a0;
+  if (b0 >= 0.0 && b2 >= 0.0) return increasing ? 0.0 : 1.0;
+  if (b0 <= 0.0 && b2 <= 0.0) return increasing ? 1.0 : 0.0;
+  const double a = b0 - 2.0 * b1 + b2, b = b1 - b0;
+  if (a == 0.0) return std::clamp(-b0 / (2.0 * b), 0.0, 1.0);
+  const double q = -(b + std::copysign(std::sqrt(std::max(b * b - a * b0, 0.0)), b));
+  const double r1 = q / a, r2 = q != 0.0 ? b0 / q : r1;
+  return std::clamp(r1 >= 0.0 && r1 <= 1.0 ? r1 : r2, 0.0, 1.0);
+}
+
+double y_at(const BandPiece& p, double t) {
+  const Homogeneous h = at(p, t);
+  return h.y / h.w;
+}
+
+}  // namespace
+
+double conic_segment_ratio(double w) {
+  const double e = 1.0 - w;
+  // Near the parabola the closed forms below cancel; their series in 1 - w.
+  if (std::abs(e) < 0.02)
+    return 2.0 / 3.0 - e * (4.0 / 15.0 + e * (6.0 / 35.0 + e * (32.0 / 315.0 + e * 40.0 / 693.0)));
+  if (w < 1.0) {
+    // An ellipse's arc: an affine image of a circular arc of half-angle acos w.
+    const double s = std::sqrt(e * (1.0 + w));
+    return w * (std::acos(w) - w * s) / (s * s * s);
+  }
+  const double s = std::sqrt((w - 1.0) * (w + 1.0));  // a hyperbola's
+  return w * (w * s - std::acosh(w)) / (s * s * s);
+}
+
+double arc_x_dy(const BandPiece& piece, double t0, double t1) {
+  const BandPiece s = sub_arc(piece, t0, t1);
+  const Vec2 a = s.p0, b = s.p2;
+  return 0.5 * (a.x + b.x) * (b.y - a.y) + conic_segment_ratio(s.w) * 0.5 * cross(s.c - a, b - a);
+}
+
+double piece_box_integral(const BandPiece& p) {
+  double ts[10] = {0.0, 1.0};
+  int n = 2;
+  for (double level : {-0.5, 0.5}) {
+    n += roots_in_unit(p.p0.x - level, p.w * (p.c.x - level), p.p2.x - level, ts + n);
+    n += roots_in_unit(p.p0.y - level, p.w * (p.c.y - level), p.p2.y - level, ts + n);
+  }
+  // Insertion sort: at most 10 values.
+  for (int i = 1; i < n; ++i)
+    for (int j = i; j > 0 && ts[j - 1] > ts[j]; --j) std::swap(ts[j - 1], ts[j]);
+  double sum = 0.0;
+  for (int i = 0; i + 1 < n; ++i) {
+    const double t0 = ts[i], t1 = ts[i + 1];
+    if (!(t1 > t0)) continue;
+    const Vec2 mid = at(p, 0.5 * (t0 + t1)).point();
+    if (mid.y < -0.5 || mid.y > 0.5 || mid.x < -0.5) continue;
+    const double dy = y_at(p, t1) - y_at(p, t0);
+    sum += mid.x > 0.5 ? dy : arc_x_dy(p, t0, t1) + 0.5 * dy;
+  }
+  return sum;
+}
+
+double monotone_piece_box_integral(const BandPiece& p) {
+  if (std::min(p.p0.x, p.p2.x) >= 0.5) return std::clamp(p.p2.y, -0.5, 0.5) - std::clamp(p.p0.y, -0.5, 0.5);
+  const double ty0 = monotone_crossing(p.p0.y, p.c.y, p.p2.y, p.w, -0.5);
+  const double ty1 = monotone_crossing(p.p0.y, p.c.y, p.p2.y, p.w, 0.5);
+  const double lo = std::min(ty0, ty1), hi = std::max(ty0, ty1);
+  if (!(hi > lo)) return 0.0;
+  const double tx0 = std::clamp(monotone_crossing(p.p0.x, p.c.x, p.p2.x, p.w, -0.5), lo, hi);
+  const double tx1 = std::clamp(monotone_crossing(p.p0.x, p.c.x, p.p2.x, p.w, 0.5), lo, hi);
+  // The part right of the box: after the crossing of x = 1/2 where x grows,
+  // before it where x falls.
+  const bool increasing = p.p2.x > p.p0.x;
+  const double r0 = increasing ? tx1 : lo, r1 = increasing ? hi : tx1;
+  double sum = y_at(p, r1) - y_at(p, r0);
+  const double m0 = std::min(tx0, tx1), m1 = std::max(tx0, tx1);
+  if (m1 > m0) sum += arc_x_dy(p, m0, m1) + 0.5 * (y_at(p, m1) - y_at(p, m0));
+  return sum;
+}
+
+// At a turn the control point is snapped onto the tangent's axis, so that
+// each piece is monotone exactly.
+void split_monotone(const BandPiece& p, std::vector<BandPiece>& out) {
+  // The parameters where x turns (kind 1) and where y turns (kind 2):
+  // x'(t) W - x W'(t) = 2 (w (x1 - x0) (1-t)^2 + (x2 - x0) t (1-t) + w (x2 - x1) t^2).
+  double roots[2];
+  std::pair<double, int> cuts[6];
+  int n = 0;
+  for (int axis = 0; axis < 2; ++axis) {
+    const auto v = [axis](Vec2 q) { return axis == 0 ? q.x : q.y; };
+    const int r = roots_in_unit(p.w * (v(p.c) - v(p.p0)), 0.5 * (v(p.p2) - v(p.p0)), p.w * (v(p.p2) - v(p.c)), roots);
+    for (int i = 0; i < r; ++i) cuts[n++] = {roots[i], axis + 1};
+  }
+  if (n == 0) {
+    out.push_back(p);
+    return;
+  }
+  std::sort(cuts, cuts + n);
+  cuts[n++] = {1.0, 0};
+  double t0 = 0.0;
+  int kind0 = 0;
+  for (int i = 0; i < n; ++i) {
+    const auto [t1, kind1] = cuts[i];
+    if (!(t1 > t0)) continue;
+    BandPiece s = sub_arc(p, t0, t1);
+    if (t0 > 0.0) s.p0 = out.back().p2;  // shared exactly with the previous piece
+    if (t1 == 1.0) s.p2 = p.p2;
+    // The tangent at a turn is along an axis: the control point lies on it.
+    if (kind0 != 0) (kind0 == 1 ? s.c.x : s.c.y) = kind0 == 1 ? s.p0.x : s.p0.y;
+    if (kind1 != 0) (kind1 == 1 ? s.c.x : s.c.y) = kind1 == 1 ? s.p2.x : s.p2.y;
+    out.push_back(s);
+    t0 = t1;
+    kind0 = kind1;
+  }
+}
+
+void boundary_pieces(const Mesh& mesh, std::vector<BandPiece>& out) {
+  out.clear();
+  for (const auto& line : mesh.boundary_lines) {
+    const Vec2 a = mesh.points[line[0]], b = mesh.points[line[1]];
+    if (a == b) continue;
+    out.push_back({a, 0.5 * (a + b), b, 1.0});
+  }
+  for (const CurvedTriangle& ct : mesh.curves) {
+    BandPiece p{mesh.points[ct.p0], mesh.points[ct.control], mesh.points[ct.p2], ct.weight};
+    // The fill lies left of the direction: the control point is right of it
+    // where the fill is on the chord's side, left of it where beyond the arc.
+    const bool control_left = cross(p.p2 - p.p0, p.c - p.p0) > 0.0;
+    if (control_left == ct.convex) std::swap(p.p0, p.p2);
+    split_monotone(p, out);
+  }
+}
+
+namespace {
+
+float round_down(double v) {
+  const float f = static_cast<float>(v);
+  return static_cast<double>(f) > v ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+}
+float round_up(double v) {
+  const float f = static_cast<float>(v);
+  return static_cast<double>(f) < v ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
+
+// An entry's texel: the piece's x range (outward to floats) and its end
+// points' heights (first, last: a monotone piece's y range, and its height).
+std::array<float, 4> entry_of(const BandPiece& p) {
+  return {round_up(std::max({p.p0.x, p.c.x, p.p2.x})), round_down(std::min({p.p0.x, p.c.x, p.p2.x})),
+          static_cast<float>(p.p0.y), static_cast<float>(p.p2.y)};
+}
+
+// A line is stored as the conic whose control point is its midpoint (w 1).
+bool is_line(const BandPiece& p) { return p.w == 1.0 && p.c == 0.5 * (p.p0 + p.p2); }
+
+// Levels so that the finest level's bands hold a few pieces each: a band
+// of level L spans 2 / 2^L of the glyph's height.
+int levels_for(std::size_t pieces) {
+  int levels = 1;
+  while (levels < kMaxBandLevels && (std::size_t{1} << (levels - 1)) < pieces) ++levels;
+  return levels;
+}
+
+}  // namespace
+
+namespace {
+
+// The bands of `level` that piece i's heights [lo, hi] (from y0) reach, a
+// little generously (an extra piece is culled by the shader's height test).
+std::pair<std::size_t, std::size_t> band_range(double lo, double hi, double h, std::size_t n) {
+  // Band k holds [k h, (k + 2) h]; a margin of 1e-4 h covers the shader's
+  // rounding of the row's band.
+  const double k0 = std::floor(lo / h - 1e-4) - 2.0, k1 = std::floor(hi / h + 1e-4);
+  const auto clamp_k = [&](double k) {
+    return static_cast<std::size_t>(std::clamp(k, 0.0, static_cast<double>(n - 1)));
+  };
+  return {clamp_k(k0), clamp_k(k1)};
+}
+
+// The entries of every band of every level (level L, band k: 2^L - 1 + k),
+// a band's by decreasing largest x, and their pieces' texels in `refs`:
+// counted per band, then placed, pieces taken in that order (linear in the
+// entries after one sort of the pieces).
+void add_entries(const std::vector<BandPiece>& pieces, std::size_t piece_texel, GlyphBands& out, BandScratch& scratch) {
+  const std::size_t n = pieces.size(), bands = (std::size_t{1} << out.levels) - 1;
+  std::vector<std::array<float, 4>>& entries = scratch.entries;
+  entries.resize(n);
+  for (std::size_t i = 0; i < n; ++i) entries[i] = entry_of(pieces[i]);
+  std::vector<std::uint32_t>& order = scratch.order;
+  order.resize(n);
+  for (std::uint32_t i = 0; i < n; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return entries[a][0] > entries[b][0]; });
+  const double y0 = out.box.min.y, height = out.box.max.y - out.box.min.y;
+  std::vector<std::uint32_t>& next = scratch.next;  // per band: its next entry
+  next.assign(bands + 1, 0);
+  const auto each_band = [&](std::size_t i, auto&& visit) {
+    const BandPiece& p = pieces[i];
+    const double lo = std::min({p.p0.y, p.c.y, p.p2.y}) - y0, hi = std::max({p.p0.y, p.c.y, p.p2.y}) - y0;
+    for (int level = 0; level < out.levels; ++level) {
+      const std::size_t count = std::size_t{1} << level;
+      const auto [k0, k1] = band_range(lo, hi, height / static_cast<double>(count), count);
+      for (std::size_t k = k0; k <= k1; ++k) visit(count - 1 + k);
+    }
+  };
+  for (std::size_t i = 0; i < n; ++i) each_band(i, [&](std::size_t band) { ++next[band + 1]; });
+  for (std::size_t b = 0; b < bands; ++b) {
+    std::array<float, 4>& header = out.texels[1 + b / 2];
+    header[2 * (b % 2)] = static_cast<float>(next[b]);
+    header[2 * (b % 2) + 1] = static_cast<float>(next[b + 1]);
+    next[b + 1] += next[b];
+  }
+  const std::size_t total = next[bands], entry_texel = out.texels.size();
+  out.texels.resize(entry_texel + total);
+  scratch.refs.resize(total);
+  for (std::uint32_t i : order)
+    each_band(i, [&](std::size_t band) {
+      const std::uint32_t j = next[band]++;
+      out.texels[entry_texel + j] = entries[i];
+      scratch.refs[j] = static_cast<std::uint32_t>(piece_texel + 2 * i);
+    });
+}
+
+}  // namespace
+
+void build_bands(const Mesh& mesh, GlyphBands& out, BandScratch& scratch) {
+  out.texels.clear();
+  out.levels = 0;
+  out.pieces = out.entries = 0;
+  std::vector<BandPiece>& pieces = scratch.pieces;
+  boundary_pieces(mesh, pieces);
+  Box box;
+  for (const BandPiece& p : pieces)
+    for (Vec2 v : {p.p0, p.c, p.p2}) box.add({static_cast<float>(v.x), static_cast<float>(v.y)});
+  out.box = box;
+  if (pieces.empty() || !(box.max.y > box.min.y)) return;
+  out.levels = levels_for(pieces.size());
+  out.pieces = pieces.size();
+  const std::size_t bands = (std::size_t{1} << out.levels) - 1;
+  const std::size_t piece_texel = 1 + (bands + 1) / 2;  // after texel 0 and the headers
+  out.texels.assign(piece_texel + 2 * pieces.size(), {0.0f, 0.0f, 0.0f, 0.0f});
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    const BandPiece& p = pieces[i];
+    const auto f = [](double v) { return static_cast<float>(v); };
+    out.texels[piece_texel + 2 * i] = {f(p.p0.x), f(p.p0.y), f(p.c.x), f(p.c.y)};
+    out.texels[piece_texel + 2 * i + 1] = {f(p.p2.x), f(p.p2.y), f(p.w), is_line(p) ? 1.0f : 0.0f};
+  }
+  const std::size_t entry_texel = out.texels.size();
+  add_entries(pieces, piece_texel, out, scratch);
+  const std::vector<std::uint32_t>& refs = scratch.refs;
+  out.entries = refs.size();
+  const std::size_t ref_texel = out.texels.size();
+  for (std::size_t j = 0; j < refs.size(); j += 4) {
+    std::array<float, 4> t{0.0f, 0.0f, 0.0f, 0.0f};
+    for (std::size_t q = 0; q < 4 && j + q < refs.size(); ++q) t[q] = static_cast<float>(refs[j + q]);
+    out.texels.push_back(t);
+  }
+  out.texels[0] = {static_cast<float>(entry_texel), static_cast<float>(ref_texel), 0.0f, 0.0f};
+}
+
+double box_coverage(std::span<const BandPiece> pieces, Vec2 centre, Vec2 half) {
+  const double kx = 0.5 / half.x, ky = 0.5 / half.y;
+  double sum = 0.0;
+  for (const BandPiece& p : pieces) {
+    const auto px = [&](Vec2 v) { return Vec2{(v.x - centre.x) * kx, (v.y - centre.y) * ky}; };
+    sum += piece_box_integral({px(p.p0), px(p.c), px(p.p2), p.w});
+  }
+  return sum;
+}
+
+int band_level(const GlyphBands& bands, double half_y) {
+  const double height = bands.box.max.y - bands.box.min.y;
+  const double ratio = height / (2.0 * half_y * 1.0001);
+  const int level = ratio >= 1.0 ? static_cast<int>(std::floor(std::log2(ratio))) : 0;
+  return std::clamp(level, 0, bands.levels - 1);
+}
+
+double band_box_coverage(const GlyphBands& bands, Vec2 centre, Vec2 half) {
+  if (bands.empty()) return 0.0;
+  const int level = band_level(bands, half.y);
+  const int n = 1 << level;
+  const double h = (bands.box.max.y - bands.box.min.y) / n;
+  const double row_lo = centre.y - half.y, row_hi = centre.y + half.y;
+  const double left = centre.x - half.x, right = centre.x + half.x;
+  const int k = std::clamp(static_cast<int>(std::floor((row_lo - bands.box.min.y) / h)), 0, n - 1);
+  const int band = n - 1 + k;
+  const auto texel = [&](std::size_t i) -> const std::array<float, 4>& { return bands.texels[i]; };
+  const auto entry_texel = static_cast<std::size_t>(texel(0)[0]), ref_texel = static_cast<std::size_t>(texel(0)[1]);
+  const std::array<float, 4>& header = texel(1 + static_cast<std::size_t>(band / 2));
+  const auto first = static_cast<std::size_t>(header[2 * (band % 2)]);
+  const auto count = static_cast<std::size_t>(header[2 * (band % 2) + 1]);
+  const double kx = 0.5 / half.x, ky = 0.5 / half.y;
+  const auto px = [&](double x, double y) { return Vec2{(x - centre.x) * kx, (y - centre.y) * ky}; };
+  double sum = 0.0;
+  for (std::size_t j = first; j < first + count; ++j) {
+    const std::array<float, 4>& e = texel(entry_texel + j);  // (largest x, smallest x, y first, y last)
+    if (e[0] < left) break;
+    if (std::max(e[2], e[3]) < row_lo || std::min(e[2], e[3]) > row_hi) continue;
+    if (e[1] >= right) {  // wholly right: its height within the rows
+      sum += std::clamp((e[3] - centre.y) * ky, -0.5, 0.5) - std::clamp((e[2] - centre.y) * ky, -0.5, 0.5);
+      continue;
+    }
+    const auto piece = static_cast<std::size_t>(texel(ref_texel + j / 4)[j % 4]);
+    const std::array<float, 4>&a = texel(piece), &b = texel(piece + 1);
+    sum += monotone_piece_box_integral({px(a[0], a[1]), px(a[2], a[3]), px(b[0], b[1]), b[2]});
+  }
+  return sum;
+}
+
+}  // namespace curvetext::gpu

@@ -1,0 +1,224 @@
+// The exact pixel-box area over curve bands (lib/gpu/bands.hpp, docs/design.md
+// section 9) on the CPU: the conic segment area and the per-piece integral
+// against an independent reference (the boundary flattened finely and
+// clipped to the box as a polygon), and over whole fonts (the pixels' coverages add up to the
+// glyph's area; each pixel against the union sweep of tests/support).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+#include "curvetext/font.hpp"
+#include "curvetext/mesh.hpp"
+#include "gpu/bands.hpp"
+#include "support/fonts.hpp"
+#include "support/union_coverage.hpp"
+
+namespace curvetext {
+namespace {
+
+using gpu::BandPiece;
+
+Vec2 eval(const BandPiece& p, double t) {
+  const double a = 1.0 - t, b0 = a * a, b1 = 2.0 * t * a * p.w, b2 = t * t;
+  return (b0 * p.p0 + b1 * p.c + b2 * p.p2) / (b0 + b1 + b2);
+}
+
+// The reference: the region's boundary flattened into a polygon of
+// kFlatSteps chords per piece (evenly in the parameter: the area it misses
+// falls as 1 / kFlatSteps^2, below 1e-9 of a pixel here), clipped to the box
+// by Sutherland-Hodgman, its area by the shoelace formula. Signed by the
+// boundary's orientation.
+constexpr int kFlatSteps = 40000;
+
+std::vector<Vec2> flatten(const std::vector<BandPiece>& pieces) {
+  std::vector<Vec2> poly;
+  for (const BandPiece& p : pieces)
+    for (int i = 0; i < kFlatSteps; ++i) poly.push_back(eval(p, static_cast<double>(i) / kFlatSteps));
+  return poly;
+}
+
+double polygon_area(const std::vector<Vec2>& poly) {
+  double a = 0.0;
+  for (std::size_t i = 0; i < poly.size(); ++i) a += cross(poly[(i + poly.size() - 1) % poly.size()], poly[i]);
+  return 0.5 * a;
+}
+
+// Keeps the part of `poly` where s * (coordinate axis) <= 1/2.
+std::vector<Vec2> clip(const std::vector<Vec2>& poly, int axis, double s) {
+  const auto d = [&](Vec2 p) { return s * (axis == 0 ? p.x : p.y) - 0.5; };
+  std::vector<Vec2> out;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const Vec2 p = poly[(i + poly.size() - 1) % poly.size()], q = poly[i];
+    const double dp = d(p), dq = d(q);
+    if ((dp <= 0.0) != (dq <= 0.0)) out.push_back(p + (q - p) * (dp / (dp - dq)));
+    if (dq <= 0.0) out.push_back(q);
+  }
+  return out;
+}
+
+double reference_coverage(const std::vector<BandPiece>& pieces) {
+  std::vector<Vec2> poly = flatten(pieces);
+  for (int axis = 0; axis < 2; ++axis)
+    for (double s : {-1.0, 1.0}) poly = clip(poly, axis, s);
+  return polygon_area(poly);
+}
+
+// The region between a conic arc and its chord, closed by the chord, with
+// the box's coverage through the general integral and through the monotone
+// pieces the shader reads.
+struct Closed {
+  std::vector<BandPiece> pieces;
+  double general() const {
+    double s = 0.0;
+    for (const BandPiece& p : pieces) s += gpu::piece_box_integral(p);
+    return s;
+  }
+  double monotone() const {
+    std::vector<BandPiece> split;
+    for (const BandPiece& p : pieces) gpu::split_monotone(p, split);
+    double s = 0.0;
+    for (const BandPiece& p : split) s += gpu::monotone_piece_box_integral(p);
+    return s;
+  }
+};
+
+BandPiece line(Vec2 a, Vec2 b) { return {a, 0.5 * (a + b), b, 1.0}; }
+
+Closed conic_region(Vec2 p0, Vec2 c, Vec2 p2, double w) {
+  // Counter-clockwise: the arc, then back along the chord.
+  if (cross(c - p0, p2 - p0) < 0.0) std::swap(p0, p2);
+  return {{{p0, c, p2, w}, line(p2, p0)}};
+}
+
+Closed polygon(std::initializer_list<Vec2> pts) {
+  Closed r;
+  const std::vector<Vec2> v(pts);
+  for (std::size_t i = 0; i < v.size(); ++i) r.pieces.push_back(line(v[i], v[(i + 1) % v.size()]));
+  return r;
+}
+
+void expect_exact(const Closed& r, const char* what, double tol = 1e-8) {
+  const double ref = reference_coverage(r.pieces);
+  EXPECT_NEAR(r.general(), ref, tol) << what;
+  EXPECT_NEAR(r.monotone(), ref, tol) << what << " (monotone pieces)";
+}
+
+TEST(BandArea, SegmentRatioMatchesFlattening) {
+  for (double w : {0.01, 0.1, 0.5, 0.7071, 0.979, 0.981, 0.999, 1.0, 1.001, 1.019, 1.021, 2.0, 10.0, 1000.0}) {
+    // An arc over the chord (0,0)-(1,0) with control (0.5, 1), closed by the
+    // chord: its area over the control triangle's 0.5.
+    const BandPiece arc{{1, 0}, {0.5, 1.0}, {0, 0}, w};
+    const double area = polygon_area(flatten({arc, line({0, 0}, {1, 0})}));
+    EXPECT_NEAR(gpu::conic_segment_ratio(w), area / 0.5, 1e-8) << "w = " << w;
+  }
+}
+
+TEST(BandArea, LinesThroughCornersAlongSidesAndAxes) {
+  expect_exact(polygon({{-2, -2}, {2, -2}, {2, 2}, {-2, 2}}), "box inside a square");
+  expect_exact(polygon({{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}}), "the box itself");
+  expect_exact(polygon({{-0.5, -0.5}, {0.5, 0.5}, {-2, 3}}), "an edge through two corners");
+  expect_exact(polygon({{0.5, -3}, {0.5, 3}, {-3, 0}}), "a vertical edge along the right side");
+  expect_exact(polygon({{0.1, -3}, {0.1, 3}, {-3, 0}}), "a vertical edge inside");
+  expect_exact(polygon({{-3, 0.2}, {3, 0.2}, {0, 3}}), "a horizontal edge inside");
+  expect_exact(polygon({{-3, -0.5}, {3, -0.5}, {0, 3}}), "a horizontal edge along the bottom");
+  expect_exact(polygon({{-1, -0.5}, {0.5, 1}, {-1, 1}}), "an edge touching a corner");
+  expect_exact(polygon({{0.1, 0.1}, {0.3, 0.1}, {0.2, 0.3}}), "a triangle inside the box");
+  expect_exact(polygon({{0.1, 0.1}, {0.1 + 1e-7, 0.1}, {0.1, 0.1 + 1e-7}}), "a triangle of 1e-7 px");
+  expect_exact(polygon({{-3, -3}, {0.3, 0.3}, {0.3 + 1e-7, 0.3 + 2e-7}, {-3, 3}}), "an edge of 1e-7 px");
+  expect_exact(polygon({{-3, -3}, {3, -3}, {-0.5, 3}}), "one end on the left side's line");
+}
+
+TEST(BandArea, ConicsOfAllWeights) {
+  std::mt19937 rng(36);
+  std::uniform_real_distribution<double> u(-1.5, 1.5);
+  for (double w : {0.01, 0.1, 0.5, 0.7071067811865476, 0.99, 1.0, 1.01, 3.0, 30.0, 1000.0}) {
+    for (int i = 0; i < 40; ++i) {
+      const Vec2 p0{u(rng), u(rng)}, c{u(rng), u(rng)}, p2{u(rng), u(rng)};
+      if (std::abs(cross(p2 - p0, c - p0)) < 1e-3) continue;
+      char what[96];
+      std::snprintf(what, sizeof what, "w %g, case %d", w, i);
+      expect_exact(conic_region(p0, c, p2, w), what);
+    }
+  }
+}
+
+TEST(BandArea, ConicsTangentToSidesAndThroughCorners) {
+  // A parabola whose apex touches the box's right side (tangent there).
+  expect_exact(conic_region({0.0, -2.0}, {1.0, 0.0}, {0.0, 2.0}, 1.0), "apex on x = 1/2");
+  // A circle's quarter (w = cos 45) through the box's corners (-1/2, 1/2) and (1/2, -1/2)?
+  expect_exact(conic_region({-0.5, 0.5}, {0.5, 0.5}, {0.5, -0.5}, std::sqrt(0.5)), "ends on two corners");
+  // Tangent to the top side from inside and to the bottom side from outside.
+  expect_exact(conic_region({-2.0, 0.0}, {0.0, 1.0}, {2.0, 0.0}, 1.0), "apex on y = 1/2");
+  expect_exact(conic_region({-2.0, -1.0}, {0.0, 0.0}, {2.0, -1.0}, 1.0), "apex on y = -1/2");
+  // A heavy hyperbola hugging its control polygon through a corner.
+  expect_exact(conic_region({-1.5, 0.5}, {0.5, 0.5}, {0.5, -1.5}, 1000.0), "w 1000 through a corner");
+  // A tiny arc, 1e-7 px long.
+  expect_exact(conic_region({0.2, 0.2}, {0.2 + 5e-8, 0.2 + 1e-7}, {0.2 + 1e-7, 0.2}, 0.5), "arc of 1e-7 px");
+}
+
+// A mesh's boundary pieces enclose its area, and every pixel of a grid over
+// each glyph of DejaVu Sans and Noto Sans (overlapping contours: Inter
+// variable) adds up to it through the packed bands; at 24 px each pixel of
+// the first 400 glyphs is within the union sweep's 0.003 of its exact
+// coverage.
+void check_font(const char* path, double px_per_em, bool per_pixel, std::uint32_t glyphs = 1u << 30) {
+  const Font font = Font::open(path);
+  const double scale = px_per_em / font.metrics().units_per_em;
+  gpu::BandScratch scratch;
+  gpu::GlyphBands bands;
+  Mesh mesh;
+  std::vector<BandPiece> pieces;
+  double worst_area = 0.0, worst_pixel = 0.0, worst_general = 0.0;
+  for (std::uint32_t id = 0; id < std::min(font.glyph_count(), glyphs); ++id) {
+    const Outline outline = font.glyph_outline(id);
+    if (outline.empty() || outline.has_cubics()) continue;
+    build_mesh(outline, {}, mesh);
+    gpu::boundary_pieces(mesh, pieces);
+    double green = 0.0;
+    for (const BandPiece& p : pieces) green += gpu::arc_x_dy(p, 0.0, 1.0);
+    const double area = mesh_area(mesh);
+    EXPECT_NEAR(green, area, 1e-9 * std::max(std::abs(area), 1.0)) << path << " glyph " << id;
+    gpu::build_bands(mesh, bands, scratch);
+    if (bands.empty()) continue;
+    // Pixel (i, j) of a grid over the glyph's box, one pixel of margin.
+    const Vec2 half{0.5 / scale, 0.5 / scale};
+    const Box& b = bands.box;
+    const int w = static_cast<int>((b.max.x - b.min.x) * scale) + 3,
+              h = static_cast<int>((b.max.y - b.min.y) * scale) + 3;
+    Outline px = outline;
+    for (Contour& c : px.contours())
+      for (Segment& s : c.segments)
+        for (Vec2& p : s.p) p = Vec2{scale * (p.x - b.min.x) + 1.0, scale * (b.max.y - p.y) + 1.0};
+    const test::Coverage exact = per_pixel ? test::union_coverage(px, w, h) : test::Coverage{};
+    double sum = 0.0;
+    for (int j = 0; j < h; ++j)
+      for (int i = 0; i < w; ++i) {
+        const Vec2 centre{b.min.x + (i - 0.5) / scale, b.max.y - (j - 0.5) / scale};
+        const double c = gpu::band_box_coverage(bands, centre, half);
+        sum += c;
+        if (per_pixel) {
+          worst_pixel = std::max(worst_pixel, std::abs(c - exact.at(i, j)));
+          worst_general = std::max(worst_general, std::abs(c - gpu::box_coverage(pieces, centre, half)));
+        }
+      }
+    worst_area = std::max(worst_area, std::abs(sum / (scale * scale) - area) / std::max(area, 1.0));
+  }
+  std::printf("%s at %g px: worst relative area %.3g, pixel vs union sweep %.4f, vs double %.3g\n", path, px_per_em,
+              worst_area, worst_pixel, worst_general);
+  EXPECT_LT(worst_area, 2e-5) << path;
+  if (per_pixel) {
+    EXPECT_LT(worst_pixel, 0.004) << path;   // the sweep's own bound is 0.003
+    EXPECT_LT(worst_general, 1e-4) << path;  // float texels against double pieces
+  }
+}
+
+TEST(BandArea, EveryGlyphOfDejaVuSans) { check_font(test::kDejaVuSans, 13.0, false); }
+TEST(BandArea, DejaVuSansPixelsAgainstUnionSweep) { check_font(test::kDejaVuSans, 24.0, true, 400); }
+TEST(BandArea, OverlappingContoursOfInter) { check_font(test::kInterVariable, 17.0, false); }
+
+}  // namespace
+}  // namespace curvetext
