@@ -297,15 +297,9 @@ std::size_t lowest_start(const Ring& ring) {
   return tie ? SIZE_MAX : best;
 }
 
-}  // namespace
-
-bool fold_repeated_rings(std::vector<Ring>& rings, std::vector<int>& counts, RingPool& pool, CleanScratch& scratch) {
-  counts.clear();
-  std::size_t pieces = 0;
-  for (const Ring& ring : rings) pieces += ring.size();
-  if (pieces < tolerance::kFoldRingsMinPieces) return false;
-  // A ring through its lowest point twice may be one path run round more
-  // than once: its loops are what can be equal.
+// A ring through its lowest point twice may be one path run round more than
+// once: its loops are what can be equal, so it is split into them.
+void split_laps(std::vector<Ring>& rings, RingPool& pool, CleanScratch& scratch) {
   const std::size_t original = rings.size();
   for (std::size_t r = 0; r < original; ++r) {
     if (rings[r].size() < 4 || lowest_start(rings[r]) != SIZE_MAX) continue;
@@ -315,6 +309,41 @@ bool fold_repeated_rings(std::vector<Ring>& rings, std::vector<int>& counts, Rin
     rings[r] = std::move(loops.front());
     for (std::size_t k = 1; k < loops.size(); ++k) rings.push_back(std::move(loops[k]));
   }
+}
+
+// Rings whose count is 0 (folded into another, or cancelled) leave; rings
+// run once either way need no count (a ring run backwards once is that ring
+// reversed), and then `counts` is cleared.
+void drop_folded(std::vector<Ring>& rings, std::vector<int>& counts, RingPool& pool) {
+  std::size_t kept = 0;
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    if (counts[r] == 0) {
+      pool.recycle(std::move(rings[r]));
+      continue;
+    }
+    if (kept != r) {
+      rings[kept] = std::move(rings[r]);
+      counts[kept] = counts[r];
+    }
+    ++kept;
+  }
+  rings.resize(kept);
+  counts.resize(kept);
+  if (std::all_of(counts.begin(), counts.end(), [](int c) { return c == 1 || c == -1; })) {
+    for (std::size_t r = 0; r < rings.size(); ++r)
+      if (counts[r] == -1) reverse_ring(rings[r]);
+    counts.clear();
+  }
+}
+
+}  // namespace
+
+bool fold_repeated_rings(std::vector<Ring>& rings, std::vector<int>& counts, RingPool& pool, CleanScratch& scratch) {
+  counts.clear();
+  std::size_t pieces = 0;
+  for (const Ring& ring : rings) pieces += ring.size();
+  if (pieces < tolerance::kFoldRingsMinPieces) return false;
+  split_laps(rings, pool, scratch);
   if (rings.size() < 2) return false;
   using Key = CleanScratch::RingKey;
   std::vector<Key>& keys = scratch.ring_keys;
@@ -359,28 +388,7 @@ bool fold_repeated_rings(std::vector<Ring>& rings, std::vector<int>& counts, Rin
     counts.clear();
     return false;
   }
-  // Folded rings and rings whose count cancelled leave.
-  std::size_t kept = 0;
-  for (std::size_t r = 0; r < rings.size(); ++r) {
-    if (counts[r] == 0) {
-      pool.recycle(std::move(rings[r]));
-      continue;
-    }
-    if (kept != r) {
-      rings[kept] = std::move(rings[r]);
-      counts[kept] = counts[r];
-    }
-    ++kept;
-  }
-  rings.resize(kept);
-  counts.resize(kept);
-  // Rings run once, either way, need no count: a ring run backwards once is
-  // that ring reversed.
-  if (std::all_of(counts.begin(), counts.end(), [](int c) { return c == 1 || c == -1; })) {
-    for (std::size_t r = 0; r < rings.size(); ++r)
-      if (counts[r] == -1) reverse_ring(rings[r]);
-    counts.clear();
-  }
+  drop_folded(rings, counts, pool);
   return true;
 }
 
