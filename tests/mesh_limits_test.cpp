@@ -278,6 +278,39 @@ TEST(MeshLimits, RetracedConicsAreBuilt) {
   EXPECT_NEAR(mesh_area(build_mesh(holed)), 0.75 * disc, 1e-9 * disc);
 }
 
+// A stroke's outline (tests/fixtures/strokes/mesh_reproducers/
+// retraced_line_empty_mesh.path): one contour round a capsule, then round
+// its straight part again, through several vertices twice. Resolved unsplit
+// it lost its whole fill (an empty mesh, no error); its loops resolve right.
+TEST(MeshLimits, RingThroughItsVerticesTwiceKeepsItsFill) {
+  Outline o;
+  o.move_to({5.9241724601467469, 730.93026379988987});
+  o.line_to({-0.49998068921386973, 0.0043943615262937762});
+  o.conic_to({-0.50437505070742294, -0.49558632396242958}, {-0.0043943652514402288, -0.4999806891811292},
+             0.70710678382072556);
+  o.conic_to({0.49558632020454257, -0.50437505439982888}, {0.49998068914838861, -0.0043943689765866805},
+             0.70710678382072556);
+  o.line_to({9.499980689213869, 1023.9956056384738});
+  o.conic_to({9.5043750507073668, 1024.4955863239625}, {9.0043943652513843, 1024.499980689181}, 0.70710678382072556);
+  o.conic_to({8.5044136797954017, 1024.5043750543998}, {8.5000193108516129, 1024.0043943689766}, 0.70710678382072556);
+  o.line_to({5.9241724601467478, 730.93026379988987});
+  o.line_to({6.9241338385744875, 730.9214750768374});
+  o.line_to({9.499980689213869, 1023.9956056384738});
+  o.line_to({9, 1024});
+  o.line_to({8.500019310786131, 1024.0043943615262});
+  o.line_to({-0.49998068921386973, 0.0043943615262937771});
+  o.line_to({0, 0});
+  o.line_to({0.49998068921386973, -0.0043943615262937762});
+  o.line_to({6.9241338385744866, 730.9214750768374});
+  o.line_to({5.9241724601467469, 730.93026379988987});
+  o.close();
+  const double area = 1024.824948;  // check_mesh's reference area of the outline
+  const Mesh mesh = build_mesh(o);
+  EXPECT_NEAR(mesh_area(mesh), area, 1e-6);
+  EXPECT_TRUE(check_mesh(mesh, o).ok());
+  EXPECT_NEAR(fill_boundary(o, FillRule::NonZero).signed_area(), area, 1e-6);
+}
+
 // Hull separation halves a nearly straight arc until its last piece's
 // control point lies exactly on the piece's chord: that piece is a line, not
 // a curved triangle of zero area (a fuzz finding, from the outline below and

@@ -197,6 +197,9 @@ class Build {
   // The outline's cleaned rings after crossing resolution under the fill
   // rule (always resolved, so oriented with the fill on their left).
   Outline boundary(const Outline& outline);
+  // boundary() lost the whole fill of unsplit rings (see run()): ask again
+  // with RepeatedVertices::Split.
+  bool wants_split() const { return resolved_to_nothing_ && repeated_ == RepeatedVertices::Keep; }
   // The mesh does not come from the self-checking sweep, or the outline was
   // approximated: check_mesh must pass before it is returned.
   bool needs_check() const { return needs_check_; }
@@ -229,7 +232,8 @@ class Build {
   // which lets sweep_triangulate take their loops when no position repeats.
   bool simple_edges_ = false;
   bool resolved_rings_ = false;
-  bool force_resolve_ = false;  // boundary(): resolve whether or not rings meet
+  bool force_resolve_ = false;        // boundary(): resolve whether or not rings meet
+  bool resolved_to_nothing_ = false;  // rings went into the resolver and none came out
   bool swept_ = false;
   bool repeated_position_ = false;   // the sweep gave up where a position repeats
   std::optional<PointIndex> index_;  // made when the general path needs it
@@ -250,8 +254,13 @@ class Build {
 bool Build::run(const Outline& outline) {
   clean(outline);
   separate();
+  // Rings that leave nothing once resolved, unsplit: a ring through a vertex
+  // twice can lose its whole fill there (a stroke's loop run twice round a
+  // capsule), where its split loops resolve right. Build again with the split.
+  if (wants_split()) return false;
   mesh_.triangles.clear();
   sweep_as_oriented();
+  if (wants_split()) return false;
   if (!swept_) {
     if (repeated_ == RepeatedVertices::Keep && std::any_of(s_.rings.begin(), s_.rings.end(), [&](const Ring& ring) {
           return repeats_a_vertex(ring, s_.clean.slots);
@@ -327,6 +336,7 @@ void Build::resolve(HullState hulls) {
   std::vector<Ring> resolved =
       resolve_crossings(s_.rings, s_.ring_counts, hulls, options_.fill_rule, budget_, s_.pool, s_.resolve, &settled);
   s_.ring_counts.clear();
+  resolved_to_nothing_ = resolved.empty() && !s_.rings.empty();
   s_.pool.recycle_all(s_.rings);
   s_.rings = std::move(resolved);
   resolved_rings_ = true;
@@ -640,8 +650,11 @@ Outline MeshBuilder::boundary(const Outline& outline, const MeshOptions& options
     double largest = 0.0;
     const Outline& input = checked_input(*scratch_, outline, options, largest);
     Mesh unused;
-    Build build(*scratch_, options, tolerance::kMergeDistanceRelative * largest, RepeatedVertices::Keep, unused);
-    return build.boundary(input);
+    const double merge_distance = tolerance::kMergeDistanceRelative * largest;
+    Build build(*scratch_, options, merge_distance, RepeatedVertices::Keep, unused);
+    Outline out = build.boundary(input);
+    if (!build.wants_split()) return out;
+    return Build(*scratch_, options, merge_distance, RepeatedVertices::Split, unused).boundary(input);
   } catch (const std::bad_alloc&) {
     throw Error(ErrorCode::Geometry, "fill_boundary: out of memory while resolving the outline");
   }
