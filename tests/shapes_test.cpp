@@ -682,7 +682,7 @@ TEST(EvenOdd, RetracedContoursCancelInPairs) {
   for (int times = 1; times <= 4; ++times) {
     const Outline disc = repeated(circle({3, 1}, 10), times);
     const double want = times % 2 ? pi * 100 : 0.0;
-    const Outline out = even_odd_to_nonzero(disc);
+    const Outline out = fill_boundary(disc, FillRule::EvenOdd);
     EXPECT_NEAR(out.signed_area(), want, 1e-9 * pi * 100) << times << " times";
     MeshOptions options;
     options.fill_rule = FillRule::EvenOdd;

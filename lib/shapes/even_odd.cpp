@@ -1,22 +1,392 @@
-// Even-odd fill through the nonzero mesher: the boundary of the odd region,
-// oriented with the region on its left, has winding 1 inside it and 0
-// elsewhere, so its NONZERO fill is the region. build_mesh's crossing
-// resolution makes that boundary (fill_boundary): the arrangement of all
-// pieces, each piece's side windings, and the pieces with an odd side on
-// exactly one side kept and traced into loops.
+// Even-odd fill through the nonzero mesher (build_mesh fills nonzero only).
+//
+// The even-odd region R is where the winding number is odd. Its boundary,
+// oriented with R on the left, is a closed chain whose winding number is 1 in
+// R and 0 elsewhere, so its NONZERO fill is R. We build that chain:
+//  1. split every segment wherever it meets another segment (or itself), so
+//     that pieces meet only at their ends (an arrangement);
+//  2. for each piece, the winding numbers on its two sides differ by exactly
+//     1; compute the one on its left at the piece's midpoint (generalised
+//     winding number: the angle the other pieces sweep, seen from the point,
+//     plus the piece's own half turn) and reverse the piece when it is even;
+//  3. chain the oriented pieces into closed loops (every vertex has as many
+//     pieces in as out, since the chain is a boundary).
+// Nesting contours that never cross reduce to flipping whole contours by the
+// parity of their depth; crossing ones (a pentagram) are handled the same way.
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <vector>
+
+#include "curvetext/curves.hpp"
 #include "curvetext/error.hpp"
-#include "curvetext/mesh.hpp"
 #include "curvetext/shapes.hpp"
+#include "core/tolerances.hpp"
 
 namespace curvetext {
 
+namespace {
+
+struct Hp {
+  double x = 0, y = 0, w = 0;
+};
+
+// Homogeneous Bernstein coefficients of a line or conic.
+std::vector<Hp> homogeneous(const Segment& s) {
+  if (s.kind == Segment::Kind::Line) return {{s.p[0].x, s.p[0].y, 1}, {s.p[1].x, s.p[1].y, 1}};
+  const double w = s.weight;
+  return {{s.p[0].x, s.p[0].y, 1}, {s.p[1].x * w, s.p[1].y * w, w}, {s.p[2].x, s.p[2].y, 1}};
+}
+
+using Bernstein = std::vector<double>;  // coefficients of a polynomial on [0,1]
+
+double binomial(int n, int k) {
+  double r = 1;
+  for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
+  return r;
+}
+
+Bernstein multiply(const Bernstein& a, const Bernstein& b) {
+  const int m = static_cast<int>(a.size()) - 1, n = static_cast<int>(b.size()) - 1;
+  Bernstein c(static_cast<std::size_t>(m + n + 1), 0.0);
+  for (int i = 0; i <= m; ++i)
+    for (int j = 0; j <= n; ++j)
+      c[static_cast<std::size_t>(i + j)] += binomial(m, i) * binomial(n, j) / binomial(m + n, i + j) *
+                                            a[static_cast<std::size_t>(i)] * b[static_cast<std::size_t>(j)];
+  return c;
+}
+
+// Roots in [lo, hi] by subdivision: a Bernstein polynomial whose coefficients
+// all have one sign has no root (convex hull property). Depth 44 gives the
+// parameter to ~6e-14; `budget` bounds the work for near-coincident curves.
+void roots(const Bernstein& c, double lo, double hi, int depth, int& budget, std::vector<double>& out) {
+  if (--budget < 0) return;
+  bool any_pos = false, any_neg = false;
+  for (double v : c) {
+    any_pos = any_pos || v >= 0.0;
+    any_neg = any_neg || v <= 0.0;
+  }
+  if (!(any_pos && any_neg)) return;
+  if (depth >= 44) {
+    out.push_back(0.5 * (lo + hi));
+    return;
+  }
+  Bernstein left(c.size()), right(c.size()), t = c;
+  const std::size_t n = c.size();
+  left[0] = t[0];
+  right[n - 1] = t[n - 1];
+  for (std::size_t level = 1; level < n; ++level) {
+    for (std::size_t i = 0; i + level < n; ++i) t[i] = 0.5 * (t[i] + t[i + 1]);
+    left[level] = t[0];
+    right[n - 1 - level] = t[n - 1 - level];
+  }
+  const double mid = 0.5 * (lo + hi);
+  roots(left, lo, mid, depth + 1, budget, out);
+  roots(right, mid, hi, depth + 1, budget, out);
+}
+
+// Barycentric coordinates of q in a conic's control triangle, as affine
+// functions: tau_i(q) = g_i . q + h_i.
+struct Bary {
+  Vec2 g[3]{};
+  double h[3]{};
+  bool ok = false;
+  explicit Bary(const Segment& s) {
+    const Vec2 p0 = s.p[0], c = s.p[1], p2 = s.p[2];
+    const double area = cross(c - p0, p2 - p0);
+    if (!(area != 0.0) || !std::isfinite(area)) return;
+    const Vec2 e = p2 - p0, f = c - p0;
+    g[1] = Vec2{e.y, -e.x} / area;  // tau1 = cross(q - p0, e) / area
+    h[1] = -dot(g[1], p0);
+    g[2] = Vec2{-f.y, f.x} / area;  // tau2 = cross(f, q - p0) / area
+    h[2] = -dot(g[2], p0);
+    g[0] = (g[1] + g[2]) * -1.0;
+    h[0] = 1.0 - h[1] - h[2];
+    ok = true;
+  }
+  double tau(int i, Vec2 q) const { return dot(g[i], q) + h[i]; }
+  double tau_h(int i, Hp p) const { return g[i].x * p.x + g[i].y * p.y + h[i] * p.w; }
+};
+
+constexpr double kParamEps = 1e-9;
+
+struct Hit {
+  double t;
+  Vec2 point;
+};
+
+// Points where segment `b` meets segment `a`: roots on b of a's implicit
+// equation, kept where they lie on a's arc. Appends to both hit lists.
+void intersect(const Segment& a, const Segment& b, std::vector<Hit>& hits_a, std::vector<Hit>& hits_b) {
+  const std::vector<Hp> hb = homogeneous(b);
+  Bernstein poly;
+  double magnitude = 0.0;
+  Bary bary(a);
+  if (a.kind == Segment::Kind::Line) {
+    const Vec2 d = a.p[1] - a.p[0];
+    for (const Hp& h : hb) {
+      const Vec2 r{h.x - a.p[0].x * h.w, h.y - a.p[0].y * h.w};
+      poly.push_back(cross(d, r));
+      magnitude = std::max(magnitude, length(d) * length(r));
+    }
+  } else {
+    if (!bary.ok) return;
+    Bernstein t0, t1, t2;
+    double m = 0.0;
+    for (const Hp& h : hb) {
+      t0.push_back(bary.tau_h(0, h));
+      t1.push_back(bary.tau_h(1, h));
+      t2.push_back(bary.tau_h(2, h));
+      m = std::max(m, std::abs(t0.back()) + std::abs(t1.back()) + std::abs(t2.back()));
+    }
+    const double w2 = a.weight * a.weight;
+    const Bernstein sq = multiply(t1, t1), pr = multiply(t0, t2);
+    for (std::size_t i = 0; i < sq.size(); ++i) poly.push_back(sq[i] - 4.0 * w2 * pr[i]);
+    magnitude = m * m * (1.0 + 4.0 * w2);
+  }
+  double largest = 0.0;
+  for (double v : poly) largest = std::max(largest, std::abs(v));
+  // Identically zero: b lies on a's line or conic (overlapping segments);
+  // not resolved (see shapes.hpp).
+  if (largest <= 1e-13 * magnitude) return;
+  std::vector<double> ts;
+  int budget = 4000;
+  roots(poly, 0.0, 1.0, 0, budget, ts);
+  std::sort(ts.begin(), ts.end());
+  double last = -1.0;
+  for (double tb : ts) {
+    if (tb - last <= kParamEps) continue;
+    last = tb;
+    Vec2 x = evaluate(b, tb);
+    double ta;
+    if (a.kind == Segment::Kind::Line) {
+      const Vec2 d = a.p[1] - a.p[0];
+      ta = dot(x - a.p[0], d) / dot(d, d);
+      if (ta < -kParamEps || ta > 1.0 + kParamEps) continue;
+    } else {
+      const double u0 = bary.tau(0, x), u1 = bary.tau(1, x), u2 = bary.tau(2, x);
+      const double eps = 1e-9;
+      if (u0 < -eps || u1 < -eps || u2 < -eps) continue;  // on the conic, off the arc
+      const double s0 = std::sqrt(std::max(u0, 0.0)), s2 = std::sqrt(std::max(u2, 0.0));
+      if (!(s0 + s2 > 0.0)) continue;
+      ta = s2 / (s0 + s2);  // tau2 / tau0 = (t / (1 - t))^2 for end weights 1
+    }
+    ta = std::clamp(ta, 0.0, 1.0);
+    // A hit at an end of one segment is that end exactly, so every segment
+    // through the point ends or splits at the same coordinates.
+    if (ta <= kParamEps)
+      x = a.start();
+    else if (ta >= 1.0 - kParamEps)
+      x = a.end();
+    else if (tb <= kParamEps)
+      x = b.start();
+    else if (tb >= 1.0 - kParamEps)
+      x = b.end();
+    hits_a.push_back({ta, x});
+    hits_b.push_back({tb, x});
+  }
+}
+
+// The part of `s` over [t0, t1] with the given end points: for a conic, the
+// blossoms H(t0,t0), H(t0,t1), H(t1,t1) are its exact homogeneous control
+// points; normalised to end weights 1.
+Segment piece(const Segment& s, double t0, double t1, Vec2 a, Vec2 b) {
+  if (s.kind == Segment::Kind::Line) return Segment::line(a, b);
+  const std::vector<Hp> h = homogeneous(s);
+  auto blossom = [&](double u, double v) {
+    const double b0 = (1 - u) * (1 - v), b1 = (1 - u) * v + u * (1 - v), b2 = u * v;
+    return Hp{b0 * h[0].x + b1 * h[1].x + b2 * h[2].x, b0 * h[0].y + b1 * h[1].y + b2 * h[2].y,
+              b0 * h[0].w + b1 * h[1].w + b2 * h[2].w};
+  };
+  const Hp s0 = blossom(t0, t0), m = blossom(t0, t1), s1 = blossom(t1, t1);
+  return Segment::conic(a, {m.x / m.w, m.y / m.w}, b, m.w / std::sqrt(s0.w * s1.w));
+}
+
+double angle(Vec2 u, Vec2 v) { return std::atan2(cross(u, v), dot(u, v)); }
+
+// Angle swept by the segment as seen from p (p not on it). A conic arc lies
+// in its control triangle, so seen from outside the triangle it sweeps the
+// same angle as its chord; otherwise halve it.
+double sweep(const Segment& s, Vec2 p, int depth) {
+  const double chord = angle(s.p[0] - p, s.end() - p);
+  if (s.kind == Segment::Kind::Line || depth >= 52) return chord;
+  const Bary bary(s);
+  if (!bary.ok) return chord;
+  const double lowest = std::min({bary.tau(0, p), bary.tau(1, p), bary.tau(2, p)});
+  if (lowest < 0.0) return chord;
+  const auto [l, r] = split(s, 0.5);
+  return sweep(l, p, depth + 1) + sweep(r, p, depth + 1);
+}
+
+struct Piece {
+  Segment seg;
+  int from = 0, to = 0;
+};
+
+Segment reversed(const Segment& s) {
+  if (s.kind == Segment::Kind::Line) return Segment::line(s.p[1], s.p[0]);
+  return Segment::conic(s.p[2], s.p[1], s.p[0], s.weight);
+}
+
+}  // namespace
+
 Outline even_odd_to_nonzero(const Outline& outline) {
   if (!outline.is_finite()) throw Error(ErrorCode::Geometry, "even-odd fill: the outline has non-finite values");
-  for (const Contour& c : outline.contours())
-    for (const Segment& s : c.segments)
+  // 0. Lines and proper conics only.
+  std::vector<Segment> segs;
+  const Box box = outline.control_box();
+  const double diag = box.empty() ? 0.0 : distance(box.min, box.max);
+  for (const Contour& c : outline.contours()) {
+    for (const Segment& s : c.segments) {
       if (s.kind == Segment::Kind::Cubic)
         throw Error(ErrorCode::InvalidArgument, "even-odd fill: cubics must be replaced by conics first");
-  return fill_boundary(outline, FillRule::EvenOdd);
+      if (s.start() == s.end()) continue;  // a zero-length line, or a conic out and back: no area
+      const double chord = distance(s.start(), s.end());
+      if (s.kind == Segment::Kind::Conic &&
+          std::abs(cross(s.p[1] - s.p[0], s.p[2] - s.p[0])) <= tolerance::kConicFlatnessRelative * chord * chord) {
+        segs.push_back(Segment::line(s.p[0], s.p[2]));  // as flat as the mesher treats as straight
+        continue;
+      }
+      segs.push_back(s);
+    }
+  }
+  if (segs.empty()) return Outline{};
+
+  // 1. The arrangement: all crossings (bounding boxes first).
+  const std::size_t n = segs.size();
+  std::vector<Box> boxes(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    boxes[i].add(segs[i].p[0]);
+    boxes[i].add(segs[i].p[1]);
+    if (segs[i].kind == Segment::Kind::Conic) boxes[i].add(segs[i].p[2]);
+  }
+  const double pad = 1e-9 * diag;
+  std::vector<std::vector<Hit>> hits(n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      if (boxes[i].min.x > boxes[j].max.x + pad || boxes[j].min.x > boxes[i].max.x + pad ||
+          boxes[i].min.y > boxes[j].max.y + pad || boxes[j].min.y > boxes[i].max.y + pad)
+        continue;
+      intersect(segs[i], segs[j], hits[i], hits[j]);
+    }
+
+  std::vector<Segment> pieces;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::vector<Hit>& h = hits[i];
+    std::sort(h.begin(), h.end(), [](const Hit& a, const Hit& b) { return a.t < b.t; });
+    double t_prev = 0.0;
+    Vec2 p_prev = segs[i].start();
+    for (const Hit& hit : h) {
+      if (hit.t <= t_prev + kParamEps || hit.t >= 1.0 - kParamEps) continue;
+      pieces.push_back(piece(segs[i], t_prev, hit.t, p_prev, hit.point));
+      t_prev = hit.t;
+      p_prev = hit.point;
+    }
+    pieces.push_back(piece(segs[i], t_prev, 1.0, p_prev, segs[i].end()));
+  }
+
+  // Vertices: crossings computed from different pairs of segments agree only
+  // to rounding, so points closer than a tiny fraction of the outline's size
+  // are one vertex.
+  std::vector<Vec2> ends;
+  for (const Segment& s : pieces) {
+    ends.push_back(s.start());
+    ends.push_back(s.end());
+  }
+  std::vector<std::size_t> order(ends.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return ends[a].x < ends[b].x; });
+  const double merge = std::max(1e-10 * diag, 1e-300);
+  std::vector<int> vertex_of(ends.size(), -1);
+  std::vector<Vec2> vertices;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const std::size_t i = order[k];
+    if (vertex_of[i] >= 0) continue;
+    vertex_of[i] = static_cast<int>(vertices.size());
+    vertices.push_back(ends[i]);
+    for (std::size_t m = k + 1; m < order.size() && ends[order[m]].x - ends[i].x <= merge; ++m)
+      if (vertex_of[order[m]] < 0 && distance(ends[order[m]], ends[i]) <= merge) vertex_of[order[m]] = vertex_of[i];
+  }
+  std::vector<Piece> arr;
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    Piece p{pieces[i], vertex_of[2 * i], vertex_of[2 * i + 1]};
+    if (p.from == p.to) continue;
+    p.seg.p[0] = vertices[static_cast<std::size_t>(p.from)];
+    if (p.seg.kind == Segment::Kind::Line)
+      p.seg.p[1] = vertices[static_cast<std::size_t>(p.to)];
+    else
+      p.seg.p[2] = vertices[static_cast<std::size_t>(p.to)];
+    arr.push_back(p);
+  }
+
+  // 2. Orientation by the parity of the winding number on the left, all
+  // computed against the original directions before any piece is flipped.
+  std::vector<char> flip(arr.size(), 0);
+  for (std::size_t i = 0; i < arr.size(); ++i) {
+    const Segment& s = arr[i].seg;
+    const Vec2 a = s.start(), b = s.end();
+    // Midpoint and tangent: for a conic with end weights 1 the tangent at
+    // t = 1/2 is parallel to the chord.
+    const Vec2 m = evaluate(s, 0.5);
+    const Vec2 t = b - a;
+    double total = angle(a - m, t * -1.0) + angle(t, b - m) + std::numbers::pi;  // own half turn, left side
+    for (std::size_t j = 0; j < arr.size(); ++j)
+      if (j != i) total += sweep(arr[j].seg, m, 0);
+    const long winding = std::lround(total / (2.0 * std::numbers::pi));
+    flip[i] = winding % 2 == 0;
+  }
+  for (std::size_t i = 0; i < arr.size(); ++i) {
+    if (!flip[i]) continue;
+    arr[i].seg = reversed(arr[i].seg);
+    std::swap(arr[i].from, arr[i].to);
+  }
+
+  // 3. Closed loops. A walk that comes back to a vertex it already passed
+  // closes a loop there, so each loop visits each vertex once.
+  std::vector<std::vector<std::size_t>> out_of(vertices.size());
+  for (std::size_t i = arr.size(); i-- > 0;) out_of[static_cast<std::size_t>(arr[i].from)].push_back(i);
+  Outline result;
+  auto emit = [&](const std::vector<std::size_t>& loop) {
+    result.move_to(arr[loop.front()].seg.start());
+    for (std::size_t e : loop) {
+      const Segment& s = arr[e].seg;
+      if (s.kind == Segment::Kind::Line)
+        result.line_to(s.p[1]);
+      else
+        result.conic_to(s.p[1], s.p[2], s.weight);
+    }
+    result.close();
+  };
+  for (std::size_t v0 = 0; v0 < vertices.size(); ++v0) {
+    while (!out_of[v0].empty()) {
+      std::vector<std::size_t> path;
+      std::map<int, std::size_t> seen;  // vertex -> position in path where it starts
+      int v = static_cast<int>(v0);
+      seen[v] = 0;
+      while (!out_of[static_cast<std::size_t>(v)].empty()) {
+        const std::size_t e = out_of[static_cast<std::size_t>(v)].back();
+        out_of[static_cast<std::size_t>(v)].pop_back();
+        path.push_back(e);
+        v = arr[e].to;
+        const auto it = seen.find(v);
+        if (it != seen.end()) {
+          const std::size_t at = it->second;  // `it` dies with the erase below
+          std::vector<std::size_t> loop(path.begin() + static_cast<std::ptrdiff_t>(at), path.end());
+          for (std::size_t k = at; k < path.size(); ++k) seen.erase(arr[path[k]].to);
+          path.resize(at);
+          seen[v] = path.size();
+          emit(loop);
+        } else {
+          seen[v] = path.size();
+        }
+      }
+      // Only unbalanced (numerically inconsistent) input leaves a path here;
+      // Outline::close() joins it with a line.
+      if (!path.empty()) emit(path);
+    }
+  }
+  return result;
 }
 
 }  // namespace curvetext

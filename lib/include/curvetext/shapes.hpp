@@ -151,13 +151,17 @@ CURVETEXT_API Outline shape_outline(const Shape& shape, double tolerance);
 CURVETEXT_API Outline fill_outline(const Shape& shape, double tolerance);
 
 // Re-expresses the even-odd fill of an outline of lines and conics as an
-// outline whose nonzero fill is the same region (fill_boundary with
-// FillRule::EvenOdd, mesh.hpp: the boundary of the odd region, fill on its
-// left, from build_mesh's crossing resolution, in O((n + k) log n) for n
-// pieces and k crossings). Pieces lying on top of each other cancel in pairs
-// (a retraced contour fills nothing). Throws Error(InvalidArgument) for an
-// outline with cubics, Error(Geometry) for non-finite values and what
-// build_mesh throws (its work budget).
+// outline whose nonzero fill is the same region. Every segment is split
+// where it crosses or touches another (or itself); each piece is then
+// oriented so that the side with odd winding is on its left, and the pieces
+// are chained into closed contours. Exact in the geometry (pieces of conics
+// are exact sub-conics); the crossing points are computed in double
+// precision (relative error ~1e-12 of the outline's size). Segments lying on
+// top of each other (collinear overlapping lines, identical arcs) are not
+// resolved: fill_boundary (mesh.hpp) with FillRule::EvenOdd does that, in
+// O((n + k) log n), through build_mesh's crossing resolution. Throws
+// Error(InvalidArgument) for an outline with cubics, Error(Geometry) for
+// non-finite values.
 CURVETEXT_API Outline even_odd_to_nonzero(const Outline& outline);
 
 // --- Input ------------------------------------------------------------------------
