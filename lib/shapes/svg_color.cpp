@@ -183,6 +183,7 @@ int hex_digit(char c) {
 
 std::optional<Color> hex_color(std::string_view h) {
   int d[8] = {};
+  if (h.size() > 8) return std::nullopt;  // (#rrggbbaa is the longest form)
   for (std::size_t i = 0; i < h.size(); ++i)
     if ((d[i] = hex_digit(h[i])) < 0) return std::nullopt;
   auto pair = [&](int i) { return static_cast<float>(d[i] * 16 + d[i + 1]) / 255.0f; };
