@@ -4,8 +4,11 @@
 // CURVETEXT_BOX 1, vbaa's box filter instead: the mean of the r x r texels
 // under the pixel, without the ring's weights and loop bounds of the filter
 // with a ring (resolve.frag.glsl), which a software rasteriser pays for
-// every pixel. Vertex stage: resolve.vert.glsl; lib/gpu/renderer.cpp draws
-// one quad per tile.
+// every pixel. Compiled with CURVETEXT_PAINT 1, a gradient's colour at each
+// pixel instead of u_color: the gradient evaluated at the pixel's centre,
+// stops interpolated in straight alpha, then premultiplied (lib/gpu/paint.cpp
+// sets its uniforms). Vertex stage: resolve.vert.glsl; lib/gpu/renderer.cpp
+// draws one quad per tile.
 precision highp float;
 
 uniform sampler2D u_texture;
@@ -17,6 +20,60 @@ uniform float u_coverage_exponent;  // 1 / gamma, in the program compiled with C
 uniform float u_r;                  // CURVETEXT_BOX: texels per pixel, 1..8
 
 varying vec2 v_pixel;  // framebuffer pixels, y down: the pixel's centre
+
+#if CURVETEXT_PAINT
+uniform mat3 u_paint;  // framebuffer pixel (x, y down, 1) -> gradient coordinates (homogeneous)
+uniform float u_kind;  // 0 linear, 1 radial
+uniform float u_spread;  // 0 pad, 1 reflect, 2 repeat
+uniform vec2 u_a;  // linear: start; radial: focus
+uniform vec2 u_b;  // linear: end; radial: centre
+uniform float u_radius;
+uniform float u_count;
+uniform vec4 u_stop_color[16];  // straight alpha
+uniform float u_stop_offset[16];
+
+// t of the gradient at p; negative when a radial gradient has no circle there.
+float gradient_t(vec2 p) {
+  if (u_kind < 0.5) {
+    vec2 d = u_b - u_a;
+    return dot(p - u_a, d) / dot(d, d);
+  }
+  // The largest t with |p - f - t (c - f)| = t r (circles from the focus f).
+  vec2 cd = u_b - u_a;
+  vec2 pd = p - u_a;
+  float a = dot(cd, cd) - u_radius * u_radius;  // < 0: the focus is inside
+  float b = dot(pd, cd);
+  float c = dot(pd, pd);
+  float disc = max(b * b - a * c, 0.0);
+  return (b - sqrt(disc)) / a;
+}
+
+vec4 paint(vec2 pixel) {
+  vec3 h = u_paint * vec3(pixel, 1.0);
+  float t = gradient_t(h.xy / h.z);
+  if (u_spread > 1.5) {
+    t = fract(t);
+  } else if (u_spread > 0.5) {
+    t = mod(t, 2.0);
+    if (t > 1.0) t = 2.0 - t;
+  } else {
+    t = clamp(t, 0.0, 1.0);
+  }
+  vec4 color = u_stop_color[0];
+  for (int i = 1; i < 16; ++i) {
+    if (float(i) >= u_count) break;
+    if (t >= u_stop_offset[i]) {
+      color = u_stop_color[i];
+      continue;
+    }
+    float span = u_stop_offset[i] - u_stop_offset[i - 1];
+    if (t > u_stop_offset[i - 1] && span > 0.0)
+      color = mix(u_stop_color[i - 1], u_stop_color[i], (t - u_stop_offset[i - 1]) / span);
+    break;
+  }
+  return vec4(color.rgb * color.a, color.a);
+}
+#endif
 
 void main() {
 #if CURVETEXT_BOX
@@ -42,5 +99,9 @@ void main() {
 #if CURVETEXT_GAMMA
   coverage = pow(coverage, u_coverage_exponent);
 #endif
+#if CURVETEXT_PAINT
+  gl_FragColor = paint(v_pixel) * coverage;
+#else
   gl_FragColor = u_color * coverage;
+#endif
 }

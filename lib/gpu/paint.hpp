@@ -1,5 +1,5 @@
 // Private to the library: the gradient paint's uniforms in the composite
-// pass (shaders/paint_composite.frag.glsl).
+// pass (shaders/composite.frag.glsl with CURVETEXT_PAINT).
 #pragma once
 
 #include <GLES3/gl3.h>

@@ -201,7 +201,7 @@ struct Renderer::Impl {
   // composite[box][gamma]: one fetch per pixel, or vbaa's box filter
   // (CURVETEXT_BOX); with gamma or not. Each made when first needed.
   QuadProgram resolve, composite[2][2];
-  // The same with a gradient's colour per pixel (paint_composite.frag.glsl).
+  // The same with a gradient's colour per pixel (CURVETEXT_PAINT).
   QuadProgram paint_composite[2][2];
   gpu::PaintUniforms paint_u[2][2];
   // One pass exact area from curve bands (bands.vert/frag.glsl), without
@@ -462,7 +462,8 @@ const Renderer::Impl::QuadProgram& Renderer::Impl::composite_program(bool box, b
   if (q.id == 0) {
     const std::string defines = std::string("#define CURVETEXT_BOX ") + (box ? "1" : "0") +
                                 "\n#define CURVETEXT_GAMMA " + (gamma ? "1" : "0") + "\n";
-    q = quad_program(shader_source::composite_frag_glsl, gles, defines.c_str(), "coverage composite program");
+    q = quad_program(shader_source::composite_frag_glsl, gles, (defines + "#define CURVETEXT_PAINT 0\n").c_str(),
+                     "coverage composite program");
   }
   return q;
 }
@@ -472,7 +473,8 @@ const Renderer::Impl::QuadProgram& Renderer::Impl::paint_program(bool box, bool 
   if (q.id == 0) {
     const std::string defines = std::string("#define CURVETEXT_BOX ") + (box ? "1" : "0") +
                                 "\n#define CURVETEXT_GAMMA " + (gamma ? "1" : "0") + "\n";
-    q = quad_program(shader_source::paint_composite_frag_glsl, gles, defines.c_str(), "gradient composite program");
+    q = quad_program(shader_source::composite_frag_glsl, gles, (defines + "#define CURVETEXT_PAINT 1\n").c_str(),
+                     "gradient composite program");
     paint_u[box ? 1 : 0][gamma ? 1 : 0] = gpu::PaintUniforms::of(q.id);
   }
   return q;

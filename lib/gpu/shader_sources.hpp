@@ -9,7 +9,6 @@ extern const char* const area_frag_glsl;
 extern const char* const resolve_vert_glsl;
 extern const char* const resolve_frag_glsl;
 extern const char* const composite_frag_glsl;
-extern const char* const paint_composite_frag_glsl;
 extern const char* const bitmap_vert_glsl;
 extern const char* const bitmap_frag_glsl;
 extern const char* const bands_vert_glsl;
