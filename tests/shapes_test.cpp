@@ -684,10 +684,78 @@ TEST(EvenOdd, RetracedContoursCancelInPairs) {
     const double want = times % 2 ? pi * 100 : 0.0;
     const Outline out = fill_boundary(disc, FillRule::EvenOdd);
     EXPECT_NEAR(out.signed_area(), want, 1e-9 * pi * 100) << times << " times";
+    EXPECT_NEAR(even_odd_to_nonzero(disc).signed_area(), want, 1e-9 * pi * 100) << times << " times";
     MeshOptions options;
     options.fill_rule = FillRule::EvenOdd;
     EXPECT_NEAR(mesh_area(build_mesh(disc, options)), want, 1e-6 * pi * 100) << times << " times";
     EXPECT_NEAR(mesh_area(build_mesh(disc)), pi * 100, 1e-6 * pi * 100) << times << " times";
+  }
+}
+
+// even_odd_to_nonzero (its own arrangement, parity by rays) against the
+// mesher's even-odd rule (the crossing resolver's side windings): two
+// independent constructions of one region. Random self-crossing paths of
+// lines, quadratics, cubics and arcs.
+TEST(EvenOdd, AgreesWithTheMeshersRule) {
+  const char* paths[] = {
+      "M 51.561 33.912 L 35.661 9.219 Q 1.948 55.405 44.046 1.808 Q 51.743 29.545 96.077 11.285 L 97.170 10.478 "
+      "Q 27.192 90.590 18.155 75.578 C 84.959 67.597 94.600 40.595 53.660 51.478 C 70.042 8.946 5.753 68.821 "
+      "42.532 7.241 Z",
+      "M 21.952 51.053 C 11.044 55.094 50.334 25.953 8.694 61.509 Q 38.262 7.883 21.178 62.162 L 59.202 40.781 Z "
+      "M 53.912 67.256 Q 66.923 95.637 46.155 61.109 C 56.279 11.625 47.059 29.448 16.724 52.442 A 28.67 27.45 "
+      "60.3 1 0 22.626 71.969 A 22.21 22.96 30.9 0 0 79.169 86.327 Q 39.991 43.558 0.867 53.689 Z M 99.066 90.982 "
+      "Q 34.385 32.576 8.699 80.375 A 12.90 36.73 4.8 0 0 86.789 51.546 C 74.414 78.831 60.054 13.858 12.100 8.959 "
+      "A 19.08 15.22 27.2 1 0 30.413 29.491 A 7.04 46.56 55.0 1 1 61.282 15.336 L 0.653 63.885 L 54.429 94.779 Z",
+      "M 18.602 5.470 L 24.509 86.235 A 31.05 34.54 25.7 1 1 20.733 42.388 A 47.04 41.13 78.0 1 1 18.859 44.449 "
+      "Q 92.272 23.042 12.351 57.112 L 45.530 54.949 Q 51.255 88.388 41.357 93.952 Z",
+      "M 66.449 86.980 C 92.643 79.682 35.519 53.638 8.478 6.139 L 87.429 58.125 Q 21.029 21.687 22.029 93.347 "
+      "L 98.992 30.951 Z M 89.409 50.999 L 72.544 89.673 A 27.47 8.41 87.9 0 1 62.313 54.869 Q 94.949 83.115 "
+      "41.760 4.493 A 7.34 19.95 24.2 1 0 40.059 31.424 L 92.473 62.089 Z",
+  };
+  MeshOptions odd;
+  odd.fill_rule = FillRule::EvenOdd;
+  for (const char* d : paths) {
+    Shape shape;
+    shape.contours = parse_svg_path(d);
+    const Outline nonzero = fill_outline(shape, 1.0 / 64);
+    shape.fill_rule = FillRule::EvenOdd;
+    const double converted = mesh_area(build_mesh(fill_outline(shape, 1.0 / 64)));
+    const double meshed = mesh_area(build_mesh(nonzero, odd));
+    EXPECT_NEAR(converted, meshed, 1e-6 * meshed) << d;
+  }
+}
+
+// Scribbles: three subpaths of lines, quadratics, cubics and arcs crossing
+// themselves and each other at random. Their hulls overlap in many places,
+// which hull separation must split within its work budget; both rules mesh
+// and pass the mesh's own check.
+TEST(EvenOdd, SelfCrossingScribblesAreMeshed) {
+  const char* paths[] = {
+      "M 27.286 16.482 A 48.86 9.52 64.3 1 0 67.591 32.083 A 35.52 19.99 41.7 0 1 1.891 16.498 L 67.208 91.341 "
+      "A 29.31 30.40 63.4 1 0 55.009 69.620 Q 58.860 32.722 90.414 70.110 L 92.430 56.291 A 42.14 12.54 9.2 0 1 "
+      "81.850 14.243 Z M 41.759 63.042 C 63.940 41.029 89.202 83.957 58.819 81.715 L 43.138 49.835 L 70.788 0.580 "
+      "L 80.787 45.367 A 48.48 36.99 78.9 1 1 90.885 91.044 A 39.41 33.65 74.0 1 1 37.205 77.847 Q 96.062 71.816 "
+      "66.577 7.936 Z M 41.232 24.040 C 95.292 8.292 1.711 16.026 54.690 66.810 Q 83.352 68.946 9.003 68.345 Z",
+      "M 2.668 93.240 Q 41.069 8.530 45.764 34.436 L 75.530 38.438 A 41.56 27.42 43.6 1 1 42.353 78.763 L 78.243 "
+      "37.834 C 98.164 5.077 5.589 71.795 62.265 82.130 L 24.923 57.568 Z M 91.608 88.964 L 82.393 80.167 A 12.51 "
+      "30.76 29.1 1 1 96.570 64.693 C 34.336 78.945 59.326 13.876 17.078 10.774 C 13.667 17.303 92.205 59.285 "
+      "15.683 51.411 C 27.684 69.349 35.651 38.304 14.432 79.178 C 72.863 78.051 32.993 27.408 56.374 75.904 L "
+      "51.607 15.256 Z M 91.318 13.656 L 60.469 56.543 L 16.688 49.260 A 7.06 31.54 80.3 1 0 1.617 34.622 C 72.590 "
+      "49.288 75.352 36.733 95.255 38.235 Q 37.079 49.843 72.824 44.246 A 18.39 6.11 3.1 0 0 22.907 94.862 L "
+      "16.905 26.834 C 32.279 77.198 18.626 75.274 97.225 70.602 Z",
+  };
+  for (const char* d : paths) {
+    Shape shape;
+    shape.contours = parse_svg_path(d);
+    const Outline outline = fill_outline(shape, 1.0 / 64);
+    for (const FillRule rule : {FillRule::NonZero, FillRule::EvenOdd}) {
+      MeshOptions options;
+      options.fill_rule = rule;
+      Mesh mesh;
+      ASSERT_NO_THROW(mesh = build_mesh(outline, options)) << d;
+      const MeshCheck check = check_mesh(mesh, outline, rule);
+      EXPECT_TRUE(check.ok()) << d << (check.problems.empty() ? "" : check.problems.front());
+    }
   }
 }
 

@@ -6,9 +6,9 @@
 //  1. split every segment wherever it meets another segment (or itself), so
 //     that pieces meet only at their ends (an arrangement);
 //  2. for each piece, the winding numbers on its two sides differ by exactly
-//     1; compute the one on its left at the piece's midpoint (generalised
-//     winding number: the angle the other pieces sweep, seen from the point,
-//     plus the piece's own half turn) and reverse the piece when it is even;
+//     1; find the parity of the one on its left at the piece's midpoint by
+//     counting the pieces a ray from there crosses (along x, or along y where
+//     the piece runs closer to x) and reverse the piece when it is even;
 //  3. chain the oriented pieces into closed loops (every vertex has as many
 //     pieces in as out, since the chain is a boundary).
 // Nesting contours that never cross reduce to flipping whole contours by the
@@ -16,7 +16,6 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <numbers>
 #include <vector>
 
 #include "curvetext/curves.hpp"
@@ -203,22 +202,6 @@ Segment piece(const Segment& s, double t0, double t1, Vec2 a, Vec2 b) {
   return Segment::conic(a, {m.x / m.w, m.y / m.w}, b, m.w / std::sqrt(s0.w * s1.w));
 }
 
-double angle(Vec2 u, Vec2 v) { return std::atan2(cross(u, v), dot(u, v)); }
-
-// Angle swept by the segment as seen from p (p not on it). A conic arc lies
-// in its control triangle, so seen from outside the triangle it sweeps the
-// same angle as its chord; otherwise halve it.
-double sweep(const Segment& s, Vec2 p, int depth) {
-  const double chord = angle(s.p[0] - p, s.end() - p);
-  if (s.kind == Segment::Kind::Line || depth >= 52) return chord;
-  const Bary bary(s);
-  if (!bary.ok) return chord;
-  const double lowest = std::min({bary.tau(0, p), bary.tau(1, p), bary.tau(2, p)});
-  if (lowest < 0.0) return chord;
-  const auto [l, r] = split(s, 0.5);
-  return sweep(l, p, depth + 1) + sweep(r, p, depth + 1);
-}
-
 struct Piece {
   Segment seg;
   int from = 0, to = 0;
@@ -229,14 +212,16 @@ Segment reversed(const Segment& s) {
   return Segment::conic(s.p[2], s.p[1], s.p[0], s.weight);
 }
 
-}  // namespace
+// Ends closer than this are one vertex: crossings computed from different
+// pairs of segments agree only to rounding.
+double merge_distance(double diag) { return std::max(1e-10 * diag, 1e-300); }
 
-Outline even_odd_to_nonzero(const Outline& outline) {
-  if (!outline.is_finite()) throw Error(ErrorCode::Geometry, "even-odd fill: the outline has non-finite values");
-  // 0. Lines and proper conics only.
+Vec2 swapped(Vec2 p) { return {p.y, p.x}; }
+
+// 0. Lines and proper conics only; conics as flat as the mesher treats as
+// straight become lines, segments without length are dropped.
+std::vector<Segment> usable_segments(const Outline& outline) {
   std::vector<Segment> segs;
-  const Box box = outline.control_box();
-  const double diag = box.empty() ? 0.0 : distance(box.min, box.max);
   for (const Contour& c : outline.contours()) {
     for (const Segment& s : c.segments) {
       if (s.kind == Segment::Kind::Cubic)
@@ -245,22 +230,28 @@ Outline even_odd_to_nonzero(const Outline& outline) {
       const double chord = distance(s.start(), s.end());
       if (s.kind == Segment::Kind::Conic &&
           std::abs(cross(s.p[1] - s.p[0], s.p[2] - s.p[0])) <= tolerance::kConicFlatnessRelative * chord * chord) {
-        segs.push_back(Segment::line(s.p[0], s.p[2]));  // as flat as the mesher treats as straight
+        segs.push_back(Segment::line(s.p[0], s.p[2]));
         continue;
       }
       segs.push_back(s);
     }
   }
-  if (segs.empty()) return Outline{};
+  return segs;
+}
 
-  // 1. The arrangement: all crossings (bounding boxes first).
+Box control_box(const Segment& s) {
+  Box b;
+  b.add(s.p[0]);
+  b.add(s.p[1]);
+  if (s.kind == Segment::Kind::Conic) b.add(s.p[2]);
+  return b;
+}
+
+// 1a. Every segment cut wherever it meets another (bounding boxes first).
+std::vector<Segment> split_at_crossings(const std::vector<Segment>& segs, double diag) {
   const std::size_t n = segs.size();
   std::vector<Box> boxes(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    boxes[i].add(segs[i].p[0]);
-    boxes[i].add(segs[i].p[1]);
-    if (segs[i].kind == Segment::Kind::Conic) boxes[i].add(segs[i].p[2]);
-  }
+  for (std::size_t i = 0; i < n; ++i) boxes[i] = control_box(segs[i]);
   const double pad = 1e-9 * diag;
   std::vector<std::vector<Hit>> hits(n);
   for (std::size_t i = 0; i < n; ++i)
@@ -270,7 +261,6 @@ Outline even_odd_to_nonzero(const Outline& outline) {
         continue;
       intersect(segs[i], segs[j], hits[i], hits[j]);
     }
-
   std::vector<Segment> pieces;
   for (std::size_t i = 0; i < n; ++i) {
     std::vector<Hit>& h = hits[i];
@@ -285,10 +275,12 @@ Outline even_odd_to_nonzero(const Outline& outline) {
     }
     pieces.push_back(piece(segs[i], t_prev, 1.0, p_prev, segs[i].end()));
   }
+  return pieces;
+}
 
-  // Vertices: crossings computed from different pairs of segments agree only
-  // to rounding, so points closer than a tiny fraction of the outline's size
-  // are one vertex.
+// 1b. Vertices: ends within the merge distance are one vertex, and the
+// pieces take its exact coordinates.
+std::vector<Piece> merge_vertices(const std::vector<Segment>& pieces, double diag, std::size_t& vertex_count) {
   std::vector<Vec2> ends;
   for (const Segment& s : pieces) {
     ends.push_back(s.start());
@@ -297,7 +289,7 @@ Outline even_odd_to_nonzero(const Outline& outline) {
   std::vector<std::size_t> order(ends.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return ends[a].x < ends[b].x; });
-  const double merge = std::max(1e-10 * diag, 1e-300);
+  const double merge = merge_distance(diag);
   std::vector<int> vertex_of(ends.size(), -1);
   std::vector<Vec2> vertices;
   for (std::size_t k = 0; k < order.size(); ++k) {
@@ -319,46 +311,175 @@ Outline even_odd_to_nonzero(const Outline& outline) {
       p.seg.p[2] = vertices[static_cast<std::size_t>(p.to)];
     arr.push_back(p);
   }
+  vertex_count = vertices.size();
+  return arr;
+}
 
-  // 2. Orientation by the parity of the winding number on the left, all
-  // computed against the original directions before any piece is flipped.
+// Two pieces between the same vertices along the same curve bound no area
+// between them and change the winding by 2 (or 0) across them, never by 1:
+// they cancel in pairs before orientation, which assumes a step of 1.
+void cancel_coincident(std::vector<Piece>& arr, double merge) {
+  auto key = [](const Piece& p) { return std::minmax(p.from, p.to); };
+  std::vector<std::size_t> order(arr.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key(arr[a]) < key(arr[b]); });
+  auto same_curve = [&](const Piece& a, const Piece& b) {
+    if (a.seg.kind != b.seg.kind) return false;
+    if (a.seg.kind == Segment::Kind::Line) return true;
+    return distance(a.seg.p[1], b.seg.p[1]) <= merge && std::abs(a.seg.weight - b.seg.weight) <= 1e-9 * a.seg.weight;
+  };
+  std::vector<char> gone(arr.size(), 0);
+  for (std::size_t g = 0; g < order.size();) {
+    std::size_t h = g;
+    while (h < order.size() && key(arr[order[h]]) == key(arr[order[g]])) ++h;
+    for (std::size_t i = g; i < h; ++i)
+      for (std::size_t j = i + 1; j < h && !gone[order[i]]; ++j)
+        if (!gone[order[j]] && same_curve(arr[order[i]], arr[order[j]])) gone[order[i]] = gone[order[j]] = 1;
+    g = h;
+  }
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < arr.size(); ++i)
+    if (!gone[i]) arr[kept++] = arr[i];
+  arr.resize(kept);
+}
+
+// A part of a piece that is monotone in the ray frame's y, in that frame's
+// coordinates (x and y swapped for rays along y).
+struct Part {
+  Segment seg;
+  double t0 = 0, t1 = 1;  // its parameters on the piece
+  std::size_t piece = 0;
+  double ylo = 0, yhi = 0, xlo = 0, xhi = 0;
+};
+
+// Parameters in (0, 1) where a conic's y turns: roots of the numerator of
+// its derivative, w (y1 - y0) (1-t)^2 + (y2 - y0) t (1-t) + w (y2 - y1) t^2.
+std::vector<double> y_turns(const Segment& s) {
+  if (s.kind == Segment::Kind::Line) return {};
+  const double w = s.weight;
+  const double a = w * (s.p[1].y - s.p[0].y), b = s.p[2].y - s.p[0].y, c = w * (s.p[2].y - s.p[1].y);
+  const double qa = a - b + c, qb = b - 2.0 * a, qc = a;
+  std::vector<double> ts;
+  if (std::abs(qa) <= 1e-14 * (std::abs(a) + std::abs(b) + std::abs(c))) {
+    if (qb != 0.0) ts.push_back(-qc / qb);
+  } else {
+    const double disc = qb * qb - 4.0 * qa * qc;
+    if (disc >= 0.0) {
+      const double r = std::sqrt(disc), q = -0.5 * (qb + std::copysign(r, qb));
+      if (q != 0.0) ts.push_back(qc / q);
+      ts.push_back(q / qa);
+    }
+  }
+  std::vector<double> inside;
+  for (double t : ts)
+    if (t > 1e-12 && t < 1.0 - 1e-12) inside.push_back(t);
+  std::sort(inside.begin(), inside.end());
+  return inside;
+}
+
+Segment in_frame(const Segment& s, bool swap) {
+  if (!swap) return s;
+  Segment r = s;
+  for (Vec2& p : r.p) p = swapped(p);
+  return r;
+}
+
+// The monotone parts of every piece, sorted by their lowest y.
+std::vector<Part> monotone_parts(const std::vector<Piece>& arr, bool swap) {
+  std::vector<Part> parts;
+  for (std::size_t i = 0; i < arr.size(); ++i) {
+    const Segment s = in_frame(arr[i].seg, swap);
+    std::vector<double> cuts = y_turns(s);
+    cuts.push_back(1.0);
+    double t0 = 0.0;
+    Vec2 a = s.start();
+    for (double t1 : cuts) {
+      const Vec2 b = t1 == 1.0 ? s.end() : evaluate(s, t1);
+      Part p{piece(s, t0, t1, a, b), t0, t1, i};
+      const Box box = control_box(p.seg);
+      p.ylo = std::min(a.y, b.y);
+      p.yhi = std::max(a.y, b.y);
+      p.xlo = box.min.x;
+      p.xhi = box.max.x;
+      parts.push_back(p);
+      t0 = t1;
+      a = b;
+    }
+  }
+  std::sort(parts.begin(), parts.end(), [](const Part& a, const Part& b) { return a.ylo < b.ylo; });
+  return parts;
+}
+
+// Whether the ray from (x, y) along +x crosses the part. Ends on the ray
+// count as below it (a half-open rule), so a ray through a vertex counts the
+// pieces there consistently.
+bool crosses(const Part& p, double x, double y) {
+  const Vec2 a = p.seg.start(), b = p.seg.end();
+  if ((a.y <= y) == (b.y <= y)) return false;
+  if (p.xlo > x) return true;
+  if (p.xhi <= x) return false;
+  if (p.seg.kind == Segment::Kind::Line) return a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y) > x;
+  double lo = 0.0, hi = 1.0;  // y is monotone on the part: bisect
+  const bool rising = b.y > a.y;
+  for (int k = 0; k < 64 && lo < hi; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    if ((evaluate(p.seg, mid).y <= y) == rising)
+      lo = mid;
+    else
+      hi = mid;
+  }
+  return evaluate(p.seg, 0.5 * (lo + hi)).x > x;
+}
+
+// 2. Reverse every piece whose left side has an even winding number. The
+// parity comes from a ray from the piece's midpoint along x, or along y where
+// the piece runs closer to x, so the ray leaves the piece at 45 degrees or
+// more; the piece itself counts when the left side lies behind the ray's start.
+void orient_by_parity(std::vector<Piece>& arr) {
+  const std::vector<Part> frames[2] = {monotone_parts(arr, false), monotone_parts(arr, true)};
   std::vector<char> flip(arr.size(), 0);
   for (std::size_t i = 0; i < arr.size(); ++i) {
     const Segment& s = arr[i].seg;
-    const Vec2 a = s.start(), b = s.end();
-    // Midpoint and tangent: for a conic with end weights 1 the tangent at
-    // t = 1/2 is parallel to the chord.
-    const Vec2 m = evaluate(s, 0.5);
-    const Vec2 t = b - a;
-    double total = angle(a - m, t * -1.0) + angle(t, b - m) + std::numbers::pi;  // own half turn, left side
-    for (std::size_t j = 0; j < arr.size(); ++j)
-      if (j != i) total += sweep(arr[j].seg, m, 0);
-    const long winding = std::lround(total / (2.0 * std::numbers::pi));
-    flip[i] = winding % 2 == 0;
+    const Vec2 t = s.end() - s.start();  // for end weights 1, parallel to the tangent at t = 1/2
+    const bool swap = std::abs(t.y) < std::abs(t.x);
+    const Vec2 m = swap ? swapped(evaluate(s, 0.5)) : evaluate(s, 0.5);
+    int count = swap ? t.x < 0.0 : t.y > 0.0;
+    const std::vector<Part>& parts = frames[swap ? 1 : 0];
+    const auto end =
+        std::upper_bound(parts.begin(), parts.end(), m.y, [](double y, const Part& p) { return y < p.ylo; });
+    for (auto p = parts.begin(); p != end; ++p) {
+      if (p->yhi < m.y) continue;
+      if (p->piece == i && p->t0 <= 0.5 && 0.5 <= p->t1) continue;  // the crossing at m itself
+      count += crosses(*p, m.x, m.y);
+    }
+    flip[i] = count % 2 == 0;
   }
   for (std::size_t i = 0; i < arr.size(); ++i) {
     if (!flip[i]) continue;
     arr[i].seg = reversed(arr[i].seg);
     std::swap(arr[i].from, arr[i].to);
   }
+}
 
-  // 3. Closed loops. A walk that comes back to a vertex it already passed
-  // closes a loop there, so each loop visits each vertex once.
-  std::vector<std::vector<std::size_t>> out_of(vertices.size());
+void emit_loop(const std::vector<Piece>& arr, const std::vector<std::size_t>& loop, Outline& result) {
+  result.move_to(arr[loop.front()].seg.start());
+  for (std::size_t e : loop) {
+    const Segment& s = arr[e].seg;
+    if (s.kind == Segment::Kind::Line)
+      result.line_to(s.p[1]);
+    else
+      result.conic_to(s.p[1], s.p[2], s.weight);
+  }
+  result.close();
+}
+
+// 3. Closed loops. A walk that comes back to a vertex it already passed
+// closes a loop there, so each loop visits each vertex once.
+Outline chain_loops(const std::vector<Piece>& arr, std::size_t vertex_count) {
+  std::vector<std::vector<std::size_t>> out_of(vertex_count);
   for (std::size_t i = arr.size(); i-- > 0;) out_of[static_cast<std::size_t>(arr[i].from)].push_back(i);
   Outline result;
-  auto emit = [&](const std::vector<std::size_t>& loop) {
-    result.move_to(arr[loop.front()].seg.start());
-    for (std::size_t e : loop) {
-      const Segment& s = arr[e].seg;
-      if (s.kind == Segment::Kind::Line)
-        result.line_to(s.p[1]);
-      else
-        result.conic_to(s.p[1], s.p[2], s.weight);
-    }
-    result.close();
-  };
-  for (std::size_t v0 = 0; v0 < vertices.size(); ++v0) {
+  for (std::size_t v0 = 0; v0 < vertex_count; ++v0) {
     while (!out_of[v0].empty()) {
       std::vector<std::size_t> path;
       std::map<int, std::size_t> seen;  // vertex -> position in path where it starts
@@ -376,17 +497,32 @@ Outline even_odd_to_nonzero(const Outline& outline) {
           for (std::size_t k = at; k < path.size(); ++k) seen.erase(arr[path[k]].to);
           path.resize(at);
           seen[v] = path.size();
-          emit(loop);
+          emit_loop(arr, loop, result);
         } else {
           seen[v] = path.size();
         }
       }
       // Only unbalanced (numerically inconsistent) input leaves a path here;
       // Outline::close() joins it with a line.
-      if (!path.empty()) emit(path);
+      if (!path.empty()) emit_loop(arr, path, result);
     }
   }
   return result;
+}
+
+}  // namespace
+
+Outline even_odd_to_nonzero(const Outline& outline) {
+  if (!outline.is_finite()) throw Error(ErrorCode::Geometry, "even-odd fill: the outline has non-finite values");
+  const std::vector<Segment> segs = usable_segments(outline);
+  if (segs.empty()) return Outline{};
+  const Box box = outline.control_box();
+  const double diag = box.empty() ? 0.0 : distance(box.min, box.max);
+  std::size_t vertex_count = 0;
+  std::vector<Piece> arr = merge_vertices(split_at_crossings(segs, diag), diag, vertex_count);
+  cancel_coincident(arr, merge_distance(diag));
+  orient_by_parity(arr);
+  return chain_loops(arr, vertex_count);
 }
 
 }  // namespace curvetext

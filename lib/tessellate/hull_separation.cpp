@@ -132,7 +132,8 @@ class HullSeparator {
         max_pieces_(max_pieces),
         pair_budget_(max_pieces == SIZE_MAX
                          ? SIZE_MAX
-                         : tolerance::kMeshPairTestsPerPiece * (max_pieces / tolerance::kMeshWorkPerPiece)),
+                         : tolerance::kMeshPairTestsPerPiece * (max_pieces / tolerance::kMeshWorkPerPiece) +
+                               tolerance::kMeshPairTestsBase),
         s_(scratch),
         pool_(pool) {}
 

@@ -356,20 +356,24 @@ std::vector<Ring> CrossingResolver::run(const std::vector<Ring>& rings, const st
 // can move a piece by an ulp into a new crossing, or near a conic's vertex
 // into the conic's hull, so conflicts are looked for again after every round
 // of splits. Each round with a conic in conflict deepens every such conic, so
-// there are at most kMaxHullSubdivisionDepth + 2 of them; line splits settle
-// in a few rounds (the cap is generous). Returns true when conflicts were
-// left when the rounds ran out.
+// there are at most kMaxHullSubdivisionDepth + 2 of them. Line splits settle
+// in one to three rounds; bundles of nearly parallel lines, whose crossings
+// are found far along them, can instead cut each other again every round, so
+// after tolerance::kMaxLineSplitRounds such rounds in a row the resolver stops
+// there. Returns true when conflicts were left when the rounds ran out.
 bool CrossingResolver::remove_conflicts() {
   constexpr int kMaxConicRounds = tolerance::kMaxHullSubdivisionDepth + 2;
   constexpr int kMaxRounds = 4 * (kMaxConicRounds + 1);
-  int conic_rounds = 0;
+  int conic_rounds = 0, line_rounds = 0;
   for (int round = 0; round < kMaxRounds; ++round) {
     if (!find_conflicts(round)) {
       // (The last round's cuts are still made, not looked at again.)
       if (!split_at_cuts(edges_, s_.cuts, s_)) return false;
       within_budget("crossing resolution (edges)", edges_.size());
+      if (++line_rounds == tolerance::kMaxLineSplitRounds) return true;
       continue;
     }
+    line_rounds = 0;
     if (conic_rounds++ == kMaxConicRounds) {
       split_at_cuts(edges_, s_.cuts, s_);
       within_budget("crossing resolution (edges)", edges_.size());

@@ -156,10 +156,12 @@ CURVETEXT_API Outline fill_outline(const Shape& shape, double tolerance);
 // oriented so that the side with odd winding is on its left, and the pieces
 // are chained into closed contours. Exact in the geometry (pieces of conics
 // are exact sub-conics); the crossing points are computed in double
-// precision (relative error ~1e-12 of the outline's size). Segments lying on
-// top of each other (collinear overlapping lines, identical arcs) are not
-// resolved: fill_boundary (mesh.hpp) with FillRule::EvenOdd does that, in
-// O((n + k) log n), through build_mesh's crossing resolution. Throws
+// precision (relative error ~1e-12 of the outline's size). O(n^2) box tests
+// for n segments. Pieces between the same two points along the same curve
+// cancel in pairs; segments overlapping only in part (collinear lines, arcs
+// of one circle) are not resolved: fill_boundary (mesh.hpp) with
+// FillRule::EvenOdd does that, in O((n + k) log n), through build_mesh's
+// crossing resolution. Throws
 // Error(InvalidArgument) for an outline with cubics, Error(Geometry) for
 // non-finite values.
 CURVETEXT_API Outline even_odd_to_nonzero(const Outline& outline);
