@@ -21,6 +21,7 @@
 #include "tessellate/hull_separation.hpp"
 #include "tessellate/resolve.hpp"
 #include "tessellate/rings.hpp"
+#include "tessellate/self_check.hpp"
 
 namespace curvetext {
 namespace {
@@ -315,6 +316,26 @@ TEST(MeshLimits, RingThroughItsVerticesTwiceKeepsItsFill) {
 // control point lies exactly on the piece's chord: that piece is a line, not
 // a curved triangle of zero area (a fuzz finding, from the outline below and
 // from an SVG path with coordinates of 1e-200 read as 0).
+// build_mesh's own check stops at the first stage that finds a problem (one
+// is enough to refuse the mesh, and the hull-overlap search after the others
+// is the slowest); check_mesh reports every stage. A circle's mesh with every
+// face doubled: its area is twice the outline's, its edges are used by four
+// faces, and its curved triangles overlap their copies.
+TEST(MeshLimits, SelfCheckStopsAtTheFirstProblem) {
+  const Outline disc = retraced_circle(1, true, false);
+  Mesh doubled = build_mesh(disc);
+  const std::size_t triangles = doubled.triangles.size(), curves = doubled.curves.size();
+  for (std::size_t i = 0; i < triangles; ++i) doubled.triangles.push_back(doubled.triangles[i]);
+  for (std::size_t i = 0; i < curves; ++i) doubled.curves.push_back(doubled.curves[i]);
+  const MeshCheck all = check_mesh(doubled, disc);
+  const MeshCheck first = detail::self_check(doubled, disc, FillRule::NonZero);
+  ASSERT_FALSE(first.ok());
+  for (const std::string& p : first.problems) EXPECT_EQ(p.rfind("area identity", 0), 0u) << p;
+  EXPECT_GT(all.hull_overlaps, 0);
+  EXPECT_FALSE(all.watertight);
+  EXPECT_GT(all.problems.size(), first.problems.size());
+}
+
 TEST(MeshLimits, FlatPiecesOfSplitConicsAreLines) {
   Outline o;
   o.move_to({0.0625, -1});

@@ -23,6 +23,7 @@
 #include "tessellate/check_box_pairs.hpp"
 #include "tessellate/predicates.hpp"
 #include "tessellate/rings.hpp"
+#include "tessellate/self_check.hpp"
 
 namespace curvetext {
 namespace {
@@ -557,21 +558,25 @@ void check_hull_overlaps(const Mesh& mesh, const std::vector<Face>& faces, MeshC
   }
 }
 
-MeshCheck check_mesh_of(const Mesh& mesh, const Outline& quadratic_outline, FillRule rule) {
+enum class CheckDepth { Everything, FirstProblem };
+
+MeshCheck check_mesh_of(const Mesh& mesh, const Outline& quadratic_outline, FillRule rule, CheckDepth depth) {
   MeshCheck check;
   CheckScratch scratch;
   std::vector<Face> faces;
   if (!collect_faces(mesh, check, faces)) return check;
+  const bool stop = depth == CheckDepth::FirstProblem;
   check_area(mesh, quadratic_outline, rule, check, scratch);
+  if (stop && !check.ok()) return check;
   check_degenerate(mesh, faces, check);
+  if (stop && !check.ok()) return check;
   check_watertight(mesh, faces, check);
+  if (stop && !check.ok()) return check;
   check_hull_overlaps(mesh, faces, check, scratch);
   return check;
 }
 
-}  // namespace
-
-MeshCheck check_mesh(const Mesh& mesh, const Outline& quadratic_outline, FillRule rule) {
+MeshCheck check_mesh_to(const Mesh& mesh, const Outline& quadratic_outline, FillRule rule, CheckDepth depth) {
   try {
     // The outline as build_mesh reads it (tiny coordinates as 0), so that
     // the areas compared are of the same outline.
@@ -583,10 +588,20 @@ MeshCheck check_mesh(const Mesh& mesh, const Outline& quadratic_outline, FillRul
       add_problem(check, "outline coordinates beyond the largest build_mesh accepts");
       return check;
     }
-    return check_mesh_of(mesh, flush ? flushed : quadratic_outline, rule);
+    return check_mesh_of(mesh, flush ? flushed : quadratic_outline, rule, depth);
   } catch (const std::bad_alloc&) {
     throw Error(ErrorCode::Geometry, "check_mesh: out of memory while checking the mesh");
   }
+}
+
+}  // namespace
+
+MeshCheck check_mesh(const Mesh& mesh, const Outline& quadratic_outline, FillRule rule) {
+  return check_mesh_to(mesh, quadratic_outline, rule, CheckDepth::Everything);
+}
+
+MeshCheck detail::self_check(const Mesh& mesh, const Outline& quadratic_outline, FillRule rule) {
+  return check_mesh_to(mesh, quadratic_outline, rule, CheckDepth::FirstProblem);
 }
 
 }  // namespace curvetext

@@ -33,6 +33,7 @@
 #include "tessellate/predicates.hpp"
 #include "tessellate/resolve.hpp"
 #include "tessellate/rings.hpp"
+#include "tessellate/self_check.hpp"
 #include "tessellate/stage_timing.hpp"
 #include "tessellate/triangulate.hpp"
 
@@ -597,7 +598,7 @@ void build_checked_mesh(Scratch& scratch, const Outline& outline, const MeshOpti
   // Self-check before success: a mesh from the general path (ear clipping, or
   // crossings resolved with conflicts left) that breaks an invariant is an
   // error, never a result.
-  const MeshCheck check = check_mesh(mesh, to_quadratic_outline(outline, options.cubic_tolerance), options.fill_rule);
+  const MeshCheck check = self_check(mesh, to_quadratic_outline(outline, options.cubic_tolerance), options.fill_rule);
   if (!check.ok())
     throw Error(ErrorCode::Geometry, "build_mesh: the mesh fails its own check (" + check.problems.front() + ")");
 }
