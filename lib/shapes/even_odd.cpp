@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <utility>
 #include <vector>
 
 #include "curvetext/curves.hpp"
@@ -247,6 +248,35 @@ Box control_box(const Segment& s) {
   return b;
 }
 
+// Calls f(i, j), i < j, for every pair of boxes that meet (within pad): a
+// sweep along the longer side of all the boxes together, so that a tall thin
+// outline's pieces are not all compared with each other.
+template <class F>
+void for_each_box_pair(const std::vector<Box>& boxes, double pad, F&& f) {
+  Box all;
+  for (const Box& b : boxes) {
+    all.add(b.min);
+    all.add(b.max);
+  }
+  const bool along_y = all.max.y - all.min.y > all.max.x - all.min.x;
+  auto lo = [&](std::size_t i) { return along_y ? boxes[i].min.y : boxes[i].min.x; };
+  auto hi = [&](std::size_t i) { return along_y ? boxes[i].max.y : boxes[i].max.x; };
+  auto across_apart = [&](std::size_t i, std::size_t j) {
+    return along_y ? boxes[i].min.x > boxes[j].max.x + pad || boxes[j].min.x > boxes[i].max.x + pad
+                   : boxes[i].min.y > boxes[j].max.y + pad || boxes[j].min.y > boxes[i].max.y + pad;
+  };
+  std::vector<std::size_t> order(boxes.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return lo(a) < lo(b); });
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const std::size_t i = order[k];
+    for (std::size_t m = k + 1; m < order.size() && lo(order[m]) <= hi(i) + pad; ++m) {
+      const std::size_t j = order[m];
+      if (!across_apart(i, j)) f(std::min(i, j), std::max(i, j));
+    }
+  }
+}
+
 // 1a. Every segment cut wherever it meets another (bounding boxes first).
 std::vector<Segment> split_at_crossings(const std::vector<Segment>& segs, double diag) {
   const std::size_t n = segs.size();
@@ -254,13 +284,7 @@ std::vector<Segment> split_at_crossings(const std::vector<Segment>& segs, double
   for (std::size_t i = 0; i < n; ++i) boxes[i] = control_box(segs[i]);
   const double pad = 1e-9 * diag;
   std::vector<std::vector<Hit>> hits(n);
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 1; j < n; ++j) {
-      if (boxes[i].min.x > boxes[j].max.x + pad || boxes[j].min.x > boxes[i].max.x + pad ||
-          boxes[i].min.y > boxes[j].max.y + pad || boxes[j].min.y > boxes[i].max.y + pad)
-        continue;
-      intersect(segs[i], segs[j], hits[i], hits[j]);
-    }
+  for_each_box_pair(boxes, pad, [&](std::size_t i, std::size_t j) { intersect(segs[i], segs[j], hits[i], hits[j]); });
   std::vector<Segment> pieces;
   for (std::size_t i = 0; i < n; ++i) {
     std::vector<Hit>& h = hits[i];
@@ -286,6 +310,12 @@ std::vector<Piece> merge_vertices(const std::vector<Segment>& pieces, double dia
     ends.push_back(s.start());
     ends.push_back(s.end());
   }
+  // Swept along the longer side, so a tall thin outline's window stays short.
+  Box all;
+  for (const Vec2 p : ends) all.add(p);
+  const bool swap = all.max.y - all.min.y > all.max.x - all.min.x;
+  if (swap)
+    for (Vec2& p : ends) p = swapped(p);
   std::vector<std::size_t> order(ends.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return ends[a].x < ends[b].x; });
@@ -296,7 +326,7 @@ std::vector<Piece> merge_vertices(const std::vector<Segment>& pieces, double dia
     const std::size_t i = order[k];
     if (vertex_of[i] >= 0) continue;
     vertex_of[i] = static_cast<int>(vertices.size());
-    vertices.push_back(ends[i]);
+    vertices.push_back(swap ? swapped(ends[i]) : ends[i]);
     for (std::size_t m = k + 1; m < order.size() && ends[order[m]].x - ends[i].x <= merge; ++m)
       if (vertex_of[order[m]] < 0 && distance(ends[order[m]], ends[i]) <= merge) vertex_of[order[m]] = vertex_of[i];
   }
@@ -384,7 +414,7 @@ Segment in_frame(const Segment& s, bool swap) {
   return r;
 }
 
-// The monotone parts of every piece, sorted by their lowest y.
+// The monotone parts of every piece.
 std::vector<Part> monotone_parts(const std::vector<Piece>& arr, bool swap) {
   std::vector<Part> parts;
   for (std::size_t i = 0; i < arr.size(); ++i) {
@@ -406,9 +436,54 @@ std::vector<Part> monotone_parts(const std::vector<Piece>& arr, bool swap) {
       a = b;
     }
   }
-  std::sort(parts.begin(), parts.end(), [](const Part& a, const Part& b) { return a.ylo < b.ylo; });
   return parts;
 }
+
+// The parts a horizontal line meets, found through buckets of equal height
+// (as many as parts); parts across more than kTallBuckets buckets are in one
+// list that every query reads.
+class PartIndex {
+ public:
+  explicit PartIndex(std::vector<Part> parts) : parts_(std::move(parts)) {
+    double y0 = 0, y1 = 0;
+    for (std::size_t i = 0; i < parts_.size(); ++i) {
+      y0 = i == 0 ? parts_[i].ylo : std::min(y0, parts_[i].ylo);
+      y1 = i == 0 ? parts_[i].yhi : std::max(y1, parts_[i].yhi);
+    }
+    y0_ = y0;
+    buckets_.resize(std::max<std::size_t>(parts_.size(), 1));
+    cell_ = (y1 - y0) / static_cast<double>(buckets_.size());
+    for (std::size_t i = 0; i < parts_.size(); ++i) {
+      const std::size_t b0 = bucket(parts_[i].ylo), b1 = bucket(parts_[i].yhi);
+      if (b1 - b0 >= kTallBuckets) {
+        tall_.push_back(i);
+        continue;
+      }
+      for (std::size_t b = b0; b <= b1; ++b) buckets_[b].push_back(i);
+    }
+  }
+  // f(part) for every part with ylo <= y <= yhi.
+  template <class F>
+  void at_height(double y, F&& f) const {
+    auto visit = [&](std::size_t i) {
+      if (parts_[i].ylo <= y && y <= parts_[i].yhi) f(parts_[i]);
+    };
+    for (const std::size_t i : buckets_[bucket(y)]) visit(i);
+    for (const std::size_t i : tall_) visit(i);
+  }
+
+ private:
+  static constexpr std::size_t kTallBuckets = 64;
+  std::size_t bucket(double y) const {
+    if (!(cell_ > 0.0)) return 0;
+    const double b = std::floor((y - y0_) / cell_);
+    return static_cast<std::size_t>(std::clamp(b, 0.0, static_cast<double>(buckets_.size() - 1)));
+  }
+  std::vector<Part> parts_;
+  double y0_ = 0, cell_ = 0;
+  std::vector<std::vector<std::size_t>> buckets_;
+  std::vector<std::size_t> tall_;
+};
 
 // Whether the ray from (x, y) along +x crosses the part. Ends on the ray
 // count as below it (a half-open rule), so a ray through a vertex counts the
@@ -436,7 +511,7 @@ bool crosses(const Part& p, double x, double y) {
 // the piece runs closer to x, so the ray leaves the piece at 45 degrees or
 // more; the piece itself counts when the left side lies behind the ray's start.
 void orient_by_parity(std::vector<Piece>& arr) {
-  const std::vector<Part> frames[2] = {monotone_parts(arr, false), monotone_parts(arr, true)};
+  const PartIndex frames[2] = {PartIndex(monotone_parts(arr, false)), PartIndex(monotone_parts(arr, true))};
   std::vector<char> flip(arr.size(), 0);
   for (std::size_t i = 0; i < arr.size(); ++i) {
     const Segment& s = arr[i].seg;
@@ -444,14 +519,10 @@ void orient_by_parity(std::vector<Piece>& arr) {
     const bool swap = std::abs(t.y) < std::abs(t.x);
     const Vec2 m = swap ? swapped(evaluate(s, 0.5)) : evaluate(s, 0.5);
     int count = swap ? t.x < 0.0 : t.y > 0.0;
-    const std::vector<Part>& parts = frames[swap ? 1 : 0];
-    const auto end =
-        std::upper_bound(parts.begin(), parts.end(), m.y, [](double y, const Part& p) { return y < p.ylo; });
-    for (auto p = parts.begin(); p != end; ++p) {
-      if (p->yhi < m.y) continue;
-      if (p->piece == i && p->t0 <= 0.5 && 0.5 <= p->t1) continue;  // the crossing at m itself
-      count += crosses(*p, m.x, m.y);
-    }
+    frames[swap ? 1 : 0].at_height(m.y, [&](const Part& p) {
+      if (p.piece == i && p.t0 <= 0.5 && 0.5 <= p.t1) return;  // the crossing at m itself
+      count += crosses(p, m.x, m.y);
+    });
     flip[i] = count % 2 == 0;
   }
   for (std::size_t i = 0; i < arr.size(); ++i) {
