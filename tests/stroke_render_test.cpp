@@ -239,14 +239,21 @@ TEST(StrokeInvariant, TenthOfAPixelLineKeepsExactCoverage) {
 }
 
 // Many crossing subpaths in one opaque stroke (178 lines and arcs 0.5 px
-// wide, from bench/stroke_peer.py's CAD sheet), beyond what build_mesh's
-// budget meshes as one union: drawn subpath by subpath (docs/strokes.md,
-// limits), matching the union's exact coverage but for antialiased edges
-// where subpaths cross.
+// wide, from bench/stroke_peer.py's CAD sheet, drawn twice, the second time
+// shifted by (37, 23) px), beyond what build_mesh's budget meshes as one
+// union: drawn subpath by subpath (docs/strokes.md, limits), matching the
+// union's exact coverage but for antialiased edges where subpaths cross.
 TEST(StrokeLimits, CrossingSubpathsPastTheMeshBudgetAreDrawnOpaque) {
-  const ShapeDocument doc =
+  ShapeDocument doc =
       read_shape_file(std::string(CURVETEXT_SOURCE_DIR) + "/tests/fixtures/strokes/crossing_thin_strokes.json");
-  const Shape& shape = doc.shapes.at(0);
+  Shape& shape = doc.shapes.at(0);
+  const std::size_t once = shape.contours.size();
+  for (std::size_t i = 0; i < once; ++i) {
+    ShapeContour shifted = shape.contours[i];
+    for (RationalBezier& piece : shifted.pieces)
+      for (Vec2& p : piece.points) p = p + Vec2{37.0, 23.0};
+    shape.contours.push_back(shifted);
+  }
   const Outline whole = stroke_outline(shape.contours, shape.stroke->style, tolerance::kStrokeOffsetPx);
   bool refused = false;
   try {
@@ -254,7 +261,7 @@ TEST(StrokeLimits, CrossingSubpathsPastTheMeshBudgetAreDrawnOpaque) {
   } catch (const Error& e) {
     refused = e.code() == ErrorCode::Geometry;
   }
-  if (!refused) GTEST_SKIP() << "build_mesh now meshes this union: the fallback is not reached";
+  ASSERT_TRUE(refused) << "build_mesh meshes this union: the subpath-by-subpath fallback is not reached";
   // A 512 x 384 window of the sheet at 1 px per unit.
   const int w = 512, h = 384;
   const Placement placement(1.0, -600.0, 900.0);

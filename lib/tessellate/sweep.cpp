@@ -151,14 +151,38 @@ class Sweep {
   // every edge has the fill on its left).
   int side_of_edge(std::uint32_t edge, Vec2 p) { return orient2d(at(edge), at(next_[edge]), p); }
 
-  int find_by_left(std::uint32_t edge) const {
-    for (std::size_t k = 0; k < status_.size(); ++k)
-      if (status_[k].left == edge) return static_cast<int>(k);
-    return kNone;
+  // The status is ordered left to right along the sweep line, so the
+  // intervals wholly left of p (p right of their right edge) come first: the
+  // first one that is not, by binary search. Long outlines (a stroked
+  // zigzag) keep thousands of intervals open at once.
+  std::size_t first_not_left_of(Vec2 p) {
+    std::size_t lo = 0, hi = status_.size();
+    while (lo < hi) {
+      const std::size_t mid = lo + (hi - lo) / 2;
+      if (side_of_edge(status_[mid].right, p) < 0) {
+        lo = mid + 1;
+      } else {
+        hi = mid;
+      }
+    }
+    return lo;
   }
-  int find_by_right(std::uint32_t edge) const {
+  // The interval whose left (right) edge is `edge`, an edge through the
+  // event point p: found next to where p lies, else by a full scan.
+  int find_by_left(std::uint32_t edge, Vec2 p) {
+    return find_near(p, [&](const Interval& iv) { return iv.left == edge; });
+  }
+  int find_by_right(std::uint32_t edge, Vec2 p) {
+    return find_near(p, [&](const Interval& iv) { return iv.right == edge; });
+  }
+  template <class Match>
+  int find_near(Vec2 p, Match match) {
+    constexpr std::size_t kNear = 4;
+    const std::size_t k0 = first_not_left_of(p), from = k0 > kNear ? k0 - kNear : 0;
+    for (std::size_t k = from; k < status_.size() && k <= k0 + kNear; ++k)
+      if (match(status_[k])) return static_cast<int>(k);
     for (std::size_t k = 0; k < status_.size(); ++k)
-      if (status_[k].right == edge) return static_cast<int>(k);
+      if (match(status_[k])) return static_cast<int>(k);
     return kNone;
   }
 
@@ -177,12 +201,21 @@ class Sweep {
 // orientation of the loops did not foresee.
 void Sweep::start(std::uint32_t v, std::uint32_t u) {
   const Vec2 p = at(v);
-  std::size_t k = 0;
-  for (; k < status_.size(); ++k) {
-    const int s = side_of_edge(status_[k].left, p);
+  // The first interval whose left edge has v on its outer side (v is left of
+  // it, and outside every interval from there on).
+  std::size_t lo = 0, hi = status_.size();
+  while (lo < hi) {
+    const std::size_t mid = lo + (hi - lo) / 2;
+    const int s = side_of_edge(status_[mid].left, p);
     if (s == 0) ok_ = false;
-    if (s < 0) break;  // v is left of this interval (and outside every interval)
+    if (s < 0) {
+      hi = mid;
+    } else {
+      lo = mid + 1;
+    }
   }
+  const std::size_t k = lo;
+  if (k < status_.size() && side_of_edge(status_[k].left, p) == 0) ok_ = false;
   // Right of interval k - 1's left edge: v must also be right of its right edge.
   if (k > 0 && side_of_edge(status_[k - 1].right, p) >= 0) ok_ = false;
   Interval iv;
@@ -196,14 +229,15 @@ void Sweep::start(std::uint32_t v, std::uint32_t u) {
 // diagonal to the interval's last vertex (or to its pending merge vertex).
 void Sweep::split(std::uint32_t v, std::uint32_t u) {
   const Vec2 p = at(v);
+  // Only the first interval not wholly left of v can hold it; v on an edge
+  // of it or of its left neighbour is a degenerate input.
   int found = kNone;
-  for (std::size_t k = 0; k < status_.size(); ++k) {
+  const std::size_t k = first_not_left_of(p);
+  if (k > 0 && side_of_edge(status_[k - 1].right, p) == 0) ok_ = false;
+  if (k < status_.size()) {
     const int l = side_of_edge(status_[k].left, p), r = side_of_edge(status_[k].right, p);
     if (l == 0 || r == 0) ok_ = false;
-    if (l > 0 && r > 0) {
-      found = static_cast<int>(k);
-      break;
-    }
+    if (l > 0 && r > 0) found = static_cast<int>(k);
   }
   if (found == kNone) {
     ok_ = false;
@@ -243,7 +277,7 @@ void Sweep::split(std::uint32_t v, std::uint32_t u) {
 
 // Both edges below v, convex: the interval [edge v -> w, edge u -> v] ends.
 void Sweep::end(std::uint32_t v, std::uint32_t u) {
-  const int k = find_by_left(v);
+  const int k = find_by_left(v, at(v));
   if (k == kNone || status_[static_cast<std::size_t>(k)].right != u) {
     ok_ = false;
     return;
@@ -257,7 +291,7 @@ void Sweep::end(std::uint32_t v, std::uint32_t u) {
 // Both edges below v, reflex: the intervals left and right of v become one,
 // with v as its pending merge vertex.
 void Sweep::merge(std::uint32_t v, std::uint32_t u) {
-  const int k = find_by_right(u);
+  const int k = find_by_right(u, at(v));
   if (k == kNone || static_cast<std::size_t>(k) + 1 >= status_.size() ||
       status_[static_cast<std::size_t>(k) + 1].left != v) {
     ok_ = false;
@@ -290,7 +324,7 @@ void Sweep::merge(std::uint32_t v, std::uint32_t u) {
 
 // Edge u -> v above, v -> w below: v is on a left boundary.
 void Sweep::regular_left(std::uint32_t v, std::uint32_t u) {
-  const int k = find_by_left(v);
+  const int k = find_by_left(v, at(v));
   if (k == kNone) {
     ok_ = false;
     return;
@@ -308,7 +342,7 @@ void Sweep::regular_left(std::uint32_t v, std::uint32_t u) {
 
 // Edge u -> v below, v -> w above: v is on a right boundary.
 void Sweep::regular_right(std::uint32_t v, std::uint32_t u) {
-  const int k = find_by_right(u);
+  const int k = find_by_right(u, at(v));
   if (k == kNone) {
     ok_ = false;
     return;
