@@ -244,14 +244,15 @@ TEST_P(MeshHashFuzzCorpus, EveryInputsMeshesAreTheStoredOnes) {
 
 INSTANTIATE_TEST_SUITE_P(
     Targets, MeshHashFuzzCorpus,
-    ::testing::Values(HashTarget{"outline", mesh_hash_outline_input, {"tests/fuzz/corpus/outline"}},
-                      HashTarget{"svg_path", mesh_hash_svg_path_input, {"tests/fuzz/corpus/svg_path"}},
-                      HashTarget{"nurbs_json",
-                                 mesh_hash_nurbs_json_input,
-                                 {"tests/fuzz/corpus/nurbs_json", "tests/fixtures/shapes",
-                                  "docs/shapes/handle-weights.json", "docs/shapes/weights-triangle.json"}},
-                      HashTarget{"svg", mesh_hash_svg_input, {"tests/fuzz/corpus/svg", "tests/fixtures/shapes"}},
-                      HashTarget{"font", mesh_hash_font_input, {"tests/fuzz/corpus/font", "fonts/test"}}),
+    ::testing::Values(
+        HashTarget{"outline", mesh_hash_outline_input, {"tests/fuzz/corpus/outline"}},
+        HashTarget{"svg_path", mesh_hash_svg_path_input, {"tests/fuzz/corpus/svg_path", "tests/fuzz/slow/svg_path"}},
+        HashTarget{"nurbs_json",
+                   mesh_hash_nurbs_json_input,
+                   {"tests/fuzz/corpus/nurbs_json", "tests/fixtures/shapes", "docs/shapes/handle-weights.json",
+                    "docs/shapes/weights-triangle.json"}},
+        HashTarget{"svg", mesh_hash_svg_input, {"tests/fuzz/corpus/svg", "tests/fixtures/shapes"}},
+        HashTarget{"font", mesh_hash_font_input, {"tests/fuzz/corpus/font", "fonts/test"}}),
     [](const ::testing::TestParamInfo<HashTarget>& param_info) { return std::string(param_info.param.name); });
 
 }  // namespace
