@@ -349,11 +349,34 @@ void append_quadratics(const RationalBezier& curve, double tolerance, std::vecto
   approximate(curve, tolerance, 0, out, budget);
 }
 
+// The contour just closed (the last of `o`): a closing line within
+// tolerance::kCloseGapOfTolerance, and a tiny fraction of the contour's size,
+// becomes the segment before it ending on the start, which moves by at most
+// that much.
+void close_tiny_gap(Outline& o, double tolerance) {
+  std::vector<Segment>& segs = o.contours().back().segments;
+  if (segs.size() < 3) return;
+  const Segment closing = segs.back();
+  if (closing.kind != Segment::Kind::Line) return;
+  Box box;
+  for (const Segment& s : segs) box.add(s.p[0]);
+  const double gap = distance(closing.p[0], closing.p[1]);
+  // A gap, not an edge of a contour that is itself that small.
+  if (!(gap <= tolerance::kCloseGapOfTolerance * tolerance) ||
+      !(gap <= tolerance::kCloseGapOfExtent * distance(box.min, box.max)))
+    return;
+  Segment& before = segs[segs.size() - 2];
+  if (before.kind == Segment::Kind::Line && before.p[0] == closing.p[1]) return;
+  (before.kind == Segment::Kind::Line ? before.p[1] : before.p[2]) = closing.p[1];
+  segs.pop_back();
+}
+
 Outline shape_outline(const Shape& shape, double tolerance) {
   Outline o;
   std::vector<Segment> segs;
   for (const ShapeContour& contour : shape.contours) {
     if (contour.pieces.empty()) continue;
+    const std::size_t contours_before = o.contours().size();
     o.move_to(contour.pieces.front().points.front());
     for (const RationalBezier& piece : contour.pieces) {
       segs.clear();
@@ -367,6 +390,7 @@ Outline shape_outline(const Shape& shape, double tolerance) {
       }
     }
     o.close();
+    if (o.contours().size() > contours_before) close_tiny_gap(o, tolerance);
   }
   return o;
 }

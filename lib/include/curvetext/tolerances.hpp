@@ -20,6 +20,17 @@ inline constexpr double kCubicApproximationPx = 1.0 / 16.0;
 // honoured for any glyph-sized cubic drawn below 10,000 px/em).
 inline constexpr int kMaxQuadraticsPerCubic = 64;
 
+// A shape contour whose end lies this close to its start, as a fraction of
+// the tolerance fill_outline is given, is closed by moving its last point
+// onto its start instead of by a line (dimensionless): files close subpaths
+// a few 1e-6 short of where they began (rounded coordinates), and that
+// hairpin line folding back over the first curve is invisible, but the
+// mesher can refuse it.
+// Only gaps below kCloseGapOfExtent of the contour's size are closed so: a
+// contour that small is drawn as it is.
+inline constexpr double kCloseGapOfTolerance = 0.25;
+inline constexpr double kCloseGapOfExtent = 1e-4;
+
 // --- Strokes (stroke.hpp) ------------------------------------------------------
 // Largest distance, in device pixels, between a stroke's fitted offset conics
 // and the true offset curve when a stroke is built for the scale it is drawn
