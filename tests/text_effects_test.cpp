@@ -9,6 +9,7 @@
 // a comparison fails.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -184,6 +185,144 @@ TEST(TextOutline, CentredStrokeMatchesTheCapsulesOfHalfItsWidth) {
   Outline capsules;
   add_capsules(s.pixel_glyphs, 1.0, capsules);
   check("text-stroke-2", got, test::union_coverage(capsules, s.width, s.height));
+}
+
+// `c` convolved along x then y with the discrete Gaussian of the shadow
+// shader: w_k = exp(-k^2 / (2 sigma^2)) for |k| <= ceil(3 sigma), summing to
+// 1; outside the image counts as 0.
+test::Coverage gaussian_blur(const test::Coverage& c, double sigma) {
+  const int r = static_cast<int>(std::ceil(3.0 * sigma));
+  std::vector<double> w(static_cast<std::size_t>(r) + 1);
+  double total = 0.0;
+  for (int k = 0; k <= r; ++k) {
+    w[static_cast<std::size_t>(k)] = sigma > 0.0 ? std::exp(-0.5 * k * k / (sigma * sigma)) : 1.0;
+    total += k == 0 ? w[0] : 2.0 * w[static_cast<std::size_t>(k)];
+  }
+  test::Coverage tmp(c.width, c.height), out(c.width, c.height);
+  for (int pass = 0; pass < 2; ++pass) {
+    const test::Coverage& from = pass == 0 ? c : tmp;
+    test::Coverage& to = pass == 0 ? tmp : out;
+    for (int y = 0; y < c.height; ++y)
+      for (int x = 0; x < c.width; ++x) {
+        double sum = 0.0;
+        for (int k = -r; k <= r; ++k) {
+          const int sx = pass == 0 ? x + k : x, sy = pass == 0 ? y : y + k;
+          if (sx < 0 || sy < 0 || sx >= c.width || sy >= c.height) continue;
+          sum += w[static_cast<std::size_t>(std::abs(k))] * from.at(sx, sy);
+        }
+        to.at(x, y) = static_cast<float>(sum / total);
+      }
+  }
+  return out;
+}
+
+TEST(TextShadow, MatchesTheShiftedGlyphsBlurred) {
+  const Scene s("Rag");
+  struct Case {
+    double dx, dy, blur;
+  };
+  for (const Case c : {Case{3.0, 2.0, 0.0}, Case{3.0, 2.0, 4.0}, Case{0.0, 0.0, 7.0}, Case{-2.5, 1.25, 2.0}}) {
+    TextEffects e;
+    e.shadow = TextShadow{c.dx, c.dy, c.blur, Color{0, 0, 0, 1}};
+    if (c.dx == 0.0 && c.dy == 0.0) e.shadow = TextEffects::glow(c.blur, Color{0, 0, 0, 1});
+    const test::Coverage got = test::coverage_from_black_on_white(draw(s, e, Color{0, 0, 0, 0}));
+    const Placement moved(s.placement.scale, s.placement.origin_x + c.dx, s.placement.origin_y + c.dy);
+    const test::Coverage sharp = test::union_coverage(
+        positive(test::place_outline(test::line_outline(s.font, s.line), moved)), s.width, s.height);
+    char name[96];
+    std::snprintf(name, sizeof name, "text-shadow-%g-%g-%g", c.dx, c.dy, c.blur);
+    check(name, got, gaussian_blur(sharp, c.blur / 2.0));
+  }
+}
+
+// A translucent fill over an opaque outline: inside the glyph only the fill
+// and the background show, never the outline's colour.
+TEST(TextOutline, TranslucentFillDoesNotShowTheOutlineUnderIt) {
+  const Scene s;
+  TextEffects e;
+  e.outline_width = 3.0;
+  e.outline_color = Color{0, 0, 1, 1};
+  const Image img = draw(s, e, Color{1, 0, 0, 0.5f});
+  const test::Coverage glyph = test::union_coverage(s.pixel_glyphs, s.width, s.height);
+  int inside = 0, blue = 0;
+  for (int y = 0; y < s.height; ++y)
+    for (int x = 0; x < s.width; ++x) {
+      // Pixels wholly inside a glyph and a pixel away from its edge.
+      bool deep = true;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int xx = std::clamp(x + dx, 0, s.width - 1), yy = std::clamp(y + dy, 0, s.height - 1);
+          deep = deep && glyph.at(xx, yy) >= 1.0f;
+        }
+      if (!deep) continue;
+      ++inside;
+      const std::uint8_t* p = img.pixel(x, y);
+      // Half red over white: (255, 128, 128); the outline under it would pull green down.
+      if (p[1] < 120 || p[0] < 250) ++blue;
+    }
+  std::printf("%d pixels inside the glyphs, %d showing the outline\n", inside, blue);
+  EXPECT_GT(inside, 50);
+  EXPECT_EQ(blue, 0);
+}
+
+TEST(TextEffectsInput, BadValuesAreRefusedByName) {
+  test::Gpu& g = test::gpu();
+  const Scene s;
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  auto refused = [&](const TextEffects& e, const char* word) {
+    try {
+      (void)EffectBatch::from_text(g.cache, s.font, s.line, s.size_px, e);
+      ADD_FAILURE() << "accepted: " << word;
+    } catch (const Error& err) {
+      EXPECT_EQ(err.code(), ErrorCode::InvalidArgument);
+      EXPECT_NE(std::string(err.what()).find(word), std::string::npos) << err.what();
+    }
+  };
+  for (double v : {-1.0, nan, inf, 1e9, 40.5}) {
+    TextEffects e;
+    e.outline_width = v;
+    refused(e, "outline width");
+    e = {};
+    e.stroke_width = v;
+    refused(e, "stroke width");
+  }
+  for (double v : {-1.0, nan, inf, tolerance::kMaxShadowBlurPx * 2}) {
+    TextEffects e;
+    e.shadow = TextEffects::glow(v, Color{0, 0, 0, 1});
+    refused(e, "blur");
+  }
+  for (double v : {nan, inf, -1e7}) {
+    TextEffects e;
+    e.shadow = TextShadow{v, 0.0, 1.0, Color{0, 0, 0, 1}};
+    refused(e, "offset");
+  }
+  TextEffects e;
+  e.outline_width = 1.0;
+  e.outline_color = Color{0, 0, 2, 1};
+  refused(e, "outline colour");
+}
+
+// The widest outline and blur allowed on a long line: bounded time, a valid
+// mesh (or Error(Geometry)), never a hang.
+TEST(TextEffectsInput, WidestOutlineAndBlurFinish) {
+  test::Gpu& g = test::gpu();
+  const Font font = Font::open(test::kDejaVuSans);
+  const ShapedLine line = shape_line(font, "Wide outlines & blur: AVAWg@%");
+  TextEffects e;
+  e.outline_width = tolerance::kMaxTextEffectWidthEm * 24.0;
+  e.shadow = TextEffects::glow(tolerance::kMaxShadowBlurPx, Color{0, 0, 0, 1});
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    const EffectBatch batch = EffectBatch::from_text(g.cache, font, line, 24.0, e);
+    g.target.begin(400, 300, Color{1, 1, 1, 1});
+    batch.draw(g.renderer, Placement(24.0 / font.metrics().units_per_em, 20, 150), DrawOptions{});
+    (void)g.target.read_pixels();
+  } catch (const Error& err) {
+    EXPECT_EQ(err.code(), ErrorCode::Geometry) << err.what();
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("widest outline and blur: %.2f s\n", seconds);
+  EXPECT_LT(seconds, 60.0);
 }
 
 }  // namespace

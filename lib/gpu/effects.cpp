@@ -362,6 +362,8 @@ void draw_shadow(Renderer& renderer, std::span<const DrawBatch* const> batches, 
   bind_blur_state(info, p);
   glBindFramebuffer(GL_FRAMEBUFFER, p.fbo[1]);
   glViewport(0, 0, r.w, r.h);
+  // Cleared whole: the vertical pass reads up to the radius past the region.
+  glClear(GL_COLOR_BUFFER_BIT);
   glUniform2f(p.u_viewport, static_cast<float>(r.w), static_cast<float>(r.h));
   glUniform3f(p.u_depth, 0.0f, 0.0f, 0.0f);
   glUniform1f(p.u_sigma, static_cast<float>(sigma));
