@@ -19,6 +19,9 @@
 
 #include "curvetext/error.hpp"
 #include "curvetext/font.hpp"
+#include "curvetext/font_collection.hpp"
+#include "curvetext/layout.hpp"
+#include "curvetext/text_block.hpp"
 #include "curvetext/image_target.hpp"
 #include "curvetext/shaping.hpp"
 #include "curvetext/text_effects.hpp"
@@ -233,6 +236,53 @@ TEST(TextShadow, MatchesTheShiftedGlyphsBlurred) {
     std::snprintf(name, sizeof name, "text-shadow-%g-%g-%g", c.dx, c.dy, c.blur);
     check(name, got, gaussian_blur(sharp, c.blur / 2.0));
   }
+}
+
+// A paragraph through TextBlock: the same outline ring and shadow, from
+// the layout's glyph positions.
+TEST(TextBlockEffects, ParagraphOutlineAndShadowMatchTheReference) {
+  test::Gpu& g = test::gpu();
+  FontCollection fonts;
+  ParagraphStyle style;
+  style.default_style.fonts = {test::kDejaVuSans};
+  style.default_style.size_px = 40.0;
+  style.default_style.color = Color{0, 0, 0, 0};
+  const Paragraph p = Paragraph::layout(fonts, "R a", {}, style);
+  Outline glyphs;
+  for (const LayoutLine& line : p.lines())
+    for (const GlyphRun& run : line.runs) {
+      const double scale = run.size_px / run.font->metrics().units_per_em;
+      for (const PositionedGlyph& pg : run.glyphs) {
+        const Outline placed =
+            test::place_outline(run.font->glyph_outline(pg.id), Placement(scale, 10 + pg.x, 10 + pg.y));
+        for (const Contour& c : placed.contours()) glyphs.contours().push_back(c);
+      }
+    }
+  glyphs = positive(glyphs);
+  const int w = 100, h = 70;
+  auto render = [&](const TextEffects& e) {
+    ParagraphStyle with = style;
+    with.default_style.effects = e;
+    const TextBlock block = TextBlock::from_paragraph(g.cache, Paragraph::layout(fonts, "R a", {}, with));
+    g.target.begin(w, h, Color{1, 1, 1, 1});
+    block.draw(g.renderer, 10.0, 10.0, DrawOptions{});
+    return test::coverage_from_black_on_white(g.target.read_pixels());
+  };
+  TextEffects outline;
+  outline.outline_width = 2.5;
+  Outline dilated = glyphs;
+  add_capsules(glyphs, 2.5, dilated);
+  test::Coverage ring = test::union_coverage(dilated, w, h);
+  const test::Coverage fill = test::union_coverage(glyphs, w, h);
+  for (std::size_t i = 0; i < ring.value.size(); ++i) ring.value[i] -= fill.value[i];
+  check("block-outline", render(outline), ring);
+  TextEffects shadow;
+  shadow.shadow = TextShadow{2.0, 3.0, 5.0, Color{0, 0, 0, 1}};
+  Outline moved = glyphs;
+  for (Contour& c : moved.contours())
+    for (Segment& sgm : c.segments)
+      for (Vec2& q : sgm.p) q = q + Vec2{2.0, 3.0};
+  check("block-shadow", render(shadow), gaussian_blur(test::union_coverage(moved, w, h), 2.5));
 }
 
 // A translucent fill over an opaque outline: inside the glyph only the fill

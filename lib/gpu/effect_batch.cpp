@@ -13,8 +13,6 @@ namespace curvetext {
 
 namespace {
 
-bool same(const Color& a, const Color& b) { return a.r == b.r && a.g == b.g && a.b == b.b && a.a == b.a; }
-
 void check_value(const char* what, double v, double limit) {
   if (!std::isfinite(v) || v < 0.0 || v > limit)
     throw Error(ErrorCode::InvalidArgument, std::string(what) + " must be a number from 0 to " + std::to_string(limit) +
@@ -28,12 +26,6 @@ void check_color(const char* what, const Color& c) {
 }
 
 }  // namespace
-
-bool TextEffects::operator==(const TextEffects& o) const {
-  return outline_width == o.outline_width && same(outline_color, o.outline_color) && stroke_width == o.stroke_width &&
-         same(stroke_color, o.stroke_color) && shadow.dx == o.shadow.dx && shadow.dy == o.shadow.dy &&
-         shadow.blur == o.shadow.blur && same(shadow.color, o.shadow.color);
-}
 
 void validate_text_effects(const TextEffects& e, double size_px) {
   const double widest = tolerance::kMaxTextEffectWidthEm * (std::isfinite(size_px) ? size_px : 0.0);
