@@ -6,6 +6,7 @@
 #include "curvetext/error.hpp"
 #include "curvetext/text_effects.hpp"
 #include "curvetext/tolerances.hpp"
+#include "core/format.hpp"
 #include "gpu/batch_impl.hpp"
 #include "gpu/effects.hpp"
 
@@ -15,8 +16,8 @@ namespace {
 
 void check_value(const char* what, double v, double limit) {
   if (!std::isfinite(v) || v < 0.0 || v > limit)
-    throw Error(ErrorCode::InvalidArgument, std::string(what) + " must be a number from 0 to " + std::to_string(limit) +
-                                                " px, got " + std::to_string(v));
+    throw Error(ErrorCode::InvalidArgument, std::string(what) + " must be a number from 0 to " +
+                                                detail::format_number(limit) + " px, got " + detail::format_number(v));
 }
 
 void check_color(const char* what, const Color& c) {

@@ -4,6 +4,8 @@
 // text_effects.hpp draws them. docs/strokes.md ("Text effects").
 #pragma once
 
+#include <string_view>
+
 #include "curvetext/color.hpp"
 #include "curvetext/export.hpp"
 
@@ -56,5 +58,16 @@ struct TextEffects {
 // tolerance::kMaxShadowBlurPx, an offset beyond tolerance::kMaxShadowOffsetPx,
 // or a colour component outside [0, 1]. Thread-safe.
 CURVETEXT_API void validate_text_effects(const TextEffects& effects, double size_px);
+
+// The outline and shadow values of the command line (`--outline 3,#000`,
+// `--shadow 2,2,4,#0008`, fields separated by commas) and of markup
+// (`<span outline="3 #000" shadow="2 2 4 #0008">`, by spaces): "W COLOR"
+// sets the outline's width (px) and colour; "DX DY BLUR COLOR" returns a
+// shadow (px). Colours as parse_color. Throws Error(InvalidArgument) naming
+// the field for a missing or extra field, a number that is not finite, a
+// negative width or blur, or a bad colour (the limits relative to the text
+// size are validate_text_effects', checked when the text is drawn).
+CURVETEXT_API void parse_outline(std::string_view text, char separator, TextEffects& effects);
+CURVETEXT_API TextShadow parse_shadow(std::string_view text, char separator);
 
 }  // namespace curvetext
