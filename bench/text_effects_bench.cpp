@@ -2,7 +2,7 @@
 // plain glyph meshes of the same line (a fresh glyph cache each time, so every
 // glyph is built), and what a frame with a shadow costs beside one without.
 //   build/bench/text_effects_bench --benchmark_counters_tabular=true
-// Figures: docs/performance.md ("Text effects").
+// Figures: docs/strokes.md ("Text effects", "Measured").
 #include <benchmark/benchmark.h>
 
 #include <string>
