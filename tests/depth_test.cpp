@@ -429,11 +429,12 @@ TEST_P(Depth, TextEffectsAreDepthTestedLikeTheText) {
             ink_right += p[0] < 250 || p[2] < 250 ? 1 : 0;
         }
       EXPECT_GT(ink_right, 500) << mode << " z " << z;
-      if (z > 0)
+      if (z > 0) {
         EXPECT_EQ(changed_left, 0) << mode << ": effects behind the quad showed through";
-      else
+      } else {
         EXPECT_GT(changed_left, 500) << mode << ": effects in front of the quad are missing";
-      if (z < 0) EXPECT_GT(shadow_left, 100) << mode << ": the shadow in front of the quad is missing";
+        EXPECT_GT(shadow_left, 100) << mode << ": the shadow in front of the quad is missing";
+      }
       EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR)) << mode;
     }
   }

@@ -91,8 +91,9 @@ void add_capsules(const Outline& pixel_glyph, double r, Outline& out) {
       pts.push_back(s.p[0]);
       if (s.kind != Segment::Kind::Conic) continue;
       const double dx = s.p[1].x - 0.5 * (s.p[0].x + s.p[2].x), dy = s.p[1].y - 0.5 * (s.p[0].y + s.p[2].y);
-      const int n = std::max(4, static_cast<int>(std::ceil(std::sqrt(std::hypot(dx, dy) / kOracleFlatnessPx))) * 2);
-      for (int i = 1; i < n; ++i) pts.push_back(conic_at(s, static_cast<double>(i) / n));
+      const int pieces =
+          std::max(4, static_cast<int>(std::ceil(std::sqrt(std::hypot(dx, dy) / kOracleFlatnessPx))) * 2);
+      for (int i = 1; i < pieces; ++i) pts.push_back(conic_at(s, static_cast<double>(i) / pieces));
     }
     const std::size_t n = pts.size();
     for (std::size_t i = 0; i < n; ++i) {
@@ -117,8 +118,8 @@ void add_capsules(const Outline& pixel_glyph, double r, Outline& out) {
       }
       const double len = std::hypot(b.x - a.x, b.y - a.y);
       if (len == 0.0) continue;
-      const Vec2 n{-(b.y - a.y) / len * r, (b.x - a.x) / len * r};
-      add_positive(out, quad(a + n, b + n, b - n, a - n));
+      const Vec2 side{-(b.y - a.y) / len * r, (b.x - a.x) / len * r};
+      add_positive(out, quad(a + side, b + side, b - side, a - side));
     }
   }
 }
