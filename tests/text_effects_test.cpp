@@ -286,6 +286,29 @@ TEST(TextBlockEffects, ParagraphOutlineAndShadowMatchTheReference) {
   check("block-shadow", render(shadow), gaussian_blur(test::union_coverage(moved, w, h), 2.5));
 }
 
+// Effect meshes are cached per glyph and width bucket in ems: the same line
+// again builds nothing, and an outline of the same width in ems at another
+// size of the same level of detail band (40 and 48 px/em) neither; another
+// width builds.
+TEST(TextEffectsCache, OutlinesAreBuiltOncePerGlyphAndWidthInEms) {
+  GlyphCache cache;
+  const Font font = Font::open(test::kDejaVuSans);
+  const ShapedLine line = shape_line(font, "cache");
+  TextEffects e;
+  e.outline_width = 2.0;
+  (void)EffectBatch::from_text(cache, font, line, 40.0, e);
+  const std::size_t built = cache.stats().misses;
+  EXPECT_GE(built, 8u);  // four distinct glyphs, each a fill and an outline
+  (void)EffectBatch::from_text(cache, font, line, 40.0, e);
+  EXPECT_EQ(cache.stats().misses, built);
+  e.outline_width = 2.4;  // 0.05 em at 48 px/em, as 2 px at 40
+  (void)EffectBatch::from_text(cache, font, line, 48.0, e);
+  EXPECT_EQ(cache.stats().misses, built);
+  e.outline_width = 3.0;
+  (void)EffectBatch::from_text(cache, font, line, 48.0, e);
+  EXPECT_GT(cache.stats().misses, built);
+}
+
 // A translucent fill over an opaque outline: inside the glyph only the fill
 // and the background show, never the outline's colour.
 TEST(TextOutline, TranslucentFillDoesNotShowTheOutlineUnderIt) {

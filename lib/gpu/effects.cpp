@@ -254,8 +254,9 @@ Region shadow_region(std::span<const DrawBatch* const> batches, const Transform&
     }
   }
   const double rc = reach;
+  if (!(box.min.x <= box.max.x)) return Region{};  // nothing inked (spaces)
   double x0 = -rc, y0 = -rc, x1 = double{vw} + rc, y1 = double{vh} + rc;
-  if (box.min.x <= box.max.x) {
+  {
     double bx0 = 1e300, by0 = 1e300, bx1 = -1e300, by1 = -1e300;
     bool behind = false;
     for (const Vec2 c : {box.min, box.max, Vec2{box.min.x, box.max.y}, Vec2{box.max.x, box.min.y}}) {
