@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "curvetext/font.hpp"
+#include "curvetext/font_collection.hpp"
 #include "curvetext/headless.hpp"
 #include "curvetext/layout.hpp"
 #include "curvetext/renderer.hpp"
@@ -385,6 +386,57 @@ TEST_P(Depth, HudTextWithTheDepthTestOffIsDrawnOverNearGeometry) {
       EXPECT_GT(ink_left(px), 150) << "text block at z " << z;
     else
       EXPECT_EQ(ink_left(px), 0) << "text block at z " << z;
+  }
+}
+
+// A block with an outline, a centred stroke and a blurred shadow is
+// depth-tested like its text: behind the quad over the left half none of it
+// shows there (the shadow's composite included), in front of it all of it.
+TEST_P(Depth, TextEffectsAreDepthTestedLikeTheText) {
+  const bool gles2_run = test::expects_gles2();
+  if (gles2_run && GetParam() != ContextKind::Gles2) GTEST_SKIP() << "OpenGL ES 2.0 only in this run";
+  HeadlessContext context = HeadlessContext::create(GetParam());
+  GlyphCache cache;
+  Renderer renderer;
+  const Scene scene;
+  FontCollection fonts;
+  ParagraphStyle style;
+  style.default_style.fonts = {test::kDejaVuSans};
+  style.default_style.size_px = kPx;
+  style.default_style.effects.outline_width = 3.0;
+  style.default_style.effects.outline_color = Color{1, 0, 0, 1};
+  style.default_style.effects.stroke_width = 1.0;
+  style.default_style.effects.shadow = TextShadow{2.0, 2.0, 6.0, Color{0, 0, 1, 1}};
+  const TextBlock block = TextBlock::from_paragraph(cache, Paragraph::layout(fonts, "Effects here", {}, style));
+  constexpr int kHalf = kW / 2;
+  for (AntiAliasing aa : {AntiAliasing::Curves, AntiAliasing::Full, AntiAliasing::Msaa}) {
+    const std::string mode = std::string(context_kind_name(GetParam())) + "-" + std::to_string(static_cast<int>(aa));
+    for (const double z : {0.5, -0.5}) {
+      Placement at(1.0, 8.25, 10.5);
+      at.depth = {0.0, 0.0, z};
+      scene.clear();
+      scene.quad(kHalf, 0.0f);
+      block.draw(renderer, at, DrawOptions(Color{0, 0, 0, 1}, aa));
+      const std::vector<std::uint8_t> px = scene.pixels();
+      int changed_left = 0, ink_right = 0, shadow_left = 0;
+      for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x) {
+          const std::uint8_t* p = &px[(static_cast<std::size_t>(y) * kW + x) * 4];
+          if (x < kHalf) {
+            changed_left += (p[0] < 126 || p[0] > 129 || p[2] < 126 || p[2] > 129) ? 1 : 0;
+            shadow_left += p[2] > p[0] + 20 ? 1 : 0;  // the blue shadow over the grey quad
+          } else
+            ink_right += p[0] < 250 || p[2] < 250 ? 1 : 0;
+        }
+      EXPECT_GT(ink_right, 500) << mode << " z " << z;
+      if (z > 0) {
+        EXPECT_EQ(changed_left, 0) << mode << ": effects behind the quad showed through";
+      } else {
+        EXPECT_GT(changed_left, 500) << mode << ": effects in front of the quad are missing";
+        EXPECT_GT(shadow_left, 100) << mode << ": the shadow in front of the quad is missing";
+      }
+      EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR)) << mode;
+    }
   }
 }
 

@@ -23,6 +23,9 @@
 #include "curvetext/shapes.hpp"
 #include "curvetext/shaping.hpp"
 #include "curvetext/draw_batch.hpp"
+#include "curvetext/font_collection.hpp"
+#include "curvetext/layout.hpp"
+#include "curvetext/text_block.hpp"
 #include "support/fonts.hpp"
 #include "support/gpu.hpp"
 
@@ -455,6 +458,57 @@ TEST_P(GlState, ShapeDrawingLeavesTheApplicationsState) {
         (in ? inside : outside) += ink ? 1 : 0;
       }
     EXPECT_GT(inside, 4000u);
+    EXPECT_EQ(outside, 0u);
+  }
+}
+
+// A text block with an outline, a centred stroke and a blurred shadow (the
+// shadow's offscreen passes, its blur program and buffers) in every mode:
+// the application's state comes back, and ink lands only inside its scissor
+// box, the shadow's blur included.
+TEST_P(GlState, TextEffectsLeaveTheApplicationsState) {
+  const bool gles2_run = test::expects_gles2();
+  if (gles2_run && GetParam() != ContextKind::Gles2) GTEST_SKIP() << "OpenGL ES 2.0 only in this run";
+  HeadlessContext context = HeadlessContext::create(GetParam());
+  {
+    FontCollection fonts;
+    GlyphCache cache;
+    Renderer renderer;
+    AppState app;
+    ParagraphStyle style;
+    style.default_style.fonts = {test::kDejaVuSans};
+    style.default_style.size_px = 40.0;
+    style.default_style.color = Color{0, 0, 0, 0.5f};
+    style.default_style.effects.outline_width = 2.0;
+    style.default_style.effects.outline_color = Color{1, 0, 0, 1};
+    style.default_style.effects.stroke_width = 1.0;
+    style.default_style.effects.stroke_color = Color{0, 0, 1, 1};
+    style.default_style.effects.shadow = TextShadow{3.0, 3.0, 8.0, Color{0, 0, 0, 1}};
+    const Paragraph paragraph = Paragraph::layout(fonts, "Glow", {}, style);
+    const TextBlock block = TextBlock::from_paragraph(cache, paragraph);
+    const State before = State::read();
+    for (AntiAliasing aa : {AntiAliasing::None, AntiAliasing::Curves, AntiAliasing::Full, AntiAliasing::Vbaa,
+                            AntiAliasing::Msaa, AntiAliasing::Auto}) {
+      // Near the scissor box's left edge (x 20 of the framebuffer, 10 of the
+      // viewport): the shadow's blur reaches past it.
+      block.draw(renderer, 12.0, 40.0, DrawOptions(Color{0, 0, 0, 1}, aa));
+      EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+      expect_same(before, State::read(),
+                  std::string(context_kind_name(GetParam())) + " after a block with effects in mode " +
+                      std::to_string(static_cast<int>(aa)));
+    }
+    const std::vector<std::uint8_t> px = app.pixels();
+    std::size_t inside = 0, outside = 0, red = 0;
+    for (int y = 0; y < AppState::kSize; ++y)
+      for (int x = 0; x < AppState::kSize; ++x) {
+        const std::uint8_t* p = &px[(static_cast<std::size_t>(y) * AppState::kSize + x) * 4];
+        const bool ink = p[0] < 250 || p[1] < 250 || p[2] < 250;
+        const bool in = x >= 20 && x < 200 && y >= 30 && y < 150;
+        (in ? inside : outside) += ink ? 1 : 0;
+        red += p[0] > 100 && p[1] < 60 && p[2] < 60 ? 1 : 0;
+      }
+    EXPECT_GT(inside, 2000u);
+    EXPECT_GT(red, 50u);  // the outline
     EXPECT_EQ(outside, 0u);
   }
 }

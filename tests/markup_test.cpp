@@ -125,6 +125,39 @@ TEST(Markup, SpanAttributes) {
 }
 
 // Bold asks fontconfig for the family's bold face: the layout draws it.
+TEST(Markup, OutlineAndShadowAttributes) {
+  const TextStyle base = base_style();
+  const MarkupText m = parse_markup(
+      "a <span outline=\"2.5 #ff0000\" shadow=\"1 -2px  3 #00000080\">fx <span shadow=\"0 0 6 "
+      "blue\">glow</span></span>",
+      base);
+  ASSERT_EQ(m.text, "a fx glow");
+  EXPECT_FALSE(style_at(m, 0, base).effects.any());
+  const TextEffects fx = style_at(m, 2, base).effects;
+  EXPECT_EQ(fx.outline_width, 2.5);
+  EXPECT_EQ(fx.outline_color.r, 1.0f);
+  EXPECT_EQ(fx.shadow.dx, 1.0);
+  EXPECT_EQ(fx.shadow.dy, -2.0);
+  EXPECT_EQ(fx.shadow.blur, 3.0);
+  EXPECT_NEAR(fx.shadow.color.a, 128.0 / 255.0, 1e-6);
+  // The inner span keeps the outline and replaces the shadow: a glow.
+  const TextEffects glow = style_at(m, 5, base).effects;
+  EXPECT_EQ(glow.outline_width, 2.5);
+  EXPECT_EQ(glow.shadow.dx, 0.0);
+  EXPECT_EQ(glow.shadow.blur, 6.0);
+  EXPECT_EQ(glow.shadow.color.b, 1.0f);
+  for (const char* bad :
+       {"<span outline=\"2\">x</span>", "<span outline=\"-1 red\">x</span>", "<span shadow=\"1 1 red\">x</span>",
+        "<span shadow=\"1 1 inf red\">x</span>", "<span outline=\"2 nocolour\">x</span>"}) {
+    try {
+      (void)parse_markup(bad, base);
+      ADD_FAILURE() << "accepted " << bad;
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("markup, byte"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(Markup, BoldLaysOutInTheBoldFace) {
   FontCollection fonts;
   ParagraphStyle style;

@@ -10,6 +10,7 @@
 #include "curvetext/image_style.hpp"
 #include "curvetext/mesh.hpp"
 #include "compose/color_layers.hpp"
+#include "compose/effect_groups.hpp"
 
 namespace curvetext {
 
@@ -18,7 +19,8 @@ struct TextBlock::Group {
   double size_px = 0.0;
   double scale = 1.0;  // pixels per font unit
   std::optional<DrawBatch> glyphs;
-  std::optional<DrawBatch> bars;  // pixels, y up (placement scale 1)
+  std::optional<EffectBatch> effects;  // instead of `glyphs` when the style has effects
+  std::optional<DrawBatch> bars;       // pixels, y up (placement scale 1)
 };
 
 namespace {
@@ -29,12 +31,14 @@ struct GroupInProgress {
   const Font* font = nullptr;
   double size_px = 0.0;
   Color color;
+  TextEffects effects;
   std::vector<PlacedGlyph> glyphs;  // font units, y up, from the layout box's origin
   Outline bars;
 
-  bool takes(const GlyphRun& run, const Color& c) const {
+  bool takes(const GlyphRun& run, const TextStyle& style) const {
+    const Color& c = style.color;
     return font == run.font.get() && size_px == run.size_px && color.r == c.r && color.g == c.g && color.b == c.b &&
-           color.a == c.a;
+           color.a == c.a && effects == style.effects;
   }
 };
 
@@ -104,7 +108,10 @@ TextBlock TextBlock::from_paragraph(GlyphCache& cache, const Paragraph& paragrap
     g.color = group.color;
     g.size_px = group.size_px;
     g.scale = group.size_px / group.font->metrics().units_per_em;
-    if (!group.glyphs.empty())
+    if (!group.glyphs.empty() && format != ColorFormat::Bitmap && group.effects.any())
+      g.effects.emplace(
+          detail::effect_batch(cache, *group.font, group.glyphs, group.size_px, on_screen_scale, group.effects));
+    else if (!group.glyphs.empty())
       g.glyphs.emplace(format == ColorFormat::Bitmap
                            ? DrawBatch::from_color_bitmaps(cache, *group.font, group.glyphs, ppem)
                            : DrawBatch::from_glyphs(cache, *group.font, group.glyphs, ppem));
@@ -123,9 +130,9 @@ TextBlock TextBlock::from_paragraph(GlyphCache& cache, const Paragraph& paragrap
       const TextStyle& style = paragraph.styles()[run.style];
       if (style.background.a > 0.0f) backgrounds.add(line, run, style.background);
       if (run.glyphs.empty()) continue;
-      if (!group.takes(run, style.color)) {
+      if (!group.takes(run, style)) {
         finish();
-        group = GroupInProgress{run.font.get(), run.size_px, style.color, {}, {}};
+        group = GroupInProgress{run.font.get(), run.size_px, style.color, style.effects, {}, {}};
       }
       const double scale = run.size_px / run.font->metrics().units_per_em;
       for (const PositionedGlyph& g : run.glyphs) group.glyphs.push_back(PlacedGlyph{g.id, g.x / scale, -g.y / scale});
@@ -151,8 +158,25 @@ TextBlock TextBlock::from_paragraph(GlyphCache& cache, const Paragraph& paragrap
 void TextBlock::draw(Renderer& renderer, const Placement& at, const DrawOptions& options, BlockColors colors) const {
   if (colors == BlockColors::Styles)
     for (const Group& g : backgrounds_) draw_group(renderer, g, at, options, g.color);
+  // Every group's shadow, then every outline, under every fill; strokes over them.
+  const bool effects = colors == BlockColors::Styles;
+  if (effects) draw_effects(renderer, at, options, EffectLayer::Shadow);
+  if (effects) draw_effects(renderer, at, options, EffectLayer::Outline);
   for (const Group& g : groups_)
     draw_group(renderer, g, at, options, colors == BlockColors::Styles ? g.color : options.color);
+  if (effects) draw_effects(renderer, at, options, EffectLayer::Stroke);
+}
+
+void TextBlock::draw_effects(Renderer& renderer, const Placement& at, const DrawOptions& options,
+                             EffectLayer layer) const {
+  for (const Group& g : groups_) {
+    if (!g.effects) continue;
+    DrawOptions draw = options;
+    draw.antialiasing = resolve_antialiasing(options.antialiasing, g.size_px * on_screen_scale_);
+    Placement p = at;
+    p.scale = at.scale * g.scale;
+    g.effects->draw_layer(renderer, p, draw, layer);
+  }
 }
 
 void TextBlock::draw(Renderer& renderer, double x, double y, const DrawOptions& options,
@@ -170,6 +194,7 @@ void TextBlock::draw_group(Renderer& renderer, const Group& g, const Placement& 
   Placement p = at;
   p.scale = at.scale * g.scale;
   if (g.glyphs) renderer.draw(*g.glyphs, p, draw);
+  if (g.effects) g.effects->draw_layer(renderer, p, draw, EffectLayer::Fill);
   p.scale = at.scale;
   if (g.bars) renderer.draw(*g.bars, p, draw);
 }

@@ -94,6 +94,17 @@ inline constexpr double kStrokeZeroLengthRelative = 1e-12;
 // (dimensionless).
 inline constexpr double kStrokeSnapOfTolerance = 1.0 / 1024.0;
 
+// --- Text effects (lib/gpu/effects.cpp) ----------------------------------------
+// A text outline's or centred stroke's offsets are fitted within this
+// fraction of the glyph mesh's cubic tolerance (1/16 px at the top of its
+// level of detail band: 1/64 px, the stroker's default; dimensionless).
+inline constexpr double kEffectOffsetOfTolerance = 1.0 / 4.0;
+// Where the mesher refuses the union of a wide stroke's loops with the glyph
+// (its hull separation budget: round loops much larger than the glyph's
+// curves), the loops and the glyph are flattened to lines within this
+// fraction of that tolerance (1/256 px) and united again (dimensionless).
+inline constexpr double kEffectFlatnessOfTolerance = 1.0 / 16.0;
+
 // --- Rendering (lib/gpu, shaders/) -------------------------------------------
 // How far every triangle grows outward for `full` antialiasing (and vbaa's
 // offscreen pass), in pixels: a pixel's box reaches at most sqrt(2)/2 px

@@ -10,6 +10,7 @@
 #include "curvetext/error.hpp"
 #include "curvetext/lod.hpp"
 #include "gpu/batch_impl.hpp"
+#include "gpu/effects.hpp"
 #include "gpu/gl_state.hpp"
 
 namespace curvetext {
@@ -31,7 +32,7 @@ Box bounds_of(const gpu::PackedMesh& packed) {
 }  // namespace
 
 GlyphCache::Impl::Packed GlyphCache::Impl::get(const Font& font, std::uint32_t glyph_id, double pixels_per_em,
-                                               bool upload) {
+                                               bool upload, std::uint32_t effect) {
   const int upem = font.metrics().units_per_em;
   if (!(pixels_per_em > 0) || !std::isfinite(pixels_per_em) || upem <= 0) {
     throw Error(ErrorCode::InvalidArgument, "glyph size must be a positive number of pixels per em");
@@ -40,10 +41,11 @@ GlyphCache::Impl::Packed GlyphCache::Impl::get(const Font& font, std::uint32_t g
   // cache is probed twice instead: outlines without cubics are exact at every
   // scale and stored under lod 0; outlines with cubics under their band
   // (lod_for_scale never returns 0: the lowest band is tolerance::kMinLodLog2).
+  // Effect meshes are fitted within a tolerance of the band: always under it.
   const int cubic_lod = lod_for_scale(pixels_per_em / upem, upem);
   std::list<Entry>::iterator entry = lru.end();
-  for (int probe : {0, cubic_lod}) {
-    auto it = index.find(Key{font.cache_key(), glyph_id, probe});
+  for (int probe : {effect != 0 ? cubic_lod : 0, cubic_lod}) {
+    auto it = index.find(Key{font.cache_key(), glyph_id, probe, effect});
     if (it != index.end()) {
       lru.splice(lru.begin(), lru, it->second);
       ++stats.hits;
@@ -59,10 +61,11 @@ GlyphCache::Impl::Packed GlyphCache::Impl::get(const Font& font, std::uint32_t g
     font.glyph_outline(glyph_id, outline);
     int lod = 0;
     MeshOptions options;
-    if (outline.has_cubics()) {
+    if (outline.has_cubics() || effect != 0) {
       lod = cubic_lod;
       options.cubic_tolerance = cubic_tolerance_for_lod(lod, upem);
     }
+    if (effect != 0) gpu::effect_outline(effect, upem, options.cubic_tolerance, outline, scratch.effect);
     auto glyph = std::make_shared<gpu::CachedGlyph>();
     if (!outline.empty()) {
       build_mesh(outline, options, scratch.mesh);
@@ -70,7 +73,7 @@ GlyphCache::Impl::Packed GlyphCache::Impl::get(const Font& font, std::uint32_t g
       glyph->bounds = bounds_of(glyph->packed);
     }
     const std::size_t cost = glyph->packed.memory_bytes() + kEntryBookkeepingBytes;
-    lru.push_front(Entry{Key{font.cache_key(), glyph_id, lod}, std::move(glyph), cost});
+    lru.push_front(Entry{Key{font.cache_key(), glyph_id, lod, effect}, std::move(glyph), cost});
     index[lru.front().key] = lru.begin();
     stats.bytes += cost;
     stats.glyphs += 1;
@@ -90,6 +93,7 @@ GlyphCache::Impl::Packed GlyphCache::Impl::get(const Font& font, std::uint32_t g
       font.glyph_outline(glyph_id, scratch.outline);
       MeshOptions options;
       if (entry->key.lod != 0) options.cubic_tolerance = cubic_tolerance_for_lod(entry->key.lod, upem);
+      if (effect != 0) gpu::effect_outline(effect, upem, options.cubic_tolerance, scratch.outline, scratch.effect);
       build_mesh(scratch.outline, options, scratch.mesh);
     }
     add_bands(glyph);
@@ -401,7 +405,7 @@ void add_mesh_bands(BatchImpl& impl, std::span<const Mesh* const> meshes, std::s
 }
 
 std::unique_ptr<BatchImpl> text_block(CacheImpl& cache, const Font& font, std::span<const PlacedGlyph> glyphs,
-                                      double pixels_per_em, BlockPath path) {
+                                      double pixels_per_em, BlockPath path, std::uint32_t effect) {
   for (const PlacedGlyph& g : glyphs)
     if (!std::isfinite(g.x) || !std::isfinite(g.y))
       throw Error(ErrorCode::InvalidArgument, "glyph positions must be finite");
@@ -411,7 +415,7 @@ std::unique_ptr<BatchImpl> text_block(CacheImpl& cache, const Font& font, std::s
   // Held here: the cache may drop a glyph of this block while fetching a later one.
   std::vector<CacheImpl::Packed> meshes;
   meshes.reserve(glyphs.size());
-  for (const PlacedGlyph& g : glyphs) meshes.push_back(cache.get(font, g.glyph_id, pixels_per_em, instanced));
+  for (const PlacedGlyph& g : glyphs) meshes.push_back(cache.get(font, g.glyph_id, pixels_per_em, instanced, effect));
   return instanced ? instanced_block(meshes, glyphs) : expanded_block(meshes, glyphs);
 }
 

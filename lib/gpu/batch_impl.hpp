@@ -15,6 +15,7 @@
 #include "curvetext/draw_batch.hpp"
 #include "curvetext/glyph_cache.hpp"
 #include "gpu/bands.hpp"
+#include "gpu/effects.hpp"
 #include "gpu/vertex_format.hpp"
 
 namespace curvetext {
@@ -179,12 +180,14 @@ struct GlyphCache::Impl {
     std::uint64_t font = 0;
     std::uint32_t glyph = 0;
     int lod = 0;
+    std::uint32_t effect = 0;  // 0: the glyph's fill; else an effect's mesh (gpu/effects.hpp)
     bool operator==(const Key&) const = default;
   };
   struct KeyHash {
     std::size_t operator()(const Key& k) const noexcept {
       std::uint64_t h = k.font * 0x9E3779B97F4A7C15ull;
       h ^= (static_cast<std::uint64_t>(k.glyph) << 8) + static_cast<std::uint64_t>(k.lod) + (h << 6) + (h >> 2);
+      h ^= static_cast<std::uint64_t>(k.effect) * 0xC2B2AE3D27D4EB4Full;
       return static_cast<std::size_t>(h);
     }
   };
@@ -199,8 +202,10 @@ struct GlyphCache::Impl {
 
   // The packed mesh of a glyph for drawing at `pixels_per_em`; builds it on
   // a miss, and uploads its GPU buffers when `upload` is set and it has none.
-  // The returned pointer stays valid even if the entry is evicted.
-  Packed get(const Font& font, std::uint32_t glyph_id, double pixels_per_em, bool upload = false);
+  // The returned pointer stays valid even if the entry is evicted. `effect`:
+  // the mesh of that effect of the glyph instead (gpu/effects.hpp).
+  Packed get(const Font& font, std::uint32_t glyph_id, double pixels_per_em, bool upload = false,
+             std::uint32_t effect = 0);
 
   std::size_t budget_bytes;
   // A miss's outline, mesh and packing room: their storage serves every miss.
@@ -210,6 +215,7 @@ struct GlyphCache::Impl {
     gpu::PackScratch pack;
     gpu::BandScratch band;
     gpu::GlyphBands bands;
+    gpu::EffectScratch effect;
   } scratch;
   // The band page being filled (older ones live while glyphs on them do).
   std::shared_ptr<gpu::BandPage> band_page;
@@ -262,7 +268,7 @@ std::unique_ptr<BatchImpl> upload(gpu::PackedMesh packed, IndexUpload how = Inde
 // GLES2 path); tests force either.
 enum class BlockPath { Auto, Expanded, Instanced };
 std::unique_ptr<BatchImpl> text_block(CacheImpl& cache, const Font& font, std::span<const PlacedGlyph> glyphs,
-                                      double pixels_per_em, BlockPath path = BlockPath::Auto);
+                                      double pixels_per_em, BlockPath path = BlockPath::Auto, std::uint32_t effect = 0);
 // A glyph's own GPU buffers for instanced drawing (16-bit indices up to
 // 65,536 vertices, else 32-bit: instancing contexts have them).
 std::shared_ptr<const GlyphBuffers> upload_glyph(const PackedMesh& packed);

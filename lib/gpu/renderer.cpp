@@ -19,6 +19,7 @@
 #include "core/tolerances.hpp"
 #include "gpu/bands.hpp"
 #include "gpu/batch_impl.hpp"
+#include "gpu/effects.hpp"
 #include "gpu/gl_state.hpp"
 #include "gpu/gl_util.hpp"
 #include "gpu/paint.hpp"
@@ -249,6 +250,7 @@ struct Renderer::Impl {
   GLuint ms_fbo = 0, ms_rb = 0;
   int ms_w = 0, ms_h = 0;
   std::size_t offscreen_passes = 0;
+  std::shared_ptr<gpu::EffectPasses> effect_passes;  // text shadows (gpu/effects.cpp)
 
   // The slot holding `key`'s pass (hit), else the least recently used one,
   // grown to w x h texels and marked empty.
@@ -381,7 +383,12 @@ struct Renderer::Impl {
 // Names Renderer::Impl for the helpers below (a friend of Renderer).
 struct RendererAccess {
   using Impl = Renderer::Impl;
+  static Impl& impl(Renderer& r) { return *r.impl_; }
 };
+
+std::shared_ptr<gpu::EffectPasses>& gpu::effect_passes(Renderer& renderer) {
+  return RendererAccess::impl(renderer).effect_passes;
+}
 
 namespace {
 using RendererImpl = RendererAccess::Impl;

@@ -315,10 +315,14 @@ class MarkupParser {
         s.features.insert(s.features.end(), features.begin(), features.end());
       } else if (key == "lang") {
         s.language = value;
+      } else if (key == "outline") {
+        parse_outline(value, ' ', s.effects);
+      } else if (key == "shadow") {
+        s.effects.shadow = parse_shadow(value, ' ');
       } else {
         fail(at, "span attribute " + key +
                      " is not supported (known: font_family, size, weight, style, foreground, background, underline, "
-                     "strikethrough, letter_spacing, word_spacing, font_features, lang)");
+                     "strikethrough, letter_spacing, word_spacing, font_features, lang, outline, shadow)");
       }
     } catch (const Error& e) {
       if (e.code() == ErrorCode::InvalidText) throw;

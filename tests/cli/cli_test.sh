@@ -297,6 +297,23 @@ deep=$(printf '<b>%.0s' $(seq 1000))x$(printf '</b>%.0s' $(seq 1000))
 expect_error "render: markup nested 1000 deep" 1 "nested deeper than 64" -- render --size 16 --width 200 --markup --text "$deep" -o "$tmp/out.png"
 python3 -c "import sys; sys.stdout.write('a' + '\u0301' * 20000)" >"$tmp/marks.txt"
 expect_error "render: a + 20000 combining marks" 1 "grapheme cluster of 20001" -- render --size 16 --text-file "$tmp/marks.txt" -o "$tmp/out.png"
+# Text effects: white text on white shows only its outline or shadow; --outline and the markup's
+# outline= draw the same image.
+if timeout 60 "$CURVETEXT" render --size 40 --text Hi --fg white --outline 2,black -o "$tmp/outline.png" 2>"$tmp/stderr" &&
+   timeout 60 "$CURVETEXT" render --size 40 --markup --text '<span outline="2 black">Hi</span>' --fg white -o "$tmp/outline-markup.png" 2>>"$tmp/stderr" &&
+   timeout 60 "$CURVETEXT" render --size 40 --text Hi --fg white --shadow 3,3,4,black -o "$tmp/shadow.png" 2>>"$tmp/stderr" &&
+   read -r _ _ same ink_outline ink_markup <<<"$(python3 "$(dirname "$0")/png_diff.py" "$tmp/outline.png" "$tmp/outline-markup.png")" &&
+   read -r _ _ _ ink_shadow _ <<<"$(python3 "$(dirname "$0")/png_diff.py" "$tmp/shadow.png" "$tmp/shadow.png")" &&
+   [ "$same" -eq 0 ] && [ "$ink_outline" -gt $((150 * 255)) ] && [ "$ink_shadow" -gt $((150 * 255)) ]; then
+  ok "render: --outline, markup outline= and --shadow drawn (ink $ink_outline, $ink_shadow)"
+else bad "render: text effects: $(cat "$tmp/stderr") ${same:-?} ${ink_outline:-?} ${ink_shadow:-?}"; fi
+expect_error "render: --outline without a colour" 1 "expected W,COLOR" -- render --text x --outline 3 -o "$tmp/out.png"
+expect_error "render: negative --outline" 1 "outline width must not be negative" -- render --text x --outline -3,red -o "$tmp/out.png"
+expect_error "render: NaN shadow blur" 1 "blur radius must be a finite number" -- render --text x --shadow 1,1,nan,red -o "$tmp/out.png"
+expect_error "render: --outline wider than an em" 1 "outline width must be a number from 0 to 16 px" -- render --size 16 --text x --outline 300,red -o "$tmp/out.png"
+expect_error "render: --shadow blur past the limit" 1 "blur radius must be a number from 0 to 128 px" -- render --text x --shadow 0,0,1e6,red -o "$tmp/out.png"
+expect_error "render: --outline with SVG output" 1 "apply to PNG output only" -- render --text x --outline 3,red -o "$tmp/out.svg"
+expect_error "render: markup outline without a colour" 1 "outline: expected 'W COLOR'" -- render --markup --text '<span outline="3">x</span>' -o "$tmp/out.png"
 printf '<svg width="100" height="100"><path d="M10 10 L90 90 L10 90 Z" fill="none" stroke="black"/></svg>' >"$tmp/stroke.svg"
 # An SVG stroke is drawn: a triangle's outline 1 unit wide has about 273 px of ink at 1 px per unit.
 if timeout 60 "$CURVETEXT" shape --input "$tmp/stroke.svg" -o "$tmp/stroke.png" 2>"$tmp/stderr" &&

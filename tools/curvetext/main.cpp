@@ -28,6 +28,8 @@ constexpr const char* kUsage =
     "  --margin PX              around the text                     (default: 16)\n"
     "  --fg COLOR               text colour                         (default: black)\n"
     "  --bg COLOR               background                          (default: white)\n"
+    "  --outline W,COLOR        text outline W px outside the glyphs (PNG only)\n"
+    "  --shadow DX,DY,BLUR,COLOR  text shadow, blur sigma BLUR/2 px (PNG only; 0,0: a glow)\n"
     "  --width PX               wrap width, 0 no wrapping           (default: 0)\n"
     "  --align A                left|right|center|justify|start|end (default: start)\n"
     "  --line-height X|Npx      multiple of the line, or px         (default: 1)\n"

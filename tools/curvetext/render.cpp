@@ -6,6 +6,7 @@
 #include "curvetext/error.hpp"
 #include "curvetext/image.hpp"
 #include "curvetext/paragraph_image.hpp"
+#include "curvetext/text_effect_style.hpp"
 #include "gl_session.hpp"
 #include "jobs.hpp"
 #include "layout_options.hpp"
@@ -56,6 +57,10 @@ void render(const std::vector<std::string>& arguments) {
       options.margin_px = parse_number(a, args.value());
     else if (a == "--fg")  // colours text outside markup colour spans
       paragraph.style.default_style.color = parse_color(args.value());
+    else if (a == "--outline")  // W,COLOR: text outside markup outline spans
+      parse_outline(args.value(), ',', paragraph.style.default_style.effects);
+    else if (a == "--shadow")  // DX,DY,BLUR,COLOR
+      paragraph.style.default_style.effects.shadow = parse_shadow(args.value(), ',');
     else if (a == "--jobs")
       throw UsageError{kJobsAlone};
     else
@@ -71,9 +76,14 @@ void render(const std::vector<std::string>& arguments) {
   FontCollection fonts(default_font());
   const std::vector<Feature> features = input.features ? parse_features(*input.features) : std::vector<Feature>{};
   const Paragraph p = layout_from_cli(fonts, paragraph, font_choice, input.size_px, features, text);
-  if (kind == OutputFormat::Svg)
+  if (kind == OutputFormat::Svg) {
+    for (const TextStyle& st : p.styles())
+      if (st.effects.any())
+        throw Error(ErrorCode::InvalidArgument,
+                    "SVG output is the outlines themselves: text outlines and shadows (--outline, --shadow, markup "
+                    "outline= and shadow=) apply to PNG output only");
     write_output(paragraph_svg(p, options.margin_px, options.background), *output);
-  else
+  } else
     write_png_image(p, style, options, *output);
 }
 

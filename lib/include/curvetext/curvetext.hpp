@@ -44,6 +44,8 @@
 #include "curvetext/stroke.hpp"
 #include "curvetext/stroke_style.hpp"
 #include "curvetext/text_block.hpp"
+#include "curvetext/text_effect_style.hpp"
+#include "curvetext/text_effects.hpp"
 #include "curvetext/text_image.hpp"
 #include "curvetext/tolerances.hpp"
 #include "curvetext/transform.hpp"

@@ -27,6 +27,7 @@
 
 #include "curvetext/bidi.hpp"
 #include "curvetext/color.hpp"
+#include "curvetext/text_effect_style.hpp"
 #include "curvetext/export.hpp"
 #include "curvetext/font.hpp"
 #include "curvetext/font_collection.hpp"
@@ -49,6 +50,9 @@ struct TextStyle {
   bool underline = false;
   bool strikethrough = false;
   Color background{0, 0, 0, 0};  // drawn behind the style's runs, line high; transparent: none
+  // Outline, centred stroke and shadow of the style's glyphs (drawn by
+  // TextBlock; text_effect_style.hpp). Widths in px at size_px.
+  TextEffects effects;
 };
 
 // A style for the UTF-8 byte range [start, end). Later spans win where spans

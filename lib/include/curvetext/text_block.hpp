@@ -3,6 +3,9 @@
 // colour (consecutive runs), each group one DrawBatch over the glyph meshes of
 // a GlyphCache, with the group's underlines and strikethroughs as one mesh;
 // run backgrounds (TextStyle::background) one mesh per colour, drawn first.
+// Text effects (TextStyle::effects, text_effect_style.hpp): every group's
+// shadow is drawn first, then every outline, the fills, and every centred
+// stroke (a bitmap colour font's glyphs have none).
 // Colour glyphs (color_glyph.hpp): a COLR glyph's layers are drawn as groups
 // of their own, one per layer index and colour, in the layers' order; a
 // bitmap colour font's glyphs (CBDT/sbix emoji) as textured quads from the
@@ -16,13 +19,15 @@
 #include "curvetext/export.hpp"
 #include "curvetext/layout.hpp"
 #include "curvetext/renderer.hpp"
+#include "curvetext/text_effects.hpp"
 #include "curvetext/transform.hpp"
 
 namespace curvetext {
 
 // Where a text block's colours come from when it is drawn.
 enum class BlockColors {
-  Styles,       // each run in its style's colour, backgrounds drawn; DrawOptions::color is not used
+  Styles,       // each run in its style's colour, backgrounds and text effects drawn; DrawOptions::color
+                // is not used
   FromOptions,  // glyphs (each COLR layer too) and decorations in DrawOptions::color, backgrounds
                 // not drawn: a shadow, a selection's text, a disabled label
 };
@@ -70,6 +75,7 @@ class CURVETEXT_API TextBlock {
   TextBlock();
   void draw_group(Renderer& renderer, const Group& g, const Placement& at, const DrawOptions& options,
                   const Color& color) const;
+  void draw_effects(Renderer& renderer, const Placement& at, const DrawOptions& options, EffectLayer layer) const;
   std::vector<Group> backgrounds_;  // drawn first, under every group
   std::vector<Group> groups_;
   double on_screen_scale_ = 1.0;

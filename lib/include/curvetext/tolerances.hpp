@@ -50,6 +50,18 @@ inline constexpr std::size_t kMaxStrokeSegments = std::size_t{1} << 21;
 // Error(InvalidArgument) instead of subdividing to its budget.
 inline constexpr double kMinStrokeToleranceRelative = 1e-12;
 
+// --- Text effects (text_effects.hpp) -----------------------------------------
+// Widest text outline or centred stroke, in ems of the text's size: wider
+// ones are refused (Error(InvalidArgument)); the glyph becomes a blob.
+inline constexpr double kMaxTextEffectWidthEm = 1.0;
+// Effect meshes are cached per width bucket: the width in ems rounded to a
+// multiple of 1 / kTextEffectWidthStepsPerEm (0.0015 px at 100 px/em).
+inline constexpr double kTextEffectWidthStepsPerEm = 65536.0;
+// Largest shadow blur radius (px; sigma = blur / 2, the kernel reaching
+// 3 sigma each side) and offset (px, each axis); larger ones are refused.
+inline constexpr double kMaxShadowBlurPx = 128.0;
+inline constexpr double kMaxShadowOffsetPx = 4096.0;
+
 // --- Mesh input (build_mesh, mesh.hpp) ----------------------------------------
 // Coordinates build_mesh accepts and how it reads them (outline units). Every
 // product the exact predicates form must be a finite, normal double: incircle's
