@@ -140,7 +140,8 @@ ShapeDocument stroke_document(const Case& c) {
   Shape s;
   s.contours = c.path;
   s.filled = false;
-  s.stroke = ShapeStroke{c.style, Color{0, 0, 0, 1}};
+  s.stroke = ShapeStroke{};
+  s.stroke->style = c.style;
   doc.shapes.push_back(s);
   doc.view = Box{{0, 0}, {double(c.width), double(c.height)}};
   return doc;

@@ -336,7 +336,6 @@ TEST(SvgRefusals, WhatIsNotDrawnIsNamedWithItsPosition) {
   expect_refused("<svg><path filter='url(#f)'" + sq + "/></svg>", "filter 'url(#f)' is not supported");
   expect_refused("<svg><g mask='url(#m)'><path" + sq + "/></g></svg>", "mask");
   expect_refused("<svg><path style='clip-path:url(#c)'" + sq + "/></svg>", "clip-path");
-  expect_refused("<svg><path stroke='red' transform='scale(2 1)'" + sq + "/></svg>", "scales unevenly or skews");
   expect_refused("<svg><path stroke='red' opacity='.5'" + sq + "/></svg>", "opacity 0.5 on <path> of 2 shapes");
   expect_refused("<svg><path marker-end='url(#m)'" + sq + "/></svg>", "markers are not supported");
   expect_refused("<svg><pattern id='p'/><path fill='url(#p)'" + sq + "/></svg>", "fill refers to <pattern>");
@@ -402,6 +401,56 @@ TEST(SvgRender, ShapesTransformsAndUseMatchExactCoverage) {
     const double edge_limit = aa == AntiAliasing::Msaa ? 0.08 : 0.01;
     std::printf("%s: edge %.4f max %.3f ink %.4f\n", name.c_str(), st.edge_mean_abs, st.max_abs, st.ink_ratio);
     test::expect_coverage(name, got, ref, st, edge_limit, aa == AntiAliasing::Msaa ? 0.02 : 0.005);
+  }
+}
+
+// Strokes under a transform that skews and scales unevenly are SVG's: the
+// stroke region of user space mapped through the transform (its width varies
+// with direction). A stroked circle and a square-capped line, in every AA
+// mode, against point sampling of that region (pixels mapped back into user
+// space); and a non-scaling stroke under the same transform, whose width is
+// in device pixels whatever the direction.
+TEST(SvgRender, StrokesUnderASkewAreMappedFromUserSpace) {
+  const double a = 1.2, b = 0.25, c = 0.45, d = 0.75, e = 2, f = 4;  // the group's matrix
+  const ShapeDocument doc = parse_svg(
+      "<svg width='96' height='96' viewBox='0 0 96 96'><g transform='matrix(1.2 0.25 0.45 0.75 2 4)' "
+      "fill='none' stroke='#000'>"
+      "<circle cx='28' cy='36' r='16' stroke-width='7'/>"
+      "<path d='M6 66 L36 88' stroke-width='5' stroke-linecap='square'/>"
+      "<path d='M10 6 L60 16' stroke-width='3' vector-effect='non-scaling-stroke'/></g></svg>");
+  ASSERT_EQ(doc.shapes.size(), 3u);
+  EXPECT_FALSE(doc.shapes[0].stroke->user_to_document.is_identity());
+  // A band of half-width h about the segment p q (square caps reach h past its ends when `square`).
+  auto near_segment = [](Vec2 u, Vec2 p, Vec2 q, double h, bool square) {
+    const double len = distance(p, q);
+    const Vec2 t = (q - p) * (1.0 / len);
+    const Vec2 r = u - p;
+    const double along = r.x * t.x + r.y * t.y, across = std::abs(t.x * r.y - t.y * r.x);
+    const double ext = square ? h : 0.0;
+    return along >= -ext && along <= len + ext && across <= h;
+  };
+  auto inside = [&](double px, double py) {
+    const double k = 1.0 / (a * d - b * c), x = px - e, y = py - f;
+    const Vec2 u{(d * x - c * y) * k, (-b * x + a * y) * k};  // user space
+    const bool ring = std::abs(distance(u, Vec2{28, 36}) - 16) <= 3.5;
+    const bool line = near_segment(u, {6, 66}, {36, 88}, 2.5, true);
+    auto device = [&](Vec2 v) { return Vec2{a * v.x + c * v.y + e, b * v.x + d * v.y + f}; };
+    const bool thin = near_segment({px, py}, device({10, 6}), device({60, 16}), 1.5, false);
+    return ring || line || thin;
+  };
+  ShapeImageOptions options;
+  const ShapeImageLayout layout = layout_shape_image(doc, options);
+  ASSERT_EQ(layout.width, 96);
+  const test::Coverage ref = test::sampled_reference(inside, layout.width, layout.height, 32);
+  for (AntiAliasing aa : {AntiAliasing::Full, AntiAliasing::Vbaa, AntiAliasing::Msaa}) {
+    options.antialiasing = aa;
+    const test::Coverage got =
+        test::coverage_from_black_on_white(render_shape_image(test::gpu().renderer, doc, layout, options));
+    const test::CoverageStats st = test::compare(got, ref);
+    const std::string name = "svg-skewed-strokes-aa" + std::to_string(static_cast<int>(aa));
+    std::printf("%s: edge %.4f max %.3f ink %.4f\n", name.c_str(), st.edge_mean_abs, st.max_abs, st.ink_ratio);
+    test::expect_coverage(name, got, ref, st, aa == AntiAliasing::Msaa ? 0.08 : 0.01,
+                          aa == AntiAliasing::Msaa ? 0.02 : 0.005);
   }
 }
 

@@ -34,7 +34,8 @@ double stroke_reach(const Shape& s) {
   double k = st.cap == LineCap::Square ? std::sqrt(2.0) : 1.0;
   if (st.join == LineJoin::Miter || st.join == LineJoin::MiterClip || st.join == LineJoin::Arcs)
     k = std::max(k, std::max(1.0, st.miter_limit));
-  const double reach = 0.5 * st.width * k;
+  // A stroke built in a user space reaches as far as the map stretches it.
+  const double reach = 0.5 * st.width * k * s.stroke->user_to_document.largest_stretch({0.0, 0.0});
   return std::isfinite(reach) ? reach : 0.0;
 }
 
@@ -185,7 +186,8 @@ void shape_layers(const Shape& shape, std::size_t index, double tolerance, doubl
     if (!shape.stroke) return;
     // docs/design.md section 8: offsets within tolerance::kStrokeOffsetPx at the drawn scale.
     const double stroke_tolerance = tolerance::kStrokeOffsetPx / px_per_unit;
-    const Outline o = stroke_outline(shape.contours, shape.stroke->style, stroke_tolerance, px_per_unit);
+    const Outline o = stroke_outline_mapped(shape.contours, shape.stroke->style, shape.stroke->user_to_document,
+                                            stroke_tolerance, px_per_unit);
     if (o.empty()) return;
     const Gradient* gradient = shape.stroke_gradient ? &*shape.stroke_gradient : nullptr;
     try {
@@ -201,7 +203,8 @@ void shape_layers(const Shape& shape, std::size_t index, double tolerance, doubl
         throw;
       Mesh all;
       for (const ShapeContour& c : shape.contours) {
-        const Outline one = stroke_outline({c}, shape.stroke->style, stroke_tolerance, px_per_unit);
+        const Outline one = stroke_outline_mapped({c}, shape.stroke->style, shape.stroke->user_to_document,
+                                                  stroke_tolerance, px_per_unit);
         if (!one.empty()) append_mesh(all, build_mesh(one, mo));
       }
       out.push_back({relative_to(std::move(all), centre, scale), shape.stroke->color, index});

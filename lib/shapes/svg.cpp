@@ -427,7 +427,7 @@ std::optional<Shape> Reader::stroke_shape(const XmlElement& e, const Computed& s
                                           const Viewport& vp, const std::vector<ShapeContour>& contours) {
   const PaintRef stroke = paint(e, style, kStroke);
   if (stroke.none()) return std::nullopt;
-  const std::optional<StrokeStyle> st = stroke_style(e, style, m, vp);
+  std::optional<ShapeStroke> st = stroke_style(e, style, m, vp);
   if (!st) return std::nullopt;
   // The paint is set as a fill's, then moved to the stroke.
   Shape paint_of;
@@ -436,7 +436,8 @@ std::optional<Shape> Reader::stroke_shape(const XmlElement& e, const Computed& s
   if (!set_paint(paint_of, stroke, e, contours, m, vp, alpha)) return std::nullopt;
   Shape s;
   s.filled = false;
-  s.stroke = ShapeStroke{*st, paint_of.color};
+  st->color = paint_of.color;
+  s.stroke = std::move(*st);
   s.stroke_gradient = std::move(paint_of.gradient);
   s.contours = placed(e, contours, m, false);
   if (s.contours.empty()) return std::nullopt;

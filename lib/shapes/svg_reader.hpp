@@ -54,12 +54,12 @@ std::optional<Gradient> make_gradient(const GradientSource& source, std::size_t 
 
 // The element's stroke geometry from its computed style (stroke-width,
 // -linejoin, -linecap, -miterlimit, -dasharray, -dashoffset, pathLength,
-// vector-effect), in document units: user-space lengths times the uniform
-// scale of `m`. nullopt when the width is 0 or less (no stroke). Throws
-// Error(InvalidArgument) with the element's position for a malformed value
-// or a user-space stroke under a transform that is not a similarity (a
-// stroke's width would vary with direction there).
-std::optional<StrokeStyle> stroke_style(const XmlElement& e, const Computed& style, const Affine& m,
+// vector-effect), its colour left to the caller: in document units
+// (user-space lengths times the uniform scale of `m`) where `m` is a
+// similarity; otherwise in user space with user_to_document set to `m`.
+// nullopt when the width is 0 or less (no stroke). Throws
+// Error(InvalidArgument) with the element's position for a malformed value.
+std::optional<ShapeStroke> stroke_style(const XmlElement& e, const Computed& style, const Affine& m,
                                         const Viewport& vp);
 
 // The tight bounding box of the contours (extremes of each piece found by

@@ -24,6 +24,7 @@
 #include "curvetext/outline.hpp"
 #include "curvetext/paint.hpp"
 #include "curvetext/stroke_style.hpp"
+#include "curvetext/transform.hpp"
 
 namespace curvetext {
 
@@ -61,6 +62,12 @@ struct ShapeContour {
 struct ShapeStroke {
   StrokeStyle style;
   Color color{0, 0, 0, 1};
+  // Where the style's lengths are in a user space other than document units
+  // (an SVG element's transform that scales unevenly or skews): the affine
+  // map from it to document units. The stroke is then built in user space
+  // and mapped (stroke_outline_mapped in stroke.hpp). Identity: document
+  // units.
+  Transform user_to_document;
 };
 
 // SVG paint-order for what shapes have: fill then stroke (the default), or
