@@ -3,6 +3,7 @@
 // by name; and shapes drawn against exact coverage.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -336,7 +337,6 @@ TEST(SvgRefusals, WhatIsNotDrawnIsNamedWithItsPosition) {
   expect_refused("<svg><path filter='url(#f)'" + sq + "/></svg>", "filter 'url(#f)' is not supported");
   expect_refused("<svg><g mask='url(#m)'><path" + sq + "/></g></svg>", "mask");
   expect_refused("<svg><path style='clip-path:url(#c)'" + sq + "/></svg>", "clip-path");
-  expect_refused("<svg><path stroke='red' opacity='.5'" + sq + "/></svg>", "opacity 0.5 on <path> of 2 shapes");
   expect_refused("<svg><path marker-end='url(#m)'" + sq + "/></svg>", "markers are not supported");
   expect_refused("<svg><pattern id='p'/><path fill='url(#p)'" + sq + "/></svg>", "fill refers to <pattern>");
   expect_refused("<svg><path fill='bluish'" + sq + "/></svg>", "fill 'bluish' is not a colour");
@@ -525,6 +525,57 @@ TEST(SvgRender, GradientsArePaintedPerPixel) {
   for (int i = 0; i < 20; ++i)
     many += "<stop offset='" + std::to_string(i / 20.0) + "' stop-color='#" + (i % 2 ? "f00" : "00f") + "'/>";
   expect_refused(many + "</linearGradient><rect width='9' height='9' fill='url(#m)'/></svg>", "20 stops");
+}
+
+// Opacity on a group of overlapping shapes, and on a shape with both fill
+// and stroke, composites them as one layer (SVG): where they overlap the top
+// one shows alone at that opacity, not blended twice. Pixel-aligned shapes,
+// so every pixel has one exact colour over white, in every AA mode; nested
+// groups multiply.
+TEST(SvgRender, GroupOpacityCompositesOneLayer) {
+  const ShapeDocument doc = parse_svg(
+      "<svg width='48' height='40' viewBox='0 0 48 40'>"
+      "<g opacity='0.5'><rect x='4' y='4' width='20' height='14' fill='#f00'/>"
+      "<rect x='14' y='10' width='20' height='14' fill='#00f'/></g>"
+      "<rect x='8' y='28' width='12' height='8' fill='#0f0' stroke='#000' stroke-width='2' opacity='0.5'/>"
+      "<g opacity='0.5'><g opacity='0.5'><rect x='36' y='4' width='8' height='8' fill='#000'/>"
+      "<rect x='36' y='8' width='8' height='8' fill='#000'/></g><rect x='36' y='30' width='4' height='4'/></g>"
+      "</svg>");
+  EXPECT_EQ(doc.shapes.size(), 7u);
+  ASSERT_EQ(doc.groups.size(), 4u);  // the two rectangles, fill and stroke, the outer and the inner group
+  EXPECT_EQ(doc.groups[0].end, 2u);
+  EXPECT_EQ(doc.groups[1].end, 4u);
+  EXPECT_EQ(doc.groups[2].end, 7u);
+  EXPECT_EQ(doc.groups[3].begin, 4u);  // the inner group, after the outer one that holds it
+  EXPECT_EQ(doc.groups[3].end, 6u);
+  auto want = [](int x, int y) -> std::array<double, 3> {
+    auto in = [&](int x0, int y0, int w, int h) { return x >= x0 && x < x0 + w && y >= y0 && y < y0 + h; };
+    if (in(14, 10, 20, 14)) return {0.5, 0.5, 1.0};  // blue on top of red: blue alone at 0.5
+    if (in(4, 4, 20, 14)) return {1.0, 0.5, 0.5};
+    if (in(7, 27, 14, 10) && !in(9, 29, 10, 6)) return {0.5, 0.5, 0.5};  // the stroke hides the fill under it
+    if (in(9, 29, 10, 6)) return {0.5, 1.0, 0.5};
+    if (in(36, 4, 8, 12)) return {0.75, 0.75, 0.75};  // 0.5 * 0.5, once
+    if (in(36, 30, 4, 4)) return {0.5, 0.5, 0.5};
+    return {1.0, 1.0, 1.0};
+  };
+  ShapeImageOptions options;
+  const ShapeImageLayout layout = layout_shape_image(doc, options);
+  ASSERT_EQ(layout.width, 48);
+  for (AntiAliasing aa : {AntiAliasing::Full, AntiAliasing::Vbaa, AntiAliasing::Msaa, AntiAliasing::Auto}) {
+    options.antialiasing = aa;
+    const Image image = render_shape_image(test::gpu().renderer, doc, layout, options);
+    double worst = 0.0;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) {
+        const std::array<double, 3> w = want(x, y);
+        for (int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(image.pixel(x, y)[k] / 255.0 - w[k]));
+      }
+    std::printf("group opacity aa %d: largest difference %.4f\n", static_cast<int>(aa), worst);
+    if (worst > 2.5 / 255)
+      write_png(image, std::string(CURVETEXT_TEST_OUTPUT_DIR) + "/svg-group-opacity-" +
+                           std::to_string(static_cast<int>(aa)) + ".png");
+    EXPECT_LE(worst, 2.5 / 255);  // 8-bit rounding of the layer and of the target
+  }
 }
 
 // The drawing object draws into the framebuffer bound, at any placement:

@@ -15,6 +15,7 @@
 #include "curvetext/tolerances.hpp"
 #include "compose/check_style.hpp"
 #include "core/format.hpp"
+#include "gpu/layers.hpp"
 
 namespace curvetext {
 
@@ -223,14 +224,49 @@ void shape_layers(const Shape& shape, std::size_t index, double tolerance, doubl
 
 // --- ShapeDrawing ---------------------------------------------------------------
 
+namespace {
+
+// Throws Error(InvalidArgument) for groups outside the document, out of
+// order, overlapping without nesting, or with an opacity outside [0, 1].
+void check_groups(const ShapeDocument& doc) {
+  std::vector<std::size_t> ends;  // of the groups holding the current one
+  std::size_t last_begin = 0;
+  for (const ShapeGroup& g : doc.groups) {
+    if (g.begin > g.end || g.end > doc.shapes.size() || g.begin < last_begin || !(g.opacity >= 0.0f) ||
+        !(g.opacity <= 1.0f))
+      throw Error(ErrorCode::InvalidArgument,
+                  "a shape group must hold shapes [begin, end) of the document in order, with an opacity in [0, 1]");
+    while (!ends.empty() && ends.back() <= g.begin) ends.pop_back();
+    if (!ends.empty() && g.end > ends.back())
+      throw Error(ErrorCode::InvalidArgument,
+                  "shape groups must nest (two groups overlap without one holding the other)");
+    ends.push_back(g.end);
+    last_begin = g.begin;
+  }
+}
+
+}  // namespace
+
 struct ShapeDrawing::Layer {
   DrawBatch batch;
   Color color;
   double side = 0.0;                 // the shape's larger side, document units (for `auto`)
   std::optional<Gradient> gradient;  // from the mesh's units (relative to the centre)
+  std::size_t shape = 0;             // its index in the document (for groups)
 };
 
-ShapeDrawing::ShapeDrawing() : layers_(std::make_unique<std::vector<Layer>>()) {}
+struct ShapeDrawing::Groups {
+  struct Group {
+    std::size_t begin = 0, end = 0;
+    float opacity = 1.0f;
+    bool clipped = false;     // multiplied by a clip's coverage (clip may be empty: nothing shows)
+    std::vector<Layer> clip;  // fills drawn white into the clip's coverage mask
+  };
+  std::vector<Group> list;
+  gpu::LayerPrograms programs;
+};
+
+ShapeDrawing::ShapeDrawing() : layers_(std::make_unique<std::vector<Layer>>()), groups_(std::make_unique<Groups>()) {}
 ShapeDrawing::ShapeDrawing(ShapeDrawing&&) noexcept = default;
 ShapeDrawing& ShapeDrawing::operator=(ShapeDrawing&&) noexcept = default;
 ShapeDrawing::~ShapeDrawing() = default;
@@ -247,6 +283,7 @@ ShapeDrawing ShapeDrawing::from_document(const ShapeDocument& doc, double px_per
   if (!view.empty()) d.centre_ = 0.5 * (view.min + view.max);
   // docs/design.md section 3: 1/16 px at the scale drawn, in document units.
   const double tolerance = tolerance::kCubicApproximationPx / px_per_unit;
+  check_groups(doc);
   // Meshes first: geometry errors surface before anything is uploaded.
   std::vector<::curvetext::Layer> layers;
   for (std::size_t i = 0; i < doc.shapes.size(); ++i)
@@ -255,7 +292,7 @@ ShapeDrawing ShapeDrawing::from_document(const ShapeDocument& doc, double px_per
     if (l.mesh.empty()) continue;
     const Box b = shape_box(doc.shapes[l.shape]);
     Layer out{DrawBatch::from_mesh(l.mesh), l.color, b.empty() ? 0.0 : std::max(b.max.x - b.min.x, b.max.y - b.min.y),
-              std::nullopt};
+              std::nullopt, l.shape};
     if (l.gradient) {
       // The mesh is relative to the centre: the gradient's map from
       // document coordinates moved with it.
@@ -264,6 +301,24 @@ ShapeDrawing ShapeDrawing::from_document(const ShapeDocument& doc, double px_per
     }
     d.layers_->push_back(std::move(out));
   }
+  for (const ShapeGroup& g : doc.groups) {
+    Groups::Group out{g.begin, g.end, g.opacity, !g.clip.empty(), {}};
+    for (const Shape& c : g.clip) {
+      // The clip's geometry only: its fill, in white, is the coverage.
+      Shape fill = c;
+      fill.filled = true;
+      fill.stroke.reset();
+      fill.gradient.reset();
+      std::vector<::curvetext::Layer> parts;
+      shape_layers(fill, 0, tolerance, px_per_unit, d.centre_, px_per_unit, parts);
+      const Box b = shape_box(fill);
+      for (const ::curvetext::Layer& p : parts)
+        if (!p.mesh.empty())
+          out.clip.push_back(Layer{DrawBatch::from_mesh(p.mesh), Color{1, 1, 1, 1},
+                                   b.empty() ? 0.0 : std::max(b.max.x - b.min.x, b.max.y - b.min.y), std::nullopt, 0});
+    }
+    d.groups_->list.push_back(std::move(out));
+  }
   return d;
 }
 
@@ -271,13 +326,45 @@ void ShapeDrawing::draw(Renderer& renderer, const Placement& at, const DrawOptio
   Placement moved = at;
   moved.origin_x += at.scale * centre_.x;
   moved.origin_y -= at.scale * centre_.y;
-  for (const Layer& l : *layers_) {
+  auto draw_one = [&](const Layer& l) {
     DrawOptions d = options;
     d.color = l.color;
     d.antialiasing = resolve_antialiasing(options.antialiasing, l.side * px_per_unit_);
     d.gradient = l.gradient ? &*l.gradient : nullptr;
     renderer.draw(l.batch, moved, d);
+  };
+  const std::vector<Groups::Group>& groups = groups_->list;
+  if (groups.empty()) {
+    for (const Layer& l : *layers_) draw_one(l);
+    return;
   }
+  // Groups open (outer first) as their first mesh comes and close when a
+  // mesh past their end does; groups without meshes are never opened.
+  gpu::LayerStack stack(groups_->programs);
+  std::vector<const Groups::Group*> open;
+  auto close_before = [&](std::size_t shape) {
+    while (!open.empty() && open.back()->end <= shape) {
+      const Groups::Group& g = *open.back();
+      if (g.clipped) {
+        stack.push();
+        for (const Layer& c : g.clip) draw_one(c);
+        stack.apply_mask();
+      }
+      stack.pop(g.opacity);
+      open.pop_back();
+    }
+  };
+  std::size_t next = 0;
+  for (const Layer& l : *layers_) {
+    close_before(l.shape);
+    for (; next < groups.size() && groups[next].begin <= l.shape; ++next)
+      if (groups[next].end > l.shape) {
+        stack.push();
+        open.push_back(&groups[next]);
+      }
+    draw_one(l);
+  }
+  close_before(static_cast<std::size_t>(-1));
 }
 
 Image render_shape_image(Renderer& renderer, const ShapeDocument& doc, const ShapeImageLayout& layout,

@@ -13,4 +13,6 @@ extern const char* const bitmap_vert_glsl;
 extern const char* const bitmap_frag_glsl;
 extern const char* const bands_vert_glsl;
 extern const char* const bands_frag_glsl;
+extern const char* const layer_vert_glsl;
+extern const char* const layer_frag_glsl;
 }  // namespace curvetext::shader_source

@@ -139,7 +139,8 @@ class Reader {
   void check_inside(const XmlElement& e, std::size_t first_shape, const Affine& ctm, double x, double y, double w,
                     double h) const;
   Color color_value(const XmlElement& e, const std::string& value) const;
-  void fade(const XmlElement& e, std::size_t first_shape, double opacity);
+  void fade(std::size_t first_shape, double opacity);
+  ShapeGroup& group(std::size_t first_shape);
 
   // Draws through `draw`, then applies the element's opacity to what it drew.
   template <class Draw>
@@ -147,7 +148,7 @@ class Reader {
     const double opacity = unit_value(e, "opacity", style[kOpacity]);
     const std::size_t first = out_.shapes.size();
     draw();
-    fade(e, first, opacity);
+    fade(first, opacity);
   }
 };
 
@@ -198,6 +199,11 @@ ShapeDocument Reader::run() {
   if (style[kDisplay] == "none") return std::move(out_);
   check_unsupported(root, style);
   with_opacity(root, style, [&] { children(0, style, mirror * user, vp); });
+  // Groups were made innermost first; drawn outer first (ShapeDocument::groups).
+  std::reverse(out_.groups.begin(), out_.groups.end());
+  std::stable_sort(out_.groups.begin(), out_.groups.end(), [](const ShapeGroup& a, const ShapeGroup& b) {
+    return a.begin != b.begin ? a.begin < b.begin : a.end > b.end;
+  });
   return std::move(out_);
 }
 
@@ -231,15 +237,24 @@ void Reader::children(std::size_t i, const Computed& style, const Affine& ctm, c
 }
 
 // Opacity on what one element drew: exact for one shape (its alpha); a
-// group of several is one layer composited at that opacity, which shapes
-// drawn one by one cannot show where they overlap: refused.
-void Reader::fade(const XmlElement& e, std::size_t first_shape, double opacity) {
+// group of several (or a shape's fill and stroke) is one layer composited
+// at that opacity (ShapeGroup), so that they do not show through each other.
+void Reader::fade(std::size_t first_shape, double opacity) {
   const std::size_t n = out_.shapes.size() - first_shape;
   if (opacity == 1.0 || n == 0) return;
-  if (n > 1)
-    fail(e, "opacity " + shapes_detail::number_text(opacity) + " on <" + e.name + "> of " + std::to_string(n) +
-                " shapes is not supported (a group's opacity needs a layer); set it on each shape");
-  scale_alpha(out_.shapes.back(), static_cast<float>(opacity));
+  if (n == 1) return scale_alpha(out_.shapes.back(), static_cast<float>(opacity));
+  group(first_shape).opacity *= static_cast<float>(opacity);
+}
+
+// The group of shapes [first_shape, end): the one made last when it has
+// that range (an element inside another with nothing else, both layered:
+// their opacities multiply), else a new one.
+ShapeGroup& Reader::group(std::size_t first_shape) {
+  const std::size_t end = out_.shapes.size();
+  for (ShapeGroup& g : out_.groups)
+    if (g.begin == first_shape && g.end == end && g.clip.empty()) return g;
+  out_.groups.push_back(ShapeGroup{first_shape, end, 1.0f, {}});
+  return out_.groups.back();
 }
 
 void Reader::check_unsupported(const XmlElement& e, const Computed& style) const {
@@ -462,7 +477,7 @@ std::optional<Shape> Reader::fill_shape(const XmlElement& e, const Computed& sty
 }
 
 // Fill and stroke as two shapes in paint order. With opacity below 1 the
-// element is one layer of both, which is refused where both draw (fade).
+// element is one layer of both where both draw (fade).
 void Reader::shape(std::size_t i, const Computed& style, const Affine& m, const Viewport& vp) {
   const XmlElement& e = doc_.elements[i];
   if (style[kVisibility] != "visible") return;
@@ -481,7 +496,7 @@ void Reader::shape(std::size_t i, const Computed& style, const Affine& m, const 
   if (stroke && stroke_first) out_.shapes.push_back(std::move(*stroke));
   if (fill) out_.shapes.push_back(std::move(*fill));
   if (stroke && !stroke_first) out_.shapes.push_back(std::move(*stroke));
-  fade(e, first, opacity);
+  fade(first, opacity);
 }
 
 }  // namespace

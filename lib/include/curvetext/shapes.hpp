@@ -13,6 +13,7 @@
 // type or a pure function (thread-safe, export.hpp).
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -88,9 +89,23 @@ struct Shape {
   std::optional<Gradient> stroke_gradient;
 };
 
+// Shapes drawn as one layer, then composited (SVG's group opacity and
+// clip-path): shapes [begin, end) of the document are drawn into an
+// offscreen layer, which is multiplied by the coverage of `clip` (when it
+// has shapes: the union of their fills, colours unused) and composited
+// source-over at `opacity`. Groups nest: two groups' ranges are disjoint or
+// one holds the other.
+struct ShapeGroup {
+  std::size_t begin = 0, end = 0;
+  float opacity = 1.0f;
+  std::vector<Shape> clip;
+};
+
 // Coordinates are y-up (SVG's y-down input is mirrored when read).
 struct ShapeDocument {
   std::vector<Shape> shapes;
+  // Sorted by begin, a group before the groups it holds.
+  std::vector<ShapeGroup> groups;
   // The region to draw, in document units, y-up. Empty: the control box of
   // every shape.
   Box view;
