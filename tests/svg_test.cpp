@@ -336,7 +336,11 @@ TEST(SvgRefusals, WhatIsNotDrawnIsNamedWithItsPosition) {
   expect_refused("<svg><path" + sq + "><animate attributeName='x'/></path></svg>", "<animate> is not supported");
   expect_refused("<svg><path filter='url(#f)'" + sq + "/></svg>", "filter 'url(#f)' is not supported");
   expect_refused("<svg><g mask='url(#m)'><path" + sq + "/></g></svg>", "mask");
-  expect_refused("<svg><path style='clip-path:url(#c)'" + sq + "/></svg>", "clip-path");
+  expect_refused("<svg><path style='clip-path:inset(1px)'" + sq + "/></svg>",
+                 "clip-path 'inset(1px)' is not supported");
+  expect_refused("<svg><rect id='c'/><path clip-path='url(#c)'" + sq + "/></svg>", "which is not a <clipPath>");
+  expect_refused("<svg><clipPath id='c'><text>a</text></clipPath><path clip-path='url(#c)'" + sq + "/></svg>",
+                 "<text> is not supported");
   expect_refused("<svg><path marker-end='url(#m)'" + sq + "/></svg>", "markers are not supported");
   expect_refused("<svg><pattern id='p'/><path fill='url(#p)'" + sq + "/></svg>", "fill refers to <pattern>");
   expect_refused("<svg><path fill='bluish'" + sq + "/></svg>", "fill 'bluish' is not a colour");
@@ -575,6 +579,54 @@ TEST(SvgRender, GroupOpacityCompositesOneLayer) {
       write_png(image, std::string(CURVETEXT_TEST_OUTPUT_DIR) + "/svg-group-opacity-" +
                            std::to_string(static_cast<int>(aa)) + ".png");
     EXPECT_LE(worst, 2.5 / 255);  // 8-bit rounding of the layer and of the target
+  }
+}
+
+// clip-path by the coverage of the clip's shapes: a circle clipped by a
+// rectangle (userSpaceOnUse), a group clipped by a circle in its bounding
+// box's units (the ellipse inscribed in it), and a rectangle clipped by an
+// even-odd ring and a <use> of a shape, moved by the clipPath's transform;
+// in every AA mode against point sampling of the intersections. A clip that
+// draws nothing hides the element.
+TEST(SvgRender, ClipPathsMultiplyByTheClipsCoverage) {
+  const ShapeDocument doc = parse_svg(
+      "<svg width='64' height='48' viewBox='0 0 64 48'>"
+      "<clipPath id='a'><rect x='10.3' y='6.6' width='30.2' height='20.5'/></clipPath>"
+      "<clipPath id='b' clipPathUnits='objectBoundingBox'><circle cx='.5' cy='.5' r='.5'/></clipPath>"
+      "<defs><rect id='r' x='30' y='36' width='6' height='6'/></defs>"
+      "<clipPath id='c' transform='translate(2 0)'><path clip-rule='evenodd' d='M4 33h20v10h-20z M8 35h12v6h-12z'/>"
+      "<use href='#r'/></clipPath>"
+      "<clipPath id='empty'/>"
+      "<circle cx='25' cy='18' r='14.5' clip-path='url(#a)'/>"
+      "<g clip-path='url(#b)'><rect x='44' y='4' width='16' height='12'/><rect x='44' y='16' width='16' "
+      "height='12'/></g>"
+      "<rect x='3' y='32.5' width='58' height='12' clip-path='url(#c)'/>"
+      "<rect x='40' y='40' width='20' height='6' clip-path='url(#empty)'/></svg>");
+  ASSERT_EQ(doc.shapes.size(), 4u);
+  ASSERT_EQ(doc.groups.size(), 3u);
+  auto inside = [](double x, double y) {
+    const bool a =
+        (x - 25) * (x - 25) + (y - 18) * (y - 18) < 14.5 * 14.5 && x > 10.3 && x < 40.5 && y > 6.6 && y < 27.1;
+    const double u = (x - 52) / 8, v = (y - 16) / 12;
+    const bool b = u * u + v * v < 1;
+    const bool ring = x > 6 && x < 26 && y > 33 && y < 43 && !(x > 10 && x < 22 && y > 35 && y < 41);
+    const bool used = x > 32 && x < 38 && y > 36 && y < 42;
+    const bool c = (ring || used) && x > 3 && x < 61 && y > 32.5 && y < 44.5;
+    return a || b || c;
+  };
+  ShapeImageOptions options;
+  const ShapeImageLayout layout = layout_shape_image(doc, options);
+  ASSERT_EQ(layout.width, 64);
+  const test::Coverage ref = test::sampled_reference(inside, layout.width, layout.height, 32);
+  for (AntiAliasing aa : {AntiAliasing::Full, AntiAliasing::Vbaa, AntiAliasing::Msaa}) {
+    options.antialiasing = aa;
+    const test::Coverage got =
+        test::coverage_from_black_on_white(render_shape_image(test::gpu().renderer, doc, layout, options));
+    const test::CoverageStats st = test::compare(got, ref);
+    const std::string name = "svg-clip-paths-aa" + std::to_string(static_cast<int>(aa));
+    std::printf("%s: edge %.4f max %.3f ink %.4f\n", name.c_str(), st.edge_mean_abs, st.max_abs, st.ink_ratio);
+    test::expect_coverage(name, got, ref, st, aa == AntiAliasing::Msaa ? 0.08 : 0.01,
+                          aa == AntiAliasing::Msaa ? 0.02 : 0.005);
   }
 }
 

@@ -141,13 +141,21 @@ class Reader {
   Color color_value(const XmlElement& e, const std::string& value) const;
   void fade(std::size_t first_shape, double opacity);
   ShapeGroup& group(std::size_t first_shape);
+  void clip(const XmlElement& e, const std::string& value, const Affine& m, const Viewport& vp,
+            std::size_t first_shape);
+  std::size_t clip_path_element(const XmlElement& e, const std::string& value) const;
+  void clip_child(std::size_t c, const Computed& parent, const Affine& m, const Viewport& vp, std::vector<Shape>& out);
+  Computed computed_at(std::size_t i) const;
+  void drop_from(std::size_t first_shape);
 
-  // Draws through `draw`, then applies the element's opacity to what it drew.
+  // Draws through `draw`, then applies the element's clip-path and opacity
+  // to what it drew; `m` is the element's user space (clip-path's).
   template <class Draw>
-  void with_opacity(const XmlElement& e, const Computed& style, Draw draw) {
+  void with_opacity(const XmlElement& e, const Computed& style, const Affine& m, const Viewport& vp, Draw draw) {
     const double opacity = unit_value(e, "opacity", style[kOpacity]);
     const std::size_t first = out_.shapes.size();
     draw();
+    if (style[kClipPath] != "none") clip(e, style[kClipPath], m, vp, first);
     fade(first, opacity);
   }
 };
@@ -198,7 +206,7 @@ ShapeDocument Reader::run() {
   const Computed style = compute(initial_style(kCallerColor), specified_[0]);
   if (style[kDisplay] == "none") return std::move(out_);
   check_unsupported(root, style);
-  with_opacity(root, style, [&] { children(0, style, mirror * user, vp); });
+  with_opacity(root, style, mirror * user, vp, [&] { children(0, style, mirror * user, vp); });
   // Groups were made innermost first; drawn outer first (ShapeDocument::groups).
   std::reverse(out_.groups.begin(), out_.groups.end());
   std::stable_sort(out_.groups.begin(), out_.groups.end(), [](const ShapeGroup& a, const ShapeGroup& b) {
@@ -229,7 +237,7 @@ void Reader::element(std::size_t i, const Computed& parent, const Affine& ctm, c
         fail(doc_.elements[c], "<" + doc_.elements[c].name + "> is not supported");
     return shape(i, style, m, vp);
   }
-  with_opacity(e, style, [&] { children(i, style, m, vp); });
+  with_opacity(e, style, m, vp, [&] { children(i, style, m, vp); });
 }
 
 void Reader::children(std::size_t i, const Computed& style, const Affine& ctm, const Viewport& vp) {
@@ -246,19 +254,128 @@ void Reader::fade(std::size_t first_shape, double opacity) {
   group(first_shape).opacity *= static_cast<float>(opacity);
 }
 
-// The group of shapes [first_shape, end): the one made last when it has
-// that range (an element inside another with nothing else, both layered:
-// their opacities multiply), else a new one.
+// The group of shapes [first_shape, end): one made already with that range
+// (an element inside another with nothing else: their opacities multiply,
+// and an opacity and a clip of one range commute), else a new one.
 ShapeGroup& Reader::group(std::size_t first_shape) {
   const std::size_t end = out_.shapes.size();
   for (ShapeGroup& g : out_.groups)
-    if (g.begin == first_shape && g.end == end && g.clip.empty()) return g;
+    if (g.begin == first_shape && g.end == end) return g;
   out_.groups.push_back(ShapeGroup{first_shape, end, 1.0f, {}});
   return out_.groups.back();
 }
 
+Computed Reader::computed_at(std::size_t i) const {
+  if (i == 0) return compute(initial_style(kCallerColor), specified_[0]);
+  return compute(computed_at(doc_.elements[i].parent), specified_[i]);
+}
+
+// What the element drew from first_shape on is not rendered (an empty clip).
+void Reader::drop_from(std::size_t first_shape) {
+  out_.shapes.erase(out_.shapes.begin() + static_cast<std::ptrdiff_t>(first_shape), out_.shapes.end());
+  std::erase_if(out_.groups, [&](const ShapeGroup& g) { return g.begin >= first_shape; });
+}
+
+// The <clipPath> `value` names; 0 where the reference names nothing (no
+// clip, as CSS Masking says). Refuses anything else by name.
+std::size_t Reader::clip_path_element(const XmlElement& e, const std::string& value) const {
+  const std::string v = trim(value);
+  if (!lower(v).starts_with("url(") || v.back() != ')') fail(e, "clip-path '" + value + "' is not supported");
+  std::string ref = trim(std::string_view(v).substr(4, v.size() - 5));
+  if (ref.size() >= 2 && (ref.front() == '"' || ref.front() == '\'')) ref = ref.substr(1, ref.size() - 2);
+  const XmlElement* target = reference(e, ref);
+  if (!target) return 0;
+  if (target->name != "clipPath") fail(e, "clip-path refers to <" + target->name + ">, which is not a <clipPath>");
+  return static_cast<std::size_t>(target - doc_.elements.data());
+}
+
+// SVG's clip-path on what an element drew (shapes [first_shape, end)): the
+// union of the <clipPath>'s shapes, each with its clip-rule, in the
+// element's user space `m` (or its bounding box's, objectBoundingBox), as a
+// ShapeGroup's clip.
+void Reader::clip(const XmlElement& e, const std::string& value, const Affine& m, const Viewport& vp,
+                  std::size_t first_shape) {
+  if (out_.shapes.size() == first_shape) return;
+  const std::size_t c = clip_path_element(e, value);
+  if (c == 0) return;
+  const XmlElement& ce = doc_.elements[c];
+  const Computed style = computed_at(c);
+  if (style[kClipPath] != "none") fail(ce, "clip-path on a <clipPath> is not supported");
+  Affine cm = m;
+  if (const std::string* t = ce.find("transform")) cm = m * parse_transform(*t, position(ce));
+  const std::string* units = ce.find("clipPathUnits");
+  const std::string u = units ? trim(*units) : "userSpaceOnUse";
+  if (u == "objectBoundingBox") {
+    // The bounding box of the element's geometry in its user space.
+    const Affine back = m.inverse();
+    std::vector<ShapeContour> user;
+    for (std::size_t i = first_shape; i < out_.shapes.size(); ++i)
+      for (ShapeContour k : out_.shapes[i].contours) {
+        for (RationalBezier& piece : k.pieces)
+          for (Vec2& q : piece.points) q = back.apply(q);
+        user.push_back(std::move(k));
+      }
+    const Box b = tight_box(user);
+    const double w = b.max.x - b.min.x, h = b.max.y - b.min.y;
+    if (b.empty() || !(w > 0.0) || !(h > 0.0)) return drop_from(first_shape);
+    cm = m * Affine{w, 0, 0, h, b.min.x, b.min.y};
+    if (const std::string* t = ce.find("transform")) cm = cm * parse_transform(*t, position(ce));
+  } else if (u != "userSpaceOnUse") {
+    fail(ce, "clipPathUnits '" + *units + "' is not userSpaceOnUse or objectBoundingBox");
+  }
+  std::vector<Shape> shapes;
+  for (std::size_t k : ce.children) clip_child(k, style, cm, vp, shapes);
+  if (shapes.empty()) return drop_from(first_shape);  // an empty clip shows nothing
+  ShapeGroup& g = group(first_shape);
+  if (!g.clip.empty()) {  // clipped twice: the inner clip's group, inside a new one
+    out_.groups.push_back(ShapeGroup{first_shape, out_.shapes.size(), 1.0f, {}});
+    out_.groups.back().clip = std::move(shapes);
+    return;
+  }
+  g.clip = std::move(shapes);
+}
+
+// One child of a <clipPath>: a shape, or a <use> of one, as a fill with its
+// clip-rule. Other elements do not clip (SVG); text is refused.
+void Reader::clip_child(std::size_t c, const Computed& parent, const Affine& m, const Viewport& vp,
+                        std::vector<Shape>& out) {
+  const XmlElement& k = doc_.elements[c];
+  if (k.name.starts_with("{")) return;
+  if (refused_element(k.name)) fail(k, "<" + k.name + "> is not supported");
+  if (k.name != "use" && !is_shape_element(k.name)) return;
+  Computed style = compute(parent, specified_[c]);
+  Affine km = m;
+  if (const std::string* t = k.find("transform")) km = m * parse_transform(*t, position(k));
+  const XmlElement* shape = &k;
+  if (k.name == "use") {
+    const std::string* href = k.find("href");
+    if (!href) href = k.find("xlink:href");
+    shape = href ? reference(k, *href) : nullptr;
+    if (!shape) return;
+    if (!is_shape_element(shape->name))
+      fail(k, "<use> in a <clipPath> must refer to a shape, not <" + shape->name + ">");
+    const std::size_t t = static_cast<std::size_t>(shape - doc_.elements.data());
+    km = km * Affine::translate(parse_length(k.find("x") ? *k.find("x") : "0", Axis::X, vp).value_or(0),
+                                parse_length(k.find("y") ? *k.find("y") : "0", Axis::Y, vp).value_or(0));
+    if (const std::string* t2 = shape->find("transform")) km = km * parse_transform(*t2, position(*shape));
+    if (style[kClipPath] != "none") fail(k, "clip-path on <clipPath> content is not supported");
+    style = compute(style, specified_[t]);
+  }
+  if (style[kDisplay] == "none" || style[kVisibility] != "visible") return;
+  if (style[kClipPath] != "none") fail(*shape, "clip-path on <clipPath> content is not supported");
+  if (!(std::abs(km.determinant()) > 0.0) || !std::isfinite(km.determinant())) return;
+  Shape s;
+  try {
+    s.fill_rule = parse_fill_rule(style[kClipRule]);
+  } catch (const Error& err) {
+    fail(*shape, err.what());
+  }
+  s.contours = placed(*shape, element_geometry(*shape, vp), km, true);
+  if (!s.contours.empty()) out.push_back(std::move(s));
+}
+
 void Reader::check_unsupported(const XmlElement& e, const Computed& style) const {
-  for (int p : {kClipPath, kMask, kFilter})
+  for (int p : {kMask, kFilter})
     if (style[p] != "none") fail(e, std::string(prop_name(p)) + " '" + style[p] + "' is not supported");
   if (style[kMixBlendMode] != "normal") fail(e, "mix-blend-mode '" + style[kMixBlendMode] + "' is not supported");
   if (style[kTransformProperty] != "none")
@@ -287,7 +404,7 @@ void Reader::use(std::size_t i, const Computed& style, const Affine& m, const Vi
   const Affine placed = m * Affine::translate(parse_length(e.find("x") ? *e.find("x") : "0", Axis::X, vp).value_or(0),
                                               parse_length(e.find("y") ? *e.find("y") : "0", Axis::Y, vp).value_or(0));
   use_stack_.push_back(t);
-  with_opacity(e, style, [&] {
+  with_opacity(e, style, m, vp, [&] {
     if (target->name == "symbol" || target->name == "svg") {
       const Computed own = compute(style, specified_[t]);
       if (own[kDisplay] == "none") return;
@@ -326,7 +443,7 @@ void Reader::viewport_element(std::size_t t, const XmlElement& sizing, const Com
     inner_vp = {(*box)[2], (*box)[3]};
   }
   const std::size_t first = out_.shapes.size();
-  with_opacity(v, style, [&] { children(t, style, inner, inner_vp); });
+  with_opacity(v, style, m, vp, [&] { children(t, style, inner, inner_vp); });
   const std::optional<std::string>& overflow = specified_[t][kOverflow];
   if (!overflow || (*overflow != "visible" && *overflow != "auto")) check_inside(v, first, m, x, y, w, h);
 }
@@ -496,6 +613,7 @@ void Reader::shape(std::size_t i, const Computed& style, const Affine& m, const 
   if (stroke && stroke_first) out_.shapes.push_back(std::move(*stroke));
   if (fill) out_.shapes.push_back(std::move(*fill));
   if (stroke && !stroke_first) out_.shapes.push_back(std::move(*stroke));
+  if (style[kClipPath] != "none") clip(e, style[kClipPath], m, vp, first);
   fade(first, opacity);
 }
 
