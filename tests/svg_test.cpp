@@ -319,11 +319,13 @@ TEST(SvgUse, PlacesCopiesAndRefusesCycles) {
   expect_refused("<svg><defs><g id='a'><use href='#b'/></g><g id='b'><use href='#a'/></g></defs><use href='#a'/></svg>",
                  "a cycle");
   expect_refused("<svg><use href='other.svg#a'/></svg>", "only #id in the same document");
-  // A symbol's content outside its viewport would be clipped: refused.
-  expect_refused(
+  // A symbol's content outside its viewport is clipped by the viewport's rectangle.
+  const ShapeDocument clipped = parse_svg(
       "<svg><symbol id='s' viewBox='0 0 2 2'><path d='M0 0 L3 0 L0 3 Z'/></symbol><use href='#s' "
-      "width='2' height='2'/></svg>",
-      "clipping is not supported");
+      "width='2' height='2'/></svg>");
+  ASSERT_EQ(clipped.groups.size(), 1u);
+  ASSERT_EQ(clipped.groups[0].clip.size(), 1u);
+  EXPECT_NEAR(std::abs(fill_outline(clipped.groups[0].clip[0], 1e-9).signed_area()), 4.0, 1e-12);
 }
 
 // --- Refused by name ------------------------------------------------------------------

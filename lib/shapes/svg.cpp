@@ -136,8 +136,7 @@ class Reader {
   std::optional<Shape> stroke_shape(const XmlElement& e, const Computed& style, const Affine& m, const Viewport& vp,
                                     const std::vector<ShapeContour>& contours);
   const XmlElement* reference(const XmlElement& e, const std::string& href) const;
-  void check_inside(const XmlElement& e, std::size_t first_shape, const Affine& ctm, double x, double y, double w,
-                    double h) const;
+  bool inside(std::size_t first_shape, const Affine& ctm, double x, double y, double w, double h) const;
   Color color_value(const XmlElement& e, const std::string& value) const;
   void fade(std::size_t first_shape, double opacity);
   ShapeGroup& group(std::size_t first_shape);
@@ -445,11 +444,24 @@ void Reader::viewport_element(std::size_t t, const XmlElement& sizing, const Com
   const std::size_t first = out_.shapes.size();
   with_opacity(v, style, m, vp, [&] { children(t, style, inner, inner_vp); });
   const std::optional<std::string>& overflow = specified_[t][kOverflow];
-  if (!overflow || (*overflow != "visible" && *overflow != "auto")) check_inside(v, first, m, x, y, w, h);
+  if ((!overflow || (*overflow != "visible" && *overflow != "auto")) && !inside(first, m, x, y, w, h)) {
+    // The viewport clips what reaches outside it: a clip of its rectangle.
+    Shape r;
+    ShapeContour k;
+    const Vec2 c[4] = {m.apply({x, y}), m.apply({x + w, y}), m.apply({x + w, y + h}), m.apply({x, y + h})};
+    for (int j = 0; j < 4; ++j) k.pieces.push_back(RationalBezier::line(c[j], c[(j + 1) % 4]));
+    r.contours.push_back(std::move(k));
+    ShapeGroup& g = group(first);
+    if (g.clip.empty())
+      g.clip.push_back(std::move(r));
+    else
+      out_.groups.push_back(ShapeGroup{first, out_.shapes.size(), 1.0f, {std::move(r)}});
+  }
 }
 
-void Reader::check_inside(const XmlElement& e, std::size_t first_shape, const Affine& ctm, double x, double y, double w,
-                          double h) const {
+// Whether shapes [first_shape, end) lie inside the viewport (x, y, w, h) of
+// user space `ctm` (within a flatness slack).
+bool Reader::inside(std::size_t first_shape, const Affine& ctm, double x, double y, double w, double h) const {
   const Affine back = ctm.inverse();
   const double slack = tolerance::kConicFlatnessRelative * std::max(w, h);
   for (std::size_t s = first_shape; s < out_.shapes.size(); ++s)
@@ -457,11 +469,9 @@ void Reader::check_inside(const XmlElement& e, std::size_t first_shape, const Af
       for (const RationalBezier& piece : c.pieces)
         for (Vec2 p : piece.points) {
           const Vec2 q = back.apply(p);
-          if (q.x < x - slack || q.x > x + w + slack || q.y < y - slack || q.y > y + h + slack)
-            fail(e, "<" + e.name +
-                        "> content reaches outside its viewport, which clips it; clipping is not "
-                        "supported (overflow=\"visible\" draws it unclipped)");
+          if (q.x < x - slack || q.x > x + w + slack || q.y < y - slack || q.y > y + h + slack) return false;
         }
+  return true;
 }
 
 Color Reader::color_value(const XmlElement& e, const std::string& value) const {
