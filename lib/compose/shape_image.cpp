@@ -157,6 +157,7 @@ struct Layer {
   Color color;
   std::size_t shape;
   const Gradient* gradient = nullptr;  // the fill's, instead of `color`
+  bool overlaps = false;               // meshed in parts whose triangles overlap (a stroke's fallback)
 };
 
 // `part` added to `all` (its vertices renumbered after all's).
@@ -195,20 +196,31 @@ void shape_layers(const Shape& shape, std::size_t index, double tolerance, doubl
       out.push_back({relative_to(build_mesh(o, mo), centre, scale), shape.stroke->color, index, gradient});
     } catch (const Error& e) {
       // docs/strokes.md, limits: where the mesher's budget refuses the union
-      // of many crossing subpaths, an opaque stroke is meshed subpath by
-      // subpath into one mesh whose triangles overlap where subpaths cross
-      // (the same pixels, but for the antialiased edges there); a
-      // translucent one would show its overlaps, and is refused.
-      if (e.code() != ErrorCode::Geometry || shape.stroke->color.a < 1.0f || gradient != nullptr ||
-          shape.contours.size() < 2)
-        throw;
+      // of many crossing subpaths, a stroke is meshed subpath by subpath
+      // (and a subpath whose union is refused too, loop by loop: each loop
+      // of a stroke outline is a region of its own) into one mesh whose
+      // triangles overlap. The offscreen AA modes sum its coverage and
+      // clamp it, so it draws the same pixels but for the antialiased edges
+      // where parts cross; the single-pass modes would blend a translucent
+      // one twice there, and refuse it (ShapeDrawing::draw).
+      if (e.code() != ErrorCode::Geometry) throw;
       Mesh all;
       for (const ShapeContour& c : shape.contours) {
         const Outline one = stroke_outline_mapped({c}, shape.stroke->style, shape.stroke->user_to_document,
                                                   stroke_tolerance, px_per_unit);
-        if (!one.empty()) append_mesh(all, build_mesh(one, mo));
+        if (one.empty()) continue;
+        try {
+          append_mesh(all, build_mesh(one, mo));
+        } catch (const Error& again) {
+          if (again.code() != ErrorCode::Geometry) throw;
+          for (const Contour& loop : one.contours()) {
+            Outline single;
+            single.contours().push_back(loop);
+            append_mesh(all, build_mesh(single, mo));
+          }
+        }
       }
-      out.push_back({relative_to(std::move(all), centre, scale), shape.stroke->color, index});
+      out.push_back({relative_to(std::move(all), centre, scale), shape.stroke->color, index, gradient, true});
     }
   };
   if (shape.paint_order == PaintOrder::StrokeFill) {
@@ -253,6 +265,7 @@ struct ShapeDrawing::Layer {
   double side = 0.0;                 // the shape's larger side, document units (for `auto`)
   std::optional<Gradient> gradient;  // from the mesh's units (relative to the centre)
   std::size_t shape = 0;             // its index in the document (for groups)
+  bool overlaps = false;             // triangles overlap: translucent paint needs an offscreen AA mode
 };
 
 struct ShapeDrawing::Groups {
@@ -291,8 +304,12 @@ ShapeDrawing ShapeDrawing::from_document(const ShapeDocument& doc, double px_per
   for (const ::curvetext::Layer& l : layers) {
     if (l.mesh.empty()) continue;
     const Box b = shape_box(doc.shapes[l.shape]);
-    Layer out{DrawBatch::from_mesh(l.mesh), l.color, b.empty() ? 0.0 : std::max(b.max.x - b.min.x, b.max.y - b.min.y),
-              std::nullopt, l.shape};
+    Layer out{DrawBatch::from_mesh(l.mesh),
+              l.color,
+              b.empty() ? 0.0 : std::max(b.max.x - b.min.x, b.max.y - b.min.y),
+              std::nullopt,
+              l.shape,
+              l.overlaps};
     if (l.gradient) {
       // The mesh is relative to the centre: the gradient's map from
       // document coordinates moved with it.
@@ -331,6 +348,11 @@ void ShapeDrawing::draw(Renderer& renderer, const Placement& at, const DrawOptio
     d.color = l.color;
     d.antialiasing = resolve_antialiasing(options.antialiasing, l.side * px_per_unit_);
     d.gradient = l.gradient ? &*l.gradient : nullptr;
+    if (l.overlaps && (l.color.a < 1.0f || l.gradient) &&
+        (d.antialiasing == AntiAliasing::None || d.antialiasing == AntiAliasing::Curves))
+      throw Error(ErrorCode::InvalidArgument,
+                  "a translucent stroke meshed in overlapping parts (the mesher refused its union) is drawn with "
+                  "antialiasing full, vbaa or msaa only");
     renderer.draw(l.batch, moved, d);
   };
   const std::vector<Groups::Group>& groups = groups_->list;
