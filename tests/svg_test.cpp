@@ -343,7 +343,14 @@ TEST(SvgRefusals, WhatIsNotDrawnIsNamedWithItsPosition) {
   expect_refused("<svg><rect id='c'/><path clip-path='url(#c)'" + sq + "/></svg>", "which is not a <clipPath>");
   expect_refused("<svg><clipPath id='c'><text>a</text></clipPath><path clip-path='url(#c)'" + sq + "/></svg>",
                  "<text> is not supported");
-  expect_refused("<svg><path marker-end='url(#m)'" + sq + "/></svg>", "markers are not supported");
+  expect_refused("<svg><rect id='m'/><path marker-end='url(#m)'" + sq + "/></svg>", "which is not a <marker>");
+  expect_refused("<svg><marker id='m'/><path marker-mid='url(#m)' d='M0 0 A1 1 0 0 0 2 0 L3 3'/></svg>",
+                 "marker-mid on a path with arcs is not supported");
+  expect_refused(
+      "<svg><marker id='m'><path d='M0 0 L1 1' marker-end='url(#m)'/></marker>"
+      "<path marker-end='url(#m)'" +
+          sq + "/></svg>",
+      "a cycle");
   expect_refused("<svg><pattern id='p'/><path fill='url(#p)'" + sq + "/></svg>", "fill refers to <pattern>");
   expect_refused("<svg><path fill='bluish'" + sq + "/></svg>", "fill 'bluish' is not a colour");
   // Not drawn, as SVG says: metadata, foreign and unknown elements, defs, hidden shapes, no-stroke widths.
@@ -626,6 +633,63 @@ TEST(SvgRender, ClipPathsMultiplyByTheClipsCoverage) {
         test::coverage_from_black_on_white(render_shape_image(test::gpu().renderer, doc, layout, options));
     const test::CoverageStats st = test::compare(got, ref);
     const std::string name = "svg-clip-paths-aa" + std::to_string(static_cast<int>(aa));
+    std::printf("%s: edge %.4f max %.3f ink %.4f\n", name.c_str(), st.edge_mean_abs, st.max_abs, st.ink_ratio);
+    test::expect_coverage(name, got, ref, st, aa == AntiAliasing::Msaa ? 0.08 : 0.01,
+                          aa == AntiAliasing::Msaa ? 0.02 : 0.005);
+  }
+}
+
+// Markers at a polyline's vertices: a triangle (viewBox 0 0 4 4, refX 0,
+// refY 2) scaled by the stroke width, turned by orient="auto" (the first
+// segment's direction at the start, the bisector at the middle vertex, the
+// last segment's at the end) and by a fixed angle; in every AA mode against
+// point sampling of the placed triangles and the stroke.
+TEST(SvgRender, MarkersArePlacedAtVerticesAndOriented) {
+  const ShapeDocument doc = parse_svg(
+      "<svg width='64' height='48' viewBox='0 0 64 48'>"
+      "<marker id='m' markerWidth='4' markerHeight='4' refY='2' orient='auto' viewBox='0 0 4 4'>"
+      "<path d='M0 0 L4 2 L0 4 z'/></marker>"
+      "<marker id='f' markerWidth='3' markerHeight='3' refX='1.5' refY='1.5' orient='90' markerUnits='userSpaceOnUse'>"
+      "<rect width='3' height='1'/></marker>"
+      "<polyline points='8,40 28,10 56,30' fill='none' stroke='#000' stroke-width='1.5' stroke-linejoin='round' "
+      "marker-start='url(#m)' marker-mid='url(#m)' marker-end='url(#m)'/>"
+      "<line x1='40' y1='44' x2='60' y2='44' stroke='none' marker-end='url(#f)'/></svg>");
+  const Vec2 p0{8, 40}, p1{28, 10}, p2{56, 30};
+  const double a0 = std::atan2(p1.y - p0.y, p1.x - p0.x), a2 = std::atan2(p2.y - p1.y, p2.x - p1.x);
+  struct Placed {
+    Vec2 at;
+    double angle;
+  };
+  const Placed placed[3] = {{p0, a0}, {p1, 0.5 * (a0 + a2)}, {p2, a2}};
+  auto near_segment = [](Vec2 u, Vec2 p, Vec2 q, double h) {
+    const double len = distance(p, q);
+    const Vec2 t = (q - p) * (1.0 / len), r = u - p;
+    const double along = r.x * t.x + r.y * t.y, across = std::abs(t.x * r.y - t.y * r.x);
+    return along >= 0 && along <= len && across <= h;
+  };
+  auto inside = [&](double x, double y) {
+    const Vec2 u{x, y};
+    // The stroke with its round join.
+    bool in = near_segment(u, p0, p1, 0.75) || near_segment(u, p1, p2, 0.75) || distance(u, p1) <= 0.75;
+    for (const Placed& pl : placed) {
+      // Back into the marker's content: unrotate, unscale by the stroke width, add the reference point.
+      const Vec2 d = u - pl.at;
+      const double c = std::cos(pl.angle), s = std::sin(pl.angle);
+      const Vec2 q{(c * d.x + s * d.y) / 1.5, (-s * d.x + c * d.y) / 1.5 + 2};
+      in = in || (q.x >= 0 && q.x <= 4 && std::abs(q.y - 2) <= 0.5 * (4 - q.x));
+    }
+    // The rectangle (0, 0)-(3, 1) less the reference point (1.5, 1.5), turned 90 degrees, at (60, 44).
+    return in || (x >= 60.5 && x <= 61.5 && y >= 42.5 && y <= 45.5);
+  };
+  ShapeImageOptions options;
+  const ShapeImageLayout layout = layout_shape_image(doc, options);
+  const test::Coverage ref = test::sampled_reference(inside, layout.width, layout.height, 32);
+  for (AntiAliasing aa : {AntiAliasing::Full, AntiAliasing::Vbaa, AntiAliasing::Msaa}) {
+    options.antialiasing = aa;
+    const test::Coverage got =
+        test::coverage_from_black_on_white(render_shape_image(test::gpu().renderer, doc, layout, options));
+    const test::CoverageStats st = test::compare(got, ref);
+    const std::string name = "svg-markers-aa" + std::to_string(static_cast<int>(aa));
     std::printf("%s: edge %.4f max %.3f ink %.4f\n", name.c_str(), st.edge_mean_abs, st.max_abs, st.ink_ratio);
     test::expect_coverage(name, got, ref, st, aa == AntiAliasing::Msaa ? 0.08 : 0.01,
                           aa == AntiAliasing::Msaa ? 0.02 : 0.005);

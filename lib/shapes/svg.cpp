@@ -11,6 +11,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <numbers>
 #include <string>
 #include <unordered_map>
 
@@ -137,6 +138,12 @@ class Reader {
                                     const std::vector<ShapeContour>& contours);
   const XmlElement* reference(const XmlElement& e, const std::string& href) const;
   bool inside(std::size_t first_shape, const Affine& ctm, double x, double y, double w, double h) const;
+  void clip_to_viewport(std::size_t first, const Affine& m, double x, double y, double w, double h);
+  void markers(const XmlElement& e, const Computed& style, const Affine& m, const Viewport& vp,
+               const std::vector<ShapeContour>& contours);
+  void marker(std::size_t k, const MarkerVertex& v, bool at_start, double stroke_width, const Affine& m,
+              const Viewport& vp);
+  std::vector<std::size_t> marker_stack_;
   Color color_value(const XmlElement& e, const std::string& value) const;
   void fade(std::size_t first_shape, double opacity);
   ShapeGroup& group(std::size_t first_shape);
@@ -444,19 +451,24 @@ void Reader::viewport_element(std::size_t t, const XmlElement& sizing, const Com
   const std::size_t first = out_.shapes.size();
   with_opacity(v, style, m, vp, [&] { children(t, style, inner, inner_vp); });
   const std::optional<std::string>& overflow = specified_[t][kOverflow];
-  if ((!overflow || (*overflow != "visible" && *overflow != "auto")) && !inside(first, m, x, y, w, h)) {
-    // The viewport clips what reaches outside it: a clip of its rectangle.
-    Shape r;
-    ShapeContour k;
-    const Vec2 c[4] = {m.apply({x, y}), m.apply({x + w, y}), m.apply({x + w, y + h}), m.apply({x, y + h})};
-    for (int j = 0; j < 4; ++j) k.pieces.push_back(RationalBezier::line(c[j], c[(j + 1) % 4]));
-    r.contours.push_back(std::move(k));
-    ShapeGroup& g = group(first);
-    if (g.clip.empty())
-      g.clip.push_back(std::move(r));
-    else
-      out_.groups.push_back(ShapeGroup{first, out_.shapes.size(), 1.0f, {std::move(r)}});
-  }
+  if (!overflow || (*overflow != "visible" && *overflow != "auto")) clip_to_viewport(first, m, x, y, w, h);
+}
+
+// A viewport clips what reaches outside it: a clip of its rectangle
+// (x, y, w, h) in user space `m` on shapes [first_shape, end), where any
+// reaches out.
+void Reader::clip_to_viewport(std::size_t first, const Affine& m, double x, double y, double w, double h) {
+  if (inside(first, m, x, y, w, h)) return;
+  Shape r;
+  ShapeContour k;
+  const Vec2 c[4] = {m.apply({x, y}), m.apply({x + w, y}), m.apply({x + w, y + h}), m.apply({x, y + h})};
+  for (int j = 0; j < 4; ++j) k.pieces.push_back(RationalBezier::line(c[j], c[(j + 1) % 4]));
+  r.contours.push_back(std::move(k));
+  ShapeGroup& g = group(first);
+  if (g.clip.empty())
+    g.clip.push_back(std::move(r));
+  else
+    out_.groups.push_back(ShapeGroup{first, out_.shapes.size(), 1.0f, {std::move(r)}});
 }
 
 // Whether shapes [first_shape, end) lie inside the viewport (x, y, w, h) of
@@ -610,9 +622,6 @@ void Reader::shape(std::size_t i, const Computed& style, const Affine& m, const 
   if (style[kVisibility] != "visible") return;
   const std::vector<ShapeContour> contours = element_geometry(e, vp);
   if (contours.empty()) return;
-  if (e.name != "rect" && e.name != "circle" && e.name != "ellipse")
-    for (int p : {kMarkerStart, kMarkerMid, kMarkerEnd})
-      if (style[p] != "none") fail(e, std::string(prop_name(p)) + " '" + style[p] + "': markers are not supported");
   const double opacity = unit_value(e, "opacity", style[kOpacity]);
   Computed opaque = style;
   opaque[kOpacity] = "1";  // applied once, by fade, to what the element drew
@@ -623,8 +632,105 @@ void Reader::shape(std::size_t i, const Computed& style, const Affine& m, const 
   if (stroke && stroke_first) out_.shapes.push_back(std::move(*stroke));
   if (fill) out_.shapes.push_back(std::move(*fill));
   if (stroke && !stroke_first) out_.shapes.push_back(std::move(*stroke));
+  if (e.name != "rect" && e.name != "circle" && e.name != "ellipse") markers(e, style, m, vp, contours);
   if (style[kClipPath] != "none") clip(e, style[kClipPath], m, vp, first);
   fade(first, opacity);
+}
+
+// marker-start, marker-mid and marker-end, drawn over the fill and stroke
+// (paint-order's markers last).
+void Reader::markers(const XmlElement& e, const Computed& style, const Affine& m, const Viewport& vp,
+                     const std::vector<ShapeContour>& contours) {
+  if (style[kMarkerStart] == "none" && style[kMarkerMid] == "none" && style[kMarkerEnd] == "none") return;
+  const std::vector<MarkerVertex> vertices = marker_vertices(contours);
+  if (vertices.empty()) return;
+  const std::optional<double> width = parse_length(style[kStrokeWidth], Axis::Other, vp);
+  if (!width) fail(e, "stroke-width '" + style[kStrokeWidth] + "' is not a length");
+  for (int p : {kMarkerStart, kMarkerMid, kMarkerEnd}) {
+    if (style[p] == "none") continue;
+    const std::string v = trim(style[p]);
+    const std::string name = prop_name(p);
+    if (!lower(v).starts_with("url(") || v.back() != ')') fail(e, name + " '" + style[p] + "' is not supported");
+    std::string ref = trim(std::string_view(v).substr(4, v.size() - 5));
+    if (ref.size() >= 2 && (ref.front() == '"' || ref.front() == '\'')) ref = ref.substr(1, ref.size() - 2);
+    const XmlElement* target = reference(e, ref);
+    if (!target) continue;  // names nothing: no marker
+    if (target->name != "marker") fail(e, name + " refers to <" + target->name + ">, which is not a <marker>");
+    // Arcs are cut into several conics, whose joins are no vertices of the path.
+    if (p == kMarkerMid && e.name == "path" && e.find("d") && e.find("d")->find_first_of("Aa") != std::string::npos)
+      fail(e, "marker-mid on a path with arcs is not supported");
+    const std::size_t k = static_cast<std::size_t>(target - doc_.elements.data());
+    // The path's first and last marker take the direction out and in alone
+    // (as librsvg, also where a subpath is closed).
+    if (p == kMarkerStart) {
+      MarkerVertex first = vertices.front();
+      first.angle = first.out_angle;
+      marker(k, first, true, *width, m, vp);
+    }
+    if (p == kMarkerMid)
+      for (std::size_t j = 1; j + 1 < vertices.size(); ++j) marker(k, vertices[j], false, *width, m, vp);
+    if (p == kMarkerEnd) {
+      MarkerVertex last = vertices.back();
+      last.angle = last.in_angle;
+      marker(k, last, false, *width, m, vp);
+    }
+  }
+}
+
+// One marker's content at vertex `v` of a path in user space `m`: its
+// viewBox in markerWidth x markerHeight, (refX, refY) on the vertex, turned
+// by orient, scaled by the stroke width (markerUnits strokeWidth), clipped
+// by its viewport unless overflow is visible.
+void Reader::marker(std::size_t k, const MarkerVertex& v, bool at_start, double stroke_width, const Affine& m,
+                    const Viewport& vp) {
+  const XmlElement& mk = doc_.elements[k];
+  if (std::find(marker_stack_.begin(), marker_stack_.end(), k) != marker_stack_.end())
+    fail(mk, "<marker> is drawn inside itself (a cycle)");
+  if (marker_stack_.size() >= kMaxUseDepth) fail(mk, "markers nested deeper than " + std::to_string(kMaxUseDepth));
+  auto length = [&](const char* name, Axis axis, const char* fallback) {
+    const std::string* s = mk.find(name);
+    const std::optional<double> l = parse_length(s ? *s : fallback, axis, vp);
+    if (!l) fail(mk, std::string(name) + " '" + *s + "' is not a length");
+    return *l;
+  };
+  const double w = length("markerWidth", Axis::X, "3"), h = length("markerHeight", Axis::Y, "3");
+  if (!(w > 0.0) || !(h > 0.0)) return;
+  const std::string* units = mk.find("markerUnits");
+  const std::string u = units ? trim(*units) : "strokeWidth";
+  if (u != "strokeWidth" && u != "userSpaceOnUse") fail(mk, "markerUnits '" + *units + "' is not supported");
+  const double scale = u == "strokeWidth" ? stroke_width : 1.0;
+  if (!(scale > 0.0)) return;  // scaled to nothing
+  const std::string* orient = mk.find("orient");
+  const std::string o = orient ? trim(*orient) : "0";
+  double angle = v.angle;
+  if (o == "auto-start-reverse") {
+    if (at_start) angle += std::numbers::pi;
+  } else if (o != "auto") {
+    const std::string deg = o.ends_with("deg") ? o.substr(0, o.size() - 3) : o;
+    double a = 0.0;
+    const auto [end, ec] = std::from_chars(deg.data(), deg.data() + deg.size(), a);
+    if (ec != std::errc() || end != deg.data() + deg.size() || !std::isfinite(a))
+      fail(mk, "orient '" + *orient + "' is not auto, auto-start-reverse or an angle in degrees");
+    angle = a * std::numbers::pi / 180.0;
+  }
+  Affine box;  // content to the marker's viewport
+  Viewport inner{w, h};
+  if (const auto b = parse_view_box(mk)) {
+    const std::string* aspect = mk.find("preserveAspectRatio");
+    box = view_box_transform(*b, aspect ? *aspect : "", 0, 0, w, h, position(mk));
+    inner = {(*b)[2], (*b)[3]};
+  }
+  const Vec2 ref = box.apply({length("refX", Axis::X, "0"), length("refY", Axis::Y, "0")});
+  const double c = std::cos(angle), s = std::sin(angle);
+  const Affine port = m * Affine::translate(v.at.x, v.at.y) * Affine{c, s, -s, c, 0, 0} * Affine::scale(scale, scale) *
+                      Affine::translate(-ref.x, -ref.y);
+  const Computed style = computed_at(k);
+  const std::size_t first = out_.shapes.size();
+  marker_stack_.push_back(k);
+  children(k, style, port * box, inner);
+  marker_stack_.pop_back();
+  const std::optional<std::string>& overflow = specified_[k][kOverflow];
+  if (!overflow || (*overflow != "visible" && *overflow != "auto")) clip_to_viewport(first, port, 0, 0, w, h);
 }
 
 }  // namespace
