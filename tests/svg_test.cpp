@@ -589,6 +589,18 @@ TEST(SvgRender, GroupOpacityCompositesOneLayer) {
                            std::to_string(static_cast<int>(aa)) + ".png");
     EXPECT_LE(worst, 2.5 / 255);  // 8-bit rounding of the layer and of the target
   }
+  // Each nested group holds a layer the size of the viewport: too deep a nest is refused.
+  std::string deep = "<svg width='8' height='8'>";
+  for (int i = 0; i < 40; ++i) deep += "<g opacity='0.9'><rect width='4' height='4'/>";
+  for (int i = 0; i < 40; ++i) deep += "</g>";
+  const ShapeDocument nested = parse_svg(deep + "</svg>");
+  EXPECT_EQ(nested.groups.size(), 39u);  // the innermost group draws one shape: its alpha
+  try {
+    (void)ShapeDrawing::from_document(nested, 1.0);
+    ADD_FAILURE() << "no error for 39 nested groups";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("nested deeper than 32"), std::string::npos) << e.what();
+  }
 }
 
 // clip-path by the coverage of the clip's shapes: a circle clipped by a

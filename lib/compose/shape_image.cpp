@@ -253,6 +253,9 @@ void check_groups(const ShapeDocument& doc) {
       throw Error(ErrorCode::InvalidArgument,
                   "shape groups must nest (two groups overlap without one holding the other)");
     ends.push_back(g.end);
+    if (ends.size() > tolerance::kMaxShapeGroupDepth)
+      throw Error(ErrorCode::InvalidArgument, "shape groups (opacity, clip paths) nested deeper than " +
+                                                  std::to_string(tolerance::kMaxShapeGroupDepth));
     last_begin = g.begin;
   }
 }
