@@ -197,8 +197,9 @@ CURVETEXT_API std::vector<ShapeContour> parse_svg_path(std::string_view d);
 // An SVG document: the static subset icons and drawings use (docs/svg.md):
 // shapes and paths, transforms, viewBox, <use>/<symbol>/<defs>, the CSS
 // cascade of <style> sheets, style and presentation attributes, colours,
-// opacity. Every part it does not draw (strokes, gradients, filters, text,
-// ...) is refused by name with its line and column, never dropped.
+// gradients, strokes, opacity and clip paths (ShapeGroup), markers. Every
+// part it does not draw (filters, masks, text, ...) is refused by name with
+// its line and column, never dropped.
 struct SvgOptions {
   // The value of `currentColor` where the document does not set `color`
   // (icon themes leave it to the toolkit: its text colour).
