@@ -70,18 +70,21 @@ void LayerPrograms::make(const ContextInfo& info) {
   glGenBuffers(1, &quad_);
   glBindBuffer(GL_ARRAY_BUFFER, quad_);
   glBufferData(GL_ARRAY_BUFFER, sizeof corners, corners, GL_STATIC_DRAW);
-  if (info.gl3()) glGenVertexArrays(1, &vao_);
 }
 
 LayerPrograms::~LayerPrograms() {
+  for (LayerTexture& t : pool_) {
+    glDeleteFramebuffers(1, &t.fbo);
+    glDeleteTextures(1, &t.texture);
+  }
   if (program_ != 0) glDeleteProgram(program_);
   if (quad_ != 0) glDeleteBuffers(1, &quad_);
-  if (vao_ != 0) glDeleteVertexArrays(1, &vao_);
 }
 
 LayerStack::LayerStack(LayerPrograms& programs) : programs_(programs), state_(ContextInfo::current()) {
   const ContextInfo info = ContextInfo::current();
   programs_.make(info);
+  if (info.gl3()) glGenVertexArrays(1, &vao_);  // a container object: this context's own
   width_ = state_.viewport()[2];
   height_ = state_.viewport()[3];
   // The layers blend as the target does: in linear light where it is sRGB-encoded.
@@ -92,20 +95,52 @@ LayerStack::LayerStack(LayerPrograms& programs) : programs_(programs), state_(Co
 
 LayerStack::~LayerStack() {
   for (Layer& l : layers_) release(l);
+  if (vao_ != 0) glDeleteVertexArrays(1, &vao_);
 }
 
+namespace {
+
+// Textures kept between draws: a group and its clip mask take two; deeper
+// nests allocate what is beyond.
+constexpr std::size_t kMaxPooledLayers = 4;
+
+void destroy(LayerTexture& t) {
+  if (t.fbo != 0) glDeleteFramebuffers(1, &t.fbo);
+  if (t.texture != 0) glDeleteTextures(1, &t.texture);
+  t = LayerTexture{};
+}
+
+}  // namespace
+
+// Framebuffers (container objects, not shared between contexts) are made
+// per draw; textures (shared) go back to the pool.
 void LayerStack::release(Layer& layer) {
   if (layer.fbo != 0) glDeleteFramebuffers(1, &layer.fbo);
-  if (layer.texture != 0) glDeleteTextures(1, &layer.texture);
+  layer.fbo = 0;
+  if (programs_.pool_.size() < kMaxPooledLayers)
+    programs_.pool_.push_back(layer);
+  else
+    destroy(layer);
   layer = Layer{};
 }
 
 void LayerStack::push() {
   if (width_ <= 0 || height_ <= 0) throw Error(ErrorCode::InvalidArgument, "a layer needs a viewport with pixels");
+  std::vector<LayerTexture>& pool = programs_.pool_;
   Layer l;
-  l.texture = new_texture(internal_format_, GL_RGBA, width_, height_);
+  for (std::size_t i = 0; i < pool.size() && l.texture == 0; ++i)
+    if (pool[i].width == width_ && pool[i].height == height_ && pool[i].format == internal_format_) {
+      l = pool[i];
+      pool.erase(pool.begin() + static_cast<std::ptrdiff_t>(i));
+    }
+  if (l.texture == 0) {
+    l.width = width_;
+    l.height = height_;
+    l.format = internal_format_;
+    l.texture = new_texture(internal_format_, GL_RGBA, width_, height_);
+  }
   if (const GLenum err = glGetError(); err != GL_NO_ERROR) {
-    release(l);
+    destroy(l);
     throw Error(ErrorCode::Gl, "cannot allocate a " + std::to_string(width_) + "x" + std::to_string(height_) +
                                    " layer texture (GL error " + hex(err) + ")");
   }
@@ -113,10 +148,14 @@ void LayerStack::push() {
   glBindFramebuffer(GL_FRAMEBUFFER, l.fbo);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, l.texture, 0);
   if (const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER); status != GL_FRAMEBUFFER_COMPLETE) {
-    release(l);
+    destroy(l);
     throw Error(ErrorCode::Gl, "layer framebuffer incomplete (status " + hex(status) + ")");
   }
   layers_.push_back(l);
+  clear_bound();
+}
+
+void LayerStack::clear_bound() const {
   glViewport(0, 0, width_, height_);
   glDisable(GL_SCISSOR_TEST);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -142,7 +181,7 @@ void LayerStack::bind_under_top() {
 void LayerStack::draw_quad(GLuint texture, float opacity) {
   const LayerPrograms& p = programs_;
   glUseProgram(p.program_);
-  if (p.vao_ != 0) glBindVertexArray(p.vao_);
+  if (vao_ != 0) glBindVertexArray(vao_);
   glBindBuffer(GL_ARRAY_BUFFER, p.quad_);
   glEnableVertexAttribArray(0);
   glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);

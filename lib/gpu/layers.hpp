@@ -16,10 +16,17 @@ namespace curvetext::gpu {
 
 // One draw call's layers (ShapeDrawing::draw): made with the application's
 // framebuffer bound, it saves the application's GL state and puts it back
-// when destroyed (also when a draw throws). Layers nest. Textures are
-// allocated per layer and freed when it is composited; the program and the
-// quad are kept in LayerPrograms between draws.
+// when destroyed (also when a draw throws). Layers nest. The program, the
+// quad and a few textures of finished layers are kept in LayerPrograms
+// between draws.
 class LayerPrograms;
+
+// A layer's framebuffer and texture.
+struct LayerTexture {
+  GLuint fbo = 0, texture = 0;
+  int width = 0, height = 0;
+  GLint format = 0;
+};
 
 class LayerStack {
  public:
@@ -41,16 +48,16 @@ class LayerStack {
   std::size_t depth() const { return layers_.size(); }
 
  private:
-  struct Layer {
-    GLuint fbo = 0, texture = 0;
-  };
+  using Layer = LayerTexture;
   void bind_under_top();                          // the layer under the top one, else the application's target
   void draw_quad(GLuint texture, float opacity);  // with the blending set by the caller
-  void release(Layer& layer);
+  void release(Layer& layer);                     // back to the programs' pool, or deleted
+  void clear_bound() const;                       // the layer bound: its viewport, cleared
   LayerPrograms& programs_;
   GlStateBackup state_;
   int width_ = 0, height_ = 0;
   GLint internal_format_ = GL_RGBA;
+  GLuint vao_ = 0;
   std::vector<Layer> layers_;
 };
 
@@ -67,7 +74,11 @@ class LayerPrograms {
   friend class LayerStack;
   void make(const ContextInfo& info);
   ContextInfo info_;
-  GLuint program_ = 0, quad_ = 0, vao_ = 0;
+  // Textures of finished layers, kept for the next draw of the same size
+  // (an application drawing every frame allocates none; their framebuffers
+  // are made per draw).
+  std::vector<LayerTexture> pool_;
+  GLuint program_ = 0, quad_ = 0;
   GLint u_texture_ = -1, u_opacity_ = -1;
 };
 
