@@ -601,6 +601,13 @@ TEST(SvgRender, GroupOpacityCompositesOneLayer) {
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("nested deeper than 32"), std::string::npos) << e.what();
   }
+  // Each group is an offscreen pass per draw: too many are refused.
+  std::string many = "<svg width='8' height='8'>";
+  for (int i = 0; i < 4097; ++i)
+    many += "<g opacity='0.5'><rect width='4' height='4'/><rect width='2' height='2'/></g>";
+  const ShapeDocument crowded = parse_svg(many + "</svg>");
+  EXPECT_EQ(crowded.groups.size(), 4097u);
+  EXPECT_THROW((void)ShapeDrawing::from_document(crowded, 1.0), Error);
 }
 
 // clip-path by the coverage of the clip's shapes: a circle clipped by a

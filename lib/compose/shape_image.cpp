@@ -241,6 +241,9 @@ namespace {
 // Throws Error(InvalidArgument) for groups outside the document, out of
 // order, overlapping without nesting, or with an opacity outside [0, 1].
 void check_groups(const ShapeDocument& doc) {
+  if (doc.groups.size() > tolerance::kMaxShapeGroups)
+    throw Error(ErrorCode::InvalidArgument, "more than " + std::to_string(tolerance::kMaxShapeGroups) +
+                                                " shape groups (opacity, clip paths), each an offscreen pass");
   std::vector<std::size_t> ends;  // of the groups holding the current one
   std::size_t last_begin = 0;
   for (const ShapeGroup& g : doc.groups) {

@@ -146,6 +146,10 @@ inline constexpr std::size_t kMaxSegmentsPerDocument = std::size_t{1} << 18;
 // this are refused: each open group holds an offscreen layer the size of
 // the viewport (and a clip one more while its mask is drawn).
 inline constexpr std::size_t kMaxShapeGroupDepth = 32;
+// More shape groups than this in one document are refused: each is an
+// offscreen pass over the whole viewport per draw (markers clipped by their
+// viewport on a path of many vertices make one each).
+inline constexpr std::size_t kMaxShapeGroups = 4096;
 
 // --- Colour glyphs (color_glyph.hpp) -------------------------------------------
 // A COLR v1 paint graph nested deeper than this (paints within paints,
