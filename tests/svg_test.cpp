@@ -656,6 +656,25 @@ TEST(SvgRender, ClipPathsMultiplyByTheClipsCoverage) {
     test::expect_coverage(name, got, ref, st, aa == AntiAliasing::Msaa ? 0.08 : 0.01,
                           aa == AntiAliasing::Msaa ? 0.02 : 0.005);
   }
+  // A rectangle clipped by a rectangle whose edges meet it only at right angles: every pixel's
+  // coverage is the product of the two (a box's area is the product of its extents), exact
+  // but for 8-bit rounding, against the box (10.5, 4.2)-(20.7, 12.4) computed here.
+  const ShapeDocument boxes = parse_svg(
+      "<svg width='32' height='20' viewBox='0 0 32 20'><clipPath id='k'><rect x='10.5' y='2' width='19.75' "
+      "height='10.4'/></clipPath><rect x='3.3' y='4.2' width='17.4' height='11.4' clip-path='url(#k)'/></svg>");
+  ShapeImageOptions full;
+  const ShapeImageLayout box_layout = layout_shape_image(boxes, full);
+  const test::Coverage got =
+      test::coverage_from_black_on_white(render_shape_image(test::gpu().renderer, boxes, box_layout, full));
+  double worst = 0.0;
+  for (int y = 0; y < got.height; ++y)
+    for (int x = 0; x < got.width; ++x) {
+      const double fx = std::max(0.0, std::min(x + 1.0, 20.7) - std::max(double(x), 10.5));
+      const double fy = std::max(0.0, std::min(y + 1.0, 12.4) - std::max(double(y), 4.2));
+      worst = std::max(worst, std::abs(got.at(x, y) - fx * fy));
+    }
+  std::printf("rectangle clipped by a rectangle: largest difference %.4f\n", worst);
+  EXPECT_LE(worst, 2.5 / 255);
 }
 
 // Markers at a polyline's vertices: a triangle (viewBox 0 0 4 4, refX 0,
