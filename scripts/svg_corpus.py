@@ -188,7 +188,7 @@ def main():
     p.add_argument("--step", type=int, default=10, help="every N-th icon of each theme (sorted paths)")
     p.add_argument("--limit", type=int, default=0, help="at most this many icons per theme (0: all)")
     p.add_argument("--size", type=int, default=96)
-    p.add_argument("--themes", default="breeze,tango,adwaita")
+    p.add_argument("--themes", default="breeze,tango,adwaita", help="theme names or folders of .svg files")
     p.add_argument("--mean-tolerance", type=float, default=0.004)
     p.add_argument("--max-tolerance", type=float, default=0.35)
     p.add_argument("--current-color", default="", help="passed to curvetext shape --current-color")
@@ -199,10 +199,12 @@ def main():
     bad_drawn = 0
     with tempfile.TemporaryDirectory() as tmp:
         for name in args.themes.split(","):
-            out_dir = os.path.join(tmp, name)
+            # A theme's name, or a folder of SVG files (named by its last part).
+            label = os.path.basename(name.rstrip("/"))
+            out_dir = os.path.join(tmp, label)
             os.makedirs(out_dir)
-            s = measure_theme(args, name, THEMES[name], out_dir)
-            report(name, s)
+            s = measure_theme(args, label, THEMES.get(name, name), out_dir)
+            report(label, s)
             total += s["sampled"]
             matched += s["matched"]
             bad_drawn += len(s["mismatched"])

@@ -417,7 +417,8 @@ TEST_P(GlState, ColourBitmapsLeaveTheApplicationsState) {
 }
 
 // An SVG icon drawn through ShapeDrawing (fills, a stroke, a gradient
-// evaluated in the composite pass) in every offscreen mode, and a solid one
+// evaluated in the composite pass, a translucent group composited from an
+// offscreen layer) in every offscreen mode, and a solid one
 // in the single-pass modes: the application's state is left as it was and
 // the ink lands inside its scissor box.
 TEST_P(GlState, ShapeDrawingLeavesTheApplicationsState) {
@@ -429,8 +430,9 @@ TEST_P(GlState, ShapeDrawingLeavesTheApplicationsState) {
     AppState app;
     const ShapeDocument icon = parse_svg(
         "<svg viewBox='0 0 16 16'><linearGradient id='g'><stop stop-color='#f00'/><stop offset='1' "
-        "stop-color='#00f'/></linearGradient><rect x='1' y='1' width='14' height='14' rx='3' fill='url(#g)'/>"
-        "<circle cx='8' cy='8' r='4' fill='none' stroke='#000' stroke-width='1.5'/></svg>");
+        "stop-color='#00f'/></linearGradient><g opacity='0.9'><rect x='1' y='1' width='14' height='14' rx='3' "
+        "fill='url(#g)'/><circle cx='8' cy='8' r='4' fill='none' stroke='#000' stroke-width='1.5'/></g></svg>");
+    ASSERT_EQ(icon.groups.size(), 1u);  // drawn through an offscreen layer
     const ShapeDocument solid = parse_svg("<svg viewBox='0 0 16 16'><circle cx='8' cy='8' r='6'/></svg>");
     const Placement at(6.0, 40.0, 16.0);  // 96 px, its top-left at (40, 16): y up, top edge y = 0
     const ShapeDrawing drawing = ShapeDrawing::from_document(icon, 6.0);

@@ -367,8 +367,6 @@ TEST(SvgFile, StrokesAndOpacity) {
   EXPECT_TRUE(strokes.shapes[2].filled);
   const std::pair<const char*, const char*> errors[] = {
       {"<svg><path d='M0 0 L9 0 L9 9' stroke='red' stroke-linejoin='mitre'/></svg>", "stroke-linejoin 'mitre'"},
-      {"<svg><g opacity='0.5'><path d='M0 0 L9 0 L9 9'/><path d='M0 0 L9 0 L9 9'/></g></svg>",
-       "opacity 0.5 on <g> of 2 shapes"},
       {"<svg><path d='M0 0 L9 0 L9 9' fill-opacity='half'/></svg>", "fill-opacity 'half'"},
   };
   for (const auto& [text, error] : errors) {
@@ -381,6 +379,13 @@ TEST(SvgFile, StrokesAndOpacity) {
       EXPECT_NE(std::string(e.what()).find(error), std::string::npos) << e.what();
     }
   }
+  // Opacity on a group of two shapes: one layer at that opacity (the shapes keep their alpha).
+  const ShapeDocument layered =
+      parse_svg("<svg><g opacity='0.5'><path d='M0 0 L9 0 L9 9'/><path d='M0 0 L9 0 L9 9'/></g></svg>");
+  ASSERT_EQ(layered.groups.size(), 1u);
+  EXPECT_EQ(layered.groups[0].end, 2u);
+  EXPECT_FLOAT_EQ(layered.groups[0].opacity, 0.5f);
+  EXPECT_FLOAT_EQ(layered.shapes[0].color.a, 1.0f);
   const ShapeDocument doc = parse_svg(
       "<svg><g fill-opacity='0.5'><path d='M0 0 L9 0 L9 9'/>"
       "<path d='M0 0 L9 0 L9 9' style='opacity: 50%' stroke='none' stroke-width='4'/></g>"

@@ -3,6 +3,7 @@
 // by name; and shapes drawn against exact coverage.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -318,11 +319,13 @@ TEST(SvgUse, PlacesCopiesAndRefusesCycles) {
   expect_refused("<svg><defs><g id='a'><use href='#b'/></g><g id='b'><use href='#a'/></g></defs><use href='#a'/></svg>",
                  "a cycle");
   expect_refused("<svg><use href='other.svg#a'/></svg>", "only #id in the same document");
-  // A symbol's content outside its viewport would be clipped: refused.
-  expect_refused(
+  // A symbol's content outside its viewport is clipped by the viewport's rectangle.
+  const ShapeDocument clipped = parse_svg(
       "<svg><symbol id='s' viewBox='0 0 2 2'><path d='M0 0 L3 0 L0 3 Z'/></symbol><use href='#s' "
-      "width='2' height='2'/></svg>",
-      "clipping is not supported");
+      "width='2' height='2'/></svg>");
+  ASSERT_EQ(clipped.groups.size(), 1u);
+  ASSERT_EQ(clipped.groups[0].clip.size(), 1u);
+  EXPECT_NEAR(std::abs(fill_outline(clipped.groups[0].clip[0], 1e-9).signed_area()), 4.0, 1e-12);
 }
 
 // --- Refused by name ------------------------------------------------------------------
@@ -335,10 +338,19 @@ TEST(SvgRefusals, WhatIsNotDrawnIsNamedWithItsPosition) {
   expect_refused("<svg><path" + sq + "><animate attributeName='x'/></path></svg>", "<animate> is not supported");
   expect_refused("<svg><path filter='url(#f)'" + sq + "/></svg>", "filter 'url(#f)' is not supported");
   expect_refused("<svg><g mask='url(#m)'><path" + sq + "/></g></svg>", "mask");
-  expect_refused("<svg><path style='clip-path:url(#c)'" + sq + "/></svg>", "clip-path");
-  expect_refused("<svg><path stroke='red' transform='scale(2 1)'" + sq + "/></svg>", "scales unevenly or skews");
-  expect_refused("<svg><path stroke='red' opacity='.5'" + sq + "/></svg>", "opacity 0.5 on <path> of 2 shapes");
-  expect_refused("<svg><path marker-end='url(#m)'" + sq + "/></svg>", "markers are not supported");
+  expect_refused("<svg><path style='clip-path:inset(1px)'" + sq + "/></svg>",
+                 "clip-path 'inset(1px)' is not supported");
+  expect_refused("<svg><rect id='c'/><path clip-path='url(#c)'" + sq + "/></svg>", "which is not a <clipPath>");
+  expect_refused("<svg><clipPath id='c'><text>a</text></clipPath><path clip-path='url(#c)'" + sq + "/></svg>",
+                 "<text> is not supported");
+  expect_refused("<svg><rect id='m'/><path marker-end='url(#m)'" + sq + "/></svg>", "which is not a <marker>");
+  expect_refused("<svg><marker id='m'/><path marker-mid='url(#m)' d='M0 0 A1 1 0 0 0 2 0 L3 3'/></svg>",
+                 "marker-mid on a path with arcs is not supported");
+  expect_refused(
+      "<svg><marker id='m'><path d='M0 0 L1 1' marker-end='url(#m)'/></marker>"
+      "<path marker-end='url(#m)'" +
+          sq + "/></svg>",
+      "a cycle");
   expect_refused("<svg><pattern id='p'/><path fill='url(#p)'" + sq + "/></svg>", "fill refers to <pattern>");
   expect_refused("<svg><path fill='bluish'" + sq + "/></svg>", "fill 'bluish' is not a colour");
   // Not drawn, as SVG says: metadata, foreign and unknown elements, defs, hidden shapes, no-stroke widths.
@@ -402,6 +414,56 @@ TEST(SvgRender, ShapesTransformsAndUseMatchExactCoverage) {
     const double edge_limit = aa == AntiAliasing::Msaa ? 0.08 : 0.01;
     std::printf("%s: edge %.4f max %.3f ink %.4f\n", name.c_str(), st.edge_mean_abs, st.max_abs, st.ink_ratio);
     test::expect_coverage(name, got, ref, st, edge_limit, aa == AntiAliasing::Msaa ? 0.02 : 0.005);
+  }
+}
+
+// Strokes under a transform that skews and scales unevenly are SVG's: the
+// stroke region of user space mapped through the transform (its width varies
+// with direction). A stroked circle and a square-capped line, in every AA
+// mode, against point sampling of that region (pixels mapped back into user
+// space); and a non-scaling stroke under the same transform, whose width is
+// in device pixels whatever the direction.
+TEST(SvgRender, StrokesUnderASkewAreMappedFromUserSpace) {
+  const double a = 1.2, b = 0.25, c = 0.45, d = 0.75, e = 2, f = 4;  // the group's matrix
+  const ShapeDocument doc = parse_svg(
+      "<svg width='96' height='96' viewBox='0 0 96 96'><g transform='matrix(1.2 0.25 0.45 0.75 2 4)' "
+      "fill='none' stroke='#000'>"
+      "<circle cx='28' cy='36' r='16' stroke-width='7'/>"
+      "<path d='M6 66 L36 88' stroke-width='5' stroke-linecap='square'/>"
+      "<path d='M10 6 L60 16' stroke-width='3' vector-effect='non-scaling-stroke'/></g></svg>");
+  ASSERT_EQ(doc.shapes.size(), 3u);
+  EXPECT_FALSE(doc.shapes[0].stroke->user_to_document.is_identity());
+  // A band of half-width h about the segment p q (square caps reach h past its ends when `square`).
+  auto near_segment = [](Vec2 u, Vec2 p, Vec2 q, double h, bool square) {
+    const double len = distance(p, q);
+    const Vec2 t = (q - p) * (1.0 / len);
+    const Vec2 r = u - p;
+    const double along = r.x * t.x + r.y * t.y, across = std::abs(t.x * r.y - t.y * r.x);
+    const double ext = square ? h : 0.0;
+    return along >= -ext && along <= len + ext && across <= h;
+  };
+  auto inside = [&](double px, double py) {
+    const double k = 1.0 / (a * d - b * c), x = px - e, y = py - f;
+    const Vec2 u{(d * x - c * y) * k, (-b * x + a * y) * k};  // user space
+    const bool ring = std::abs(distance(u, Vec2{28, 36}) - 16) <= 3.5;
+    const bool line = near_segment(u, {6, 66}, {36, 88}, 2.5, true);
+    auto device = [&](Vec2 v) { return Vec2{a * v.x + c * v.y + e, b * v.x + d * v.y + f}; };
+    const bool thin = near_segment({px, py}, device({10, 6}), device({60, 16}), 1.5, false);
+    return ring || line || thin;
+  };
+  ShapeImageOptions options;
+  const ShapeImageLayout layout = layout_shape_image(doc, options);
+  ASSERT_EQ(layout.width, 96);
+  const test::Coverage ref = test::sampled_reference(inside, layout.width, layout.height, 32);
+  for (AntiAliasing aa : {AntiAliasing::Full, AntiAliasing::Vbaa, AntiAliasing::Msaa}) {
+    options.antialiasing = aa;
+    const test::Coverage got =
+        test::coverage_from_black_on_white(render_shape_image(test::gpu().renderer, doc, layout, options));
+    const test::CoverageStats st = test::compare(got, ref);
+    const std::string name = "svg-skewed-strokes-aa" + std::to_string(static_cast<int>(aa));
+    std::printf("%s: edge %.4f max %.3f ink %.4f\n", name.c_str(), st.edge_mean_abs, st.max_abs, st.ink_ratio);
+    test::expect_coverage(name, got, ref, st, aa == AntiAliasing::Msaa ? 0.08 : 0.01,
+                          aa == AntiAliasing::Msaa ? 0.02 : 0.005);
   }
 }
 
@@ -476,6 +538,200 @@ TEST(SvgRender, GradientsArePaintedPerPixel) {
   for (int i = 0; i < 20; ++i)
     many += "<stop offset='" + std::to_string(i / 20.0) + "' stop-color='#" + (i % 2 ? "f00" : "00f") + "'/>";
   expect_refused(many + "</linearGradient><rect width='9' height='9' fill='url(#m)'/></svg>", "20 stops");
+}
+
+// Opacity on a group of overlapping shapes, and on a shape with both fill
+// and stroke, composites them as one layer (SVG): where they overlap the top
+// one shows alone at that opacity, not blended twice. Pixel-aligned shapes,
+// so every pixel has one exact colour over white, in every AA mode; nested
+// groups multiply.
+TEST(SvgRender, GroupOpacityCompositesOneLayer) {
+  const ShapeDocument doc = parse_svg(
+      "<svg width='48' height='40' viewBox='0 0 48 40'>"
+      "<g opacity='0.5'><rect x='4' y='4' width='20' height='14' fill='#f00'/>"
+      "<rect x='14' y='10' width='20' height='14' fill='#00f'/></g>"
+      "<rect x='8' y='28' width='12' height='8' fill='#0f0' stroke='#000' stroke-width='2' opacity='0.5'/>"
+      "<g opacity='0.5'><g opacity='0.5'><rect x='36' y='4' width='8' height='8' fill='#000'/>"
+      "<rect x='36' y='8' width='8' height='8' fill='#000'/></g><rect x='36' y='30' width='4' height='4'/></g>"
+      "</svg>");
+  EXPECT_EQ(doc.shapes.size(), 7u);
+  ASSERT_EQ(doc.groups.size(), 4u);  // the two rectangles, fill and stroke, the outer and the inner group
+  EXPECT_EQ(doc.groups[0].end, 2u);
+  EXPECT_EQ(doc.groups[1].end, 4u);
+  EXPECT_EQ(doc.groups[2].end, 7u);
+  EXPECT_EQ(doc.groups[3].begin, 4u);  // the inner group, after the outer one that holds it
+  EXPECT_EQ(doc.groups[3].end, 6u);
+  auto want = [](int x, int y) -> std::array<double, 3> {
+    auto in = [&](int x0, int y0, int w, int h) { return x >= x0 && x < x0 + w && y >= y0 && y < y0 + h; };
+    if (in(14, 10, 20, 14)) return {0.5, 0.5, 1.0};  // blue on top of red: blue alone at 0.5
+    if (in(4, 4, 20, 14)) return {1.0, 0.5, 0.5};
+    if (in(7, 27, 14, 10) && !in(9, 29, 10, 6)) return {0.5, 0.5, 0.5};  // the stroke hides the fill under it
+    if (in(9, 29, 10, 6)) return {0.5, 1.0, 0.5};
+    if (in(36, 4, 8, 12)) return {0.75, 0.75, 0.75};  // 0.5 * 0.5, once
+    if (in(36, 30, 4, 4)) return {0.5, 0.5, 0.5};
+    return {1.0, 1.0, 1.0};
+  };
+  ShapeImageOptions options;
+  const ShapeImageLayout layout = layout_shape_image(doc, options);
+  ASSERT_EQ(layout.width, 48);
+  for (AntiAliasing aa : {AntiAliasing::Full, AntiAliasing::Vbaa, AntiAliasing::Msaa, AntiAliasing::Auto}) {
+    options.antialiasing = aa;
+    const Image image = render_shape_image(test::gpu().renderer, doc, layout, options);
+    double worst = 0.0;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) {
+        const std::array<double, 3> w = want(x, y);
+        for (int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(image.pixel(x, y)[k] / 255.0 - w[k]));
+      }
+    std::printf("group opacity aa %d: largest difference %.4f\n", static_cast<int>(aa), worst);
+    if (worst > 2.5 / 255)
+      write_png(image, std::string(CURVETEXT_TEST_OUTPUT_DIR) + "/svg-group-opacity-" +
+                           std::to_string(static_cast<int>(aa)) + ".png");
+    EXPECT_LE(worst, 2.5 / 255);  // 8-bit rounding of the layer and of the target
+  }
+  // Each nested group holds a layer the size of the viewport: too deep a nest is refused.
+  std::string deep = "<svg width='8' height='8'>";
+  for (int i = 0; i < 40; ++i) deep += "<g opacity='0.9'><rect width='4' height='4'/>";
+  for (int i = 0; i < 40; ++i) deep += "</g>";
+  const ShapeDocument nested = parse_svg(deep + "</svg>");
+  EXPECT_EQ(nested.groups.size(), 39u);  // the innermost group draws one shape: its alpha
+  try {
+    (void)ShapeDrawing::from_document(nested, 1.0);
+    ADD_FAILURE() << "no error for 39 nested groups";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("nested deeper than 32"), std::string::npos) << e.what();
+  }
+  // Each group is an offscreen pass per draw: too many are refused.
+  std::string many = "<svg width='8' height='8'>";
+  for (int i = 0; i < 4097; ++i)
+    many += "<g opacity='0.5'><rect width='4' height='4'/><rect width='2' height='2'/></g>";
+  const ShapeDocument crowded = parse_svg(many + "</svg>");
+  EXPECT_EQ(crowded.groups.size(), 4097u);
+  EXPECT_THROW((void)ShapeDrawing::from_document(crowded, 1.0), Error);
+}
+
+// clip-path by the coverage of the clip's shapes: a circle clipped by a
+// rectangle (userSpaceOnUse), a group clipped by a circle in its bounding
+// box's units (the ellipse inscribed in it), and a rectangle clipped by an
+// even-odd ring and a <use> of a shape, moved by the clipPath's transform;
+// in every AA mode against point sampling of the intersections. A clip that
+// draws nothing hides the element.
+TEST(SvgRender, ClipPathsMultiplyByTheClipsCoverage) {
+  const ShapeDocument doc = parse_svg(
+      "<svg width='64' height='48' viewBox='0 0 64 48'>"
+      "<clipPath id='a'><rect x='10.3' y='6.6' width='30.2' height='20.5'/></clipPath>"
+      "<clipPath id='b' clipPathUnits='objectBoundingBox'><circle cx='.5' cy='.5' r='.5'/></clipPath>"
+      "<defs><rect id='r' x='30' y='36' width='6' height='6'/></defs>"
+      "<clipPath id='c' transform='translate(2 0)'><path clip-rule='evenodd' d='M4 33h20v10h-20z M8 35h12v6h-12z'/>"
+      "<use href='#r'/></clipPath>"
+      "<clipPath id='empty'/>"
+      "<circle cx='25' cy='18' r='14.5' clip-path='url(#a)'/>"
+      "<g clip-path='url(#b)'><rect x='44' y='4' width='16' height='12'/><rect x='44' y='16' width='16' "
+      "height='12'/></g>"
+      "<rect x='3' y='32.5' width='58' height='12' clip-path='url(#c)'/>"
+      "<rect x='40' y='40' width='20' height='6' clip-path='url(#empty)'/></svg>");
+  ASSERT_EQ(doc.shapes.size(), 4u);
+  ASSERT_EQ(doc.groups.size(), 3u);
+  auto inside = [](double x, double y) {
+    const bool a =
+        (x - 25) * (x - 25) + (y - 18) * (y - 18) < 14.5 * 14.5 && x > 10.3 && x < 40.5 && y > 6.6 && y < 27.1;
+    const double u = (x - 52) / 8, v = (y - 16) / 12;
+    const bool b = u * u + v * v < 1;
+    const bool ring = x > 6 && x < 26 && y > 33 && y < 43 && !(x > 10 && x < 22 && y > 35 && y < 41);
+    const bool used = x > 32 && x < 38 && y > 36 && y < 42;
+    const bool c = (ring || used) && x > 3 && x < 61 && y > 32.5 && y < 44.5;
+    return a || b || c;
+  };
+  ShapeImageOptions options;
+  const ShapeImageLayout layout = layout_shape_image(doc, options);
+  ASSERT_EQ(layout.width, 64);
+  const test::Coverage ref = test::sampled_reference(inside, layout.width, layout.height, 32);
+  for (AntiAliasing aa : {AntiAliasing::Full, AntiAliasing::Vbaa, AntiAliasing::Msaa}) {
+    options.antialiasing = aa;
+    const test::Coverage got =
+        test::coverage_from_black_on_white(render_shape_image(test::gpu().renderer, doc, layout, options));
+    const test::CoverageStats st = test::compare(got, ref);
+    const std::string name = "svg-clip-paths-aa" + std::to_string(static_cast<int>(aa));
+    std::printf("%s: edge %.4f max %.3f ink %.4f\n", name.c_str(), st.edge_mean_abs, st.max_abs, st.ink_ratio);
+    test::expect_coverage(name, got, ref, st, aa == AntiAliasing::Msaa ? 0.08 : 0.01,
+                          aa == AntiAliasing::Msaa ? 0.02 : 0.005);
+  }
+  // A rectangle clipped by a rectangle whose edges meet it only at right angles: every pixel's
+  // coverage is the product of the two (a box's area is the product of its extents), exact
+  // but for 8-bit rounding, against the box (10.5, 4.2)-(20.7, 12.4) computed here.
+  const ShapeDocument boxes = parse_svg(
+      "<svg width='32' height='20' viewBox='0 0 32 20'><clipPath id='k'><rect x='10.5' y='2' width='19.75' "
+      "height='10.4'/></clipPath><rect x='3.3' y='4.2' width='17.4' height='11.4' clip-path='url(#k)'/></svg>");
+  ShapeImageOptions full;
+  const ShapeImageLayout box_layout = layout_shape_image(boxes, full);
+  const test::Coverage got =
+      test::coverage_from_black_on_white(render_shape_image(test::gpu().renderer, boxes, box_layout, full));
+  double worst = 0.0;
+  for (int y = 0; y < got.height; ++y)
+    for (int x = 0; x < got.width; ++x) {
+      const double fx = std::max(0.0, std::min(x + 1.0, 20.7) - std::max(double(x), 10.5));
+      const double fy = std::max(0.0, std::min(y + 1.0, 12.4) - std::max(double(y), 4.2));
+      worst = std::max(worst, std::abs(got.at(x, y) - fx * fy));
+    }
+  std::printf("rectangle clipped by a rectangle: largest difference %.4f\n", worst);
+  EXPECT_LE(worst, 2.5 / 255);
+}
+
+// Markers at a polyline's vertices: a triangle (viewBox 0 0 4 4, refX 0,
+// refY 2) scaled by the stroke width, turned by orient="auto" (the first
+// segment's direction at the start, the bisector at the middle vertex, the
+// last segment's at the end) and by a fixed angle; in every AA mode against
+// point sampling of the placed triangles and the stroke.
+TEST(SvgRender, MarkersArePlacedAtVerticesAndOriented) {
+  const ShapeDocument doc = parse_svg(
+      "<svg width='64' height='48' viewBox='0 0 64 48'>"
+      "<marker id='m' markerWidth='4' markerHeight='4' refY='2' orient='auto' viewBox='0 0 4 4'>"
+      "<path d='M0 0 L4 2 L0 4 z'/></marker>"
+      "<marker id='f' markerWidth='3' markerHeight='3' refX='1.5' refY='1.5' orient='90' markerUnits='userSpaceOnUse'>"
+      "<rect width='3' height='1'/></marker>"
+      "<polyline points='8,40 28,10 56,30' fill='none' stroke='#000' stroke-width='1.5' stroke-linejoin='round' "
+      "marker-start='url(#m)' marker-mid='url(#m)' marker-end='url(#m)'/>"
+      "<line x1='40' y1='44' x2='60' y2='44' stroke='none' marker-end='url(#f)'/></svg>");
+  const Vec2 p0{8, 40}, p1{28, 10}, p2{56, 30};
+  const double a0 = std::atan2(p1.y - p0.y, p1.x - p0.x), a2 = std::atan2(p2.y - p1.y, p2.x - p1.x);
+  struct Placed {
+    Vec2 at;
+    double angle;
+  };
+  const Placed placed[3] = {{p0, a0}, {p1, 0.5 * (a0 + a2)}, {p2, a2}};
+  auto near_segment = [](Vec2 u, Vec2 p, Vec2 q, double h) {
+    const double len = distance(p, q);
+    const Vec2 t = (q - p) * (1.0 / len), r = u - p;
+    const double along = r.x * t.x + r.y * t.y, across = std::abs(t.x * r.y - t.y * r.x);
+    return along >= 0 && along <= len && across <= h;
+  };
+  auto inside = [&](double x, double y) {
+    const Vec2 u{x, y};
+    // The stroke with its round join.
+    bool in = near_segment(u, p0, p1, 0.75) || near_segment(u, p1, p2, 0.75) || distance(u, p1) <= 0.75;
+    for (const Placed& pl : placed) {
+      // Back into the marker's content: unrotate, unscale by the stroke width, add the reference point.
+      const Vec2 d = u - pl.at;
+      const double c = std::cos(pl.angle), s = std::sin(pl.angle);
+      const Vec2 q{(c * d.x + s * d.y) / 1.5, (-s * d.x + c * d.y) / 1.5 + 2};
+      in = in || (q.x >= 0 && q.x <= 4 && std::abs(q.y - 2) <= 0.5 * (4 - q.x));
+    }
+    // The rectangle (0, 0)-(3, 1) less the reference point (1.5, 1.5), turned 90 degrees, at (60, 44).
+    return in || (x >= 60.5 && x <= 61.5 && y >= 42.5 && y <= 45.5);
+  };
+  ShapeImageOptions options;
+  const ShapeImageLayout layout = layout_shape_image(doc, options);
+  const test::Coverage ref = test::sampled_reference(inside, layout.width, layout.height, 32);
+  for (AntiAliasing aa : {AntiAliasing::Full, AntiAliasing::Vbaa, AntiAliasing::Msaa}) {
+    options.antialiasing = aa;
+    const test::Coverage got =
+        test::coverage_from_black_on_white(render_shape_image(test::gpu().renderer, doc, layout, options));
+    const test::CoverageStats st = test::compare(got, ref);
+    const std::string name = "svg-markers-aa" + std::to_string(static_cast<int>(aa));
+    std::printf("%s: edge %.4f max %.3f ink %.4f\n", name.c_str(), st.edge_mean_abs, st.max_abs, st.ink_ratio);
+    test::expect_coverage(name, got, ref, st, aa == AntiAliasing::Msaa ? 0.08 : 0.01,
+                          aa == AntiAliasing::Msaa ? 0.02 : 0.005);
+  }
 }
 
 // The drawing object draws into the framebuffer bound, at any placement:

@@ -15,6 +15,7 @@
 #include "curvetext/tolerances.hpp"
 #include "compose/check_style.hpp"
 #include "core/format.hpp"
+#include "gpu/layers.hpp"
 
 namespace curvetext {
 
@@ -34,7 +35,8 @@ double stroke_reach(const Shape& s) {
   double k = st.cap == LineCap::Square ? std::sqrt(2.0) : 1.0;
   if (st.join == LineJoin::Miter || st.join == LineJoin::MiterClip || st.join == LineJoin::Arcs)
     k = std::max(k, std::max(1.0, st.miter_limit));
-  const double reach = 0.5 * st.width * k;
+  // A stroke built in a user space reaches as far as the map stretches it.
+  const double reach = 0.5 * st.width * k * s.stroke->user_to_document.largest_stretch({0.0, 0.0});
   return std::isfinite(reach) ? reach : 0.0;
 }
 
@@ -155,6 +157,7 @@ struct Layer {
   Color color;
   std::size_t shape;
   const Gradient* gradient = nullptr;  // the fill's, instead of `color`
+  bool overlaps = false;               // meshed in parts whose triangles overlap (a stroke's fallback)
 };
 
 // `part` added to `all` (its vertices renumbered after all's).
@@ -185,26 +188,39 @@ void shape_layers(const Shape& shape, std::size_t index, double tolerance, doubl
     if (!shape.stroke) return;
     // docs/design.md section 8: offsets within tolerance::kStrokeOffsetPx at the drawn scale.
     const double stroke_tolerance = tolerance::kStrokeOffsetPx / px_per_unit;
-    const Outline o = stroke_outline(shape.contours, shape.stroke->style, stroke_tolerance, px_per_unit);
+    const Outline o = stroke_outline_mapped(shape.contours, shape.stroke->style, shape.stroke->user_to_document,
+                                            stroke_tolerance, px_per_unit);
     if (o.empty()) return;
     const Gradient* gradient = shape.stroke_gradient ? &*shape.stroke_gradient : nullptr;
     try {
       out.push_back({relative_to(build_mesh(o, mo), centre, scale), shape.stroke->color, index, gradient});
     } catch (const Error& e) {
       // docs/strokes.md, limits: where the mesher's budget refuses the union
-      // of many crossing subpaths, an opaque stroke is meshed subpath by
-      // subpath into one mesh whose triangles overlap where subpaths cross
-      // (the same pixels, but for the antialiased edges there); a
-      // translucent one would show its overlaps, and is refused.
-      if (e.code() != ErrorCode::Geometry || shape.stroke->color.a < 1.0f || gradient != nullptr ||
-          shape.contours.size() < 2)
-        throw;
+      // of many crossing subpaths, a stroke is meshed subpath by subpath
+      // (and a subpath whose union is refused too, loop by loop: each loop
+      // of a stroke outline is a region of its own) into one mesh whose
+      // triangles overlap. The offscreen AA modes sum its coverage and
+      // clamp it, so it draws the same pixels but for the antialiased edges
+      // where parts cross; the single-pass modes would blend a translucent
+      // one twice there, and refuse it (ShapeDrawing::draw).
+      if (e.code() != ErrorCode::Geometry) throw;
       Mesh all;
       for (const ShapeContour& c : shape.contours) {
-        const Outline one = stroke_outline({c}, shape.stroke->style, stroke_tolerance, px_per_unit);
-        if (!one.empty()) append_mesh(all, build_mesh(one, mo));
+        const Outline one = stroke_outline_mapped({c}, shape.stroke->style, shape.stroke->user_to_document,
+                                                  stroke_tolerance, px_per_unit);
+        if (one.empty()) continue;
+        try {
+          append_mesh(all, build_mesh(one, mo));
+        } catch (const Error& again) {
+          if (again.code() != ErrorCode::Geometry) throw;
+          for (const Contour& loop : one.contours()) {
+            Outline single;
+            single.contours().push_back(loop);
+            append_mesh(all, build_mesh(single, mo));
+          }
+        }
       }
-      out.push_back({relative_to(std::move(all), centre, scale), shape.stroke->color, index});
+      out.push_back({relative_to(std::move(all), centre, scale), shape.stroke->color, index, gradient, true});
     }
   };
   if (shape.paint_order == PaintOrder::StrokeFill) {
@@ -220,14 +236,56 @@ void shape_layers(const Shape& shape, std::size_t index, double tolerance, doubl
 
 // --- ShapeDrawing ---------------------------------------------------------------
 
+namespace {
+
+// Throws Error(InvalidArgument) for groups outside the document, out of
+// order, overlapping without nesting, or with an opacity outside [0, 1].
+void check_groups(const ShapeDocument& doc) {
+  if (doc.groups.size() > tolerance::kMaxShapeGroups)
+    throw Error(ErrorCode::InvalidArgument, "more than " + std::to_string(tolerance::kMaxShapeGroups) +
+                                                " shape groups (opacity, clip paths), each an offscreen pass");
+  std::vector<std::size_t> ends;  // of the groups holding the current one
+  std::size_t last_begin = 0;
+  for (const ShapeGroup& g : doc.groups) {
+    if (g.begin > g.end || g.end > doc.shapes.size() || g.begin < last_begin || !(g.opacity >= 0.0f) ||
+        !(g.opacity <= 1.0f))
+      throw Error(ErrorCode::InvalidArgument,
+                  "a shape group must hold shapes [begin, end) of the document in order, with an opacity in [0, 1]");
+    while (!ends.empty() && ends.back() <= g.begin) ends.pop_back();
+    if (!ends.empty() && g.end > ends.back())
+      throw Error(ErrorCode::InvalidArgument,
+                  "shape groups must nest (two groups overlap without one holding the other)");
+    ends.push_back(g.end);
+    if (ends.size() > tolerance::kMaxShapeGroupDepth)
+      throw Error(ErrorCode::InvalidArgument, "shape groups (opacity, clip paths) nested deeper than " +
+                                                  std::to_string(tolerance::kMaxShapeGroupDepth));
+    last_begin = g.begin;
+  }
+}
+
+}  // namespace
+
 struct ShapeDrawing::Layer {
   DrawBatch batch;
   Color color;
   double side = 0.0;                 // the shape's larger side, document units (for `auto`)
   std::optional<Gradient> gradient;  // from the mesh's units (relative to the centre)
+  std::size_t shape = 0;             // its index in the document (for groups)
+  bool overlaps = false;             // triangles overlap: translucent paint needs an offscreen AA mode
 };
 
-ShapeDrawing::ShapeDrawing() : layers_(std::make_unique<std::vector<Layer>>()) {}
+struct ShapeDrawing::Groups {
+  struct Group {
+    std::size_t begin = 0, end = 0;
+    float opacity = 1.0f;
+    bool clipped = false;     // multiplied by a clip's coverage (clip may be empty: nothing shows)
+    std::vector<Layer> clip;  // fills drawn white into the clip's coverage mask
+  };
+  std::vector<Group> list;
+  gpu::LayerPrograms programs;
+};
+
+ShapeDrawing::ShapeDrawing() : layers_(std::make_unique<std::vector<Layer>>()), groups_(std::make_unique<Groups>()) {}
 ShapeDrawing::ShapeDrawing(ShapeDrawing&&) noexcept = default;
 ShapeDrawing& ShapeDrawing::operator=(ShapeDrawing&&) noexcept = default;
 ShapeDrawing::~ShapeDrawing() = default;
@@ -244,6 +302,7 @@ ShapeDrawing ShapeDrawing::from_document(const ShapeDocument& doc, double px_per
   if (!view.empty()) d.centre_ = 0.5 * (view.min + view.max);
   // docs/design.md section 3: 1/16 px at the scale drawn, in document units.
   const double tolerance = tolerance::kCubicApproximationPx / px_per_unit;
+  check_groups(doc);
   // Meshes first: geometry errors surface before anything is uploaded.
   std::vector<::curvetext::Layer> layers;
   for (std::size_t i = 0; i < doc.shapes.size(); ++i)
@@ -251,8 +310,12 @@ ShapeDrawing ShapeDrawing::from_document(const ShapeDocument& doc, double px_per
   for (const ::curvetext::Layer& l : layers) {
     if (l.mesh.empty()) continue;
     const Box b = shape_box(doc.shapes[l.shape]);
-    Layer out{DrawBatch::from_mesh(l.mesh), l.color, b.empty() ? 0.0 : std::max(b.max.x - b.min.x, b.max.y - b.min.y),
-              std::nullopt};
+    Layer out{DrawBatch::from_mesh(l.mesh),
+              l.color,
+              b.empty() ? 0.0 : std::max(b.max.x - b.min.x, b.max.y - b.min.y),
+              std::nullopt,
+              l.shape,
+              l.overlaps};
     if (l.gradient) {
       // The mesh is relative to the centre: the gradient's map from
       // document coordinates moved with it.
@@ -261,6 +324,24 @@ ShapeDrawing ShapeDrawing::from_document(const ShapeDocument& doc, double px_per
     }
     d.layers_->push_back(std::move(out));
   }
+  for (const ShapeGroup& g : doc.groups) {
+    Groups::Group out{g.begin, g.end, g.opacity, !g.clip.empty(), {}};
+    for (const Shape& c : g.clip) {
+      // The clip's geometry only: its fill, in white, is the coverage.
+      Shape fill = c;
+      fill.filled = true;
+      fill.stroke.reset();
+      fill.gradient.reset();
+      std::vector<::curvetext::Layer> parts;
+      shape_layers(fill, 0, tolerance, px_per_unit, d.centre_, px_per_unit, parts);
+      const Box b = shape_box(fill);
+      for (const ::curvetext::Layer& p : parts)
+        if (!p.mesh.empty())
+          out.clip.push_back(Layer{DrawBatch::from_mesh(p.mesh), Color{1, 1, 1, 1},
+                                   b.empty() ? 0.0 : std::max(b.max.x - b.min.x, b.max.y - b.min.y), std::nullopt, 0});
+    }
+    d.groups_->list.push_back(std::move(out));
+  }
   return d;
 }
 
@@ -268,13 +349,50 @@ void ShapeDrawing::draw(Renderer& renderer, const Placement& at, const DrawOptio
   Placement moved = at;
   moved.origin_x += at.scale * centre_.x;
   moved.origin_y -= at.scale * centre_.y;
-  for (const Layer& l : *layers_) {
+  auto draw_one = [&](const Layer& l) {
     DrawOptions d = options;
     d.color = l.color;
     d.antialiasing = resolve_antialiasing(options.antialiasing, l.side * px_per_unit_);
     d.gradient = l.gradient ? &*l.gradient : nullptr;
+    if (l.overlaps && (l.color.a < 1.0f || l.gradient) &&
+        (d.antialiasing == AntiAliasing::None || d.antialiasing == AntiAliasing::Curves))
+      throw Error(ErrorCode::InvalidArgument,
+                  "a translucent stroke meshed in overlapping parts (the mesher refused its union) is drawn with "
+                  "antialiasing full, vbaa or msaa only");
     renderer.draw(l.batch, moved, d);
+  };
+  const std::vector<Groups::Group>& groups = groups_->list;
+  if (groups.empty()) {
+    for (const Layer& l : *layers_) draw_one(l);
+    return;
   }
+  // Groups open (outer first) as their first mesh comes and close when a
+  // mesh past their end does; groups without meshes are never opened.
+  gpu::LayerStack stack(groups_->programs);
+  std::vector<const Groups::Group*> open;
+  auto close_before = [&](std::size_t shape) {
+    while (!open.empty() && open.back()->end <= shape) {
+      const Groups::Group& g = *open.back();
+      if (g.clipped) {
+        stack.push();
+        for (const Layer& c : g.clip) draw_one(c);
+        stack.apply_mask();
+      }
+      stack.pop(g.opacity);
+      open.pop_back();
+    }
+  };
+  std::size_t next = 0;
+  for (const Layer& l : *layers_) {
+    close_before(l.shape);
+    for (; next < groups.size() && groups[next].begin <= l.shape; ++next)
+      if (groups[next].end > l.shape) {
+        stack.push();
+        open.push_back(&groups[next]);
+      }
+    draw_one(l);
+  }
+  close_before(static_cast<std::size_t>(-1));
 }
 
 Image render_shape_image(Renderer& renderer, const ShapeDocument& doc, const ShapeImageLayout& layout,

@@ -15,4 +15,6 @@ extern const char* const bands_vert_glsl;
 extern const char* const bands_frag_glsl;
 extern const char* const shadow_vert_glsl;
 extern const char* const shadow_frag_glsl;
+extern const char* const layer_vert_glsl;
+extern const char* const layer_frag_glsl;
 }  // namespace curvetext::shader_source

@@ -11,6 +11,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <numbers>
 #include <string>
 #include <unordered_map>
 
@@ -136,18 +137,32 @@ class Reader {
   std::optional<Shape> stroke_shape(const XmlElement& e, const Computed& style, const Affine& m, const Viewport& vp,
                                     const std::vector<ShapeContour>& contours);
   const XmlElement* reference(const XmlElement& e, const std::string& href) const;
-  void check_inside(const XmlElement& e, std::size_t first_shape, const Affine& ctm, double x, double y, double w,
-                    double h) const;
+  bool inside(std::size_t first_shape, const Affine& ctm, double x, double y, double w, double h) const;
+  void clip_to_viewport(std::size_t first, const Affine& m, double x, double y, double w, double h);
+  void markers(const XmlElement& e, const Computed& style, const Affine& m, const Viewport& vp,
+               const std::vector<ShapeContour>& contours);
+  void marker(std::size_t k, const MarkerVertex& v, bool at_start, double stroke_width, const Affine& m,
+              const Viewport& vp);
+  std::vector<std::size_t> marker_stack_;
   Color color_value(const XmlElement& e, const std::string& value) const;
-  void fade(const XmlElement& e, std::size_t first_shape, double opacity);
+  void fade(std::size_t first_shape, double opacity);
+  ShapeGroup& group(std::size_t first_shape);
+  void clip(const XmlElement& e, const std::string& value, const Affine& m, const Viewport& vp,
+            std::size_t first_shape);
+  std::size_t clip_path_element(const XmlElement& e, const std::string& value) const;
+  void clip_child(std::size_t c, const Computed& parent, const Affine& m, const Viewport& vp, std::vector<Shape>& out);
+  Computed computed_at(std::size_t i) const;
+  void drop_from(std::size_t first_shape);
 
-  // Draws through `draw`, then applies the element's opacity to what it drew.
+  // Draws through `draw`, then applies the element's clip-path and opacity
+  // to what it drew; `m` is the element's user space (clip-path's).
   template <class Draw>
-  void with_opacity(const XmlElement& e, const Computed& style, Draw draw) {
+  void with_opacity(const XmlElement& e, const Computed& style, const Affine& m, const Viewport& vp, Draw draw) {
     const double opacity = unit_value(e, "opacity", style[kOpacity]);
     const std::size_t first = out_.shapes.size();
     draw();
-    fade(e, first, opacity);
+    if (style[kClipPath] != "none") clip(e, style[kClipPath], m, vp, first);
+    fade(first, opacity);
   }
 };
 
@@ -197,7 +212,12 @@ ShapeDocument Reader::run() {
   const Computed style = compute(initial_style(kCallerColor), specified_[0]);
   if (style[kDisplay] == "none") return std::move(out_);
   check_unsupported(root, style);
-  with_opacity(root, style, [&] { children(0, style, mirror * user, vp); });
+  with_opacity(root, style, mirror * user, vp, [&] { children(0, style, mirror * user, vp); });
+  // Groups were made innermost first; drawn outer first (ShapeDocument::groups).
+  std::reverse(out_.groups.begin(), out_.groups.end());
+  std::stable_sort(out_.groups.begin(), out_.groups.end(), [](const ShapeGroup& a, const ShapeGroup& b) {
+    return a.begin != b.begin ? a.begin < b.begin : a.end > b.end;
+  });
   return std::move(out_);
 }
 
@@ -223,7 +243,7 @@ void Reader::element(std::size_t i, const Computed& parent, const Affine& ctm, c
         fail(doc_.elements[c], "<" + doc_.elements[c].name + "> is not supported");
     return shape(i, style, m, vp);
   }
-  with_opacity(e, style, [&] { children(i, style, m, vp); });
+  with_opacity(e, style, m, vp, [&] { children(i, style, m, vp); });
 }
 
 void Reader::children(std::size_t i, const Computed& style, const Affine& ctm, const Viewport& vp) {
@@ -231,19 +251,137 @@ void Reader::children(std::size_t i, const Computed& style, const Affine& ctm, c
 }
 
 // Opacity on what one element drew: exact for one shape (its alpha); a
-// group of several is one layer composited at that opacity, which shapes
-// drawn one by one cannot show where they overlap: refused.
-void Reader::fade(const XmlElement& e, std::size_t first_shape, double opacity) {
+// group of several (or a shape's fill and stroke) is one layer composited
+// at that opacity (ShapeGroup), so that they do not show through each other.
+void Reader::fade(std::size_t first_shape, double opacity) {
   const std::size_t n = out_.shapes.size() - first_shape;
   if (opacity == 1.0 || n == 0) return;
-  if (n > 1)
-    fail(e, "opacity " + shapes_detail::number_text(opacity) + " on <" + e.name + "> of " + std::to_string(n) +
-                " shapes is not supported (a group's opacity needs a layer); set it on each shape");
-  scale_alpha(out_.shapes.back(), static_cast<float>(opacity));
+  if (n == 1) return scale_alpha(out_.shapes.back(), static_cast<float>(opacity));
+  group(first_shape).opacity *= static_cast<float>(opacity);
+}
+
+// The group of shapes [first_shape, end): one made already with that range
+// (an element inside another with nothing else: their opacities multiply,
+// and an opacity and a clip of one range commute), else a new one.
+ShapeGroup& Reader::group(std::size_t first_shape) {
+  const std::size_t end = out_.shapes.size();
+  for (ShapeGroup& g : out_.groups)
+    if (g.begin == first_shape && g.end == end) return g;
+  out_.groups.push_back(ShapeGroup{first_shape, end, 1.0f, {}});
+  return out_.groups.back();
+}
+
+Computed Reader::computed_at(std::size_t i) const {
+  if (i == 0) return compute(initial_style(kCallerColor), specified_[0]);
+  return compute(computed_at(doc_.elements[i].parent), specified_[i]);
+}
+
+// What the element drew from first_shape on is not rendered (an empty clip).
+void Reader::drop_from(std::size_t first_shape) {
+  out_.shapes.erase(out_.shapes.begin() + static_cast<std::ptrdiff_t>(first_shape), out_.shapes.end());
+  std::erase_if(out_.groups, [&](const ShapeGroup& g) { return g.begin >= first_shape; });
+}
+
+// The <clipPath> `value` names; 0 where the reference names nothing (no
+// clip, as CSS Masking says). Refuses anything else by name.
+std::size_t Reader::clip_path_element(const XmlElement& e, const std::string& value) const {
+  const std::string v = trim(value);
+  if (!lower(v).starts_with("url(") || v.back() != ')') fail(e, "clip-path '" + value + "' is not supported");
+  std::string ref = trim(std::string_view(v).substr(4, v.size() - 5));
+  if (ref.size() >= 2 && (ref.front() == '"' || ref.front() == '\'')) ref = ref.substr(1, ref.size() - 2);
+  const XmlElement* target = reference(e, ref);
+  if (!target) return 0;
+  if (target->name != "clipPath") fail(e, "clip-path refers to <" + target->name + ">, which is not a <clipPath>");
+  return static_cast<std::size_t>(target - doc_.elements.data());
+}
+
+// SVG's clip-path on what an element drew (shapes [first_shape, end)): the
+// union of the <clipPath>'s shapes, each with its clip-rule, in the
+// element's user space `m` (or its bounding box's, objectBoundingBox), as a
+// ShapeGroup's clip.
+void Reader::clip(const XmlElement& e, const std::string& value, const Affine& m, const Viewport& vp,
+                  std::size_t first_shape) {
+  if (out_.shapes.size() == first_shape) return;
+  const std::size_t c = clip_path_element(e, value);
+  if (c == 0) return;
+  const XmlElement& ce = doc_.elements[c];
+  const Computed style = computed_at(c);
+  if (style[kClipPath] != "none") fail(ce, "clip-path on a <clipPath> is not supported");
+  Affine cm = m;
+  if (const std::string* t = ce.find("transform")) cm = m * parse_transform(*t, position(ce));
+  const std::string* units = ce.find("clipPathUnits");
+  const std::string u = units ? trim(*units) : "userSpaceOnUse";
+  if (u == "objectBoundingBox") {
+    // The bounding box of the element's geometry in its user space.
+    const Affine back = m.inverse();
+    std::vector<ShapeContour> user;
+    for (std::size_t i = first_shape; i < out_.shapes.size(); ++i)
+      for (ShapeContour k : out_.shapes[i].contours) {
+        for (RationalBezier& piece : k.pieces)
+          for (Vec2& q : piece.points) q = back.apply(q);
+        user.push_back(std::move(k));
+      }
+    const Box b = tight_box(user);
+    const double w = b.max.x - b.min.x, h = b.max.y - b.min.y;
+    if (b.empty() || !(w > 0.0) || !(h > 0.0)) return drop_from(first_shape);
+    cm = m * Affine{w, 0, 0, h, b.min.x, b.min.y};
+    if (const std::string* t = ce.find("transform")) cm = cm * parse_transform(*t, position(ce));
+  } else if (u != "userSpaceOnUse") {
+    fail(ce, "clipPathUnits '" + *units + "' is not userSpaceOnUse or objectBoundingBox");
+  }
+  std::vector<Shape> shapes;
+  for (std::size_t k : ce.children) clip_child(k, style, cm, vp, shapes);
+  if (shapes.empty()) return drop_from(first_shape);  // an empty clip shows nothing
+  ShapeGroup& g = group(first_shape);
+  if (!g.clip.empty()) {  // clipped twice: the inner clip's group, inside a new one
+    out_.groups.push_back(ShapeGroup{first_shape, out_.shapes.size(), 1.0f, {}});
+    out_.groups.back().clip = std::move(shapes);
+    return;
+  }
+  g.clip = std::move(shapes);
+}
+
+// One child of a <clipPath>: a shape, or a <use> of one, as a fill with its
+// clip-rule. Other elements do not clip (SVG); text is refused.
+void Reader::clip_child(std::size_t c, const Computed& parent, const Affine& m, const Viewport& vp,
+                        std::vector<Shape>& out) {
+  const XmlElement& k = doc_.elements[c];
+  if (k.name.starts_with("{")) return;
+  if (refused_element(k.name)) fail(k, "<" + k.name + "> is not supported");
+  if (k.name != "use" && !is_shape_element(k.name)) return;
+  Computed style = compute(parent, specified_[c]);
+  Affine km = m;
+  if (const std::string* t = k.find("transform")) km = m * parse_transform(*t, position(k));
+  const XmlElement* shape = &k;
+  if (k.name == "use") {
+    const std::string* href = k.find("href");
+    if (!href) href = k.find("xlink:href");
+    shape = href ? reference(k, *href) : nullptr;
+    if (!shape) return;
+    if (!is_shape_element(shape->name))
+      fail(k, "<use> in a <clipPath> must refer to a shape, not <" + shape->name + ">");
+    const std::size_t t = static_cast<std::size_t>(shape - doc_.elements.data());
+    km = km * Affine::translate(parse_length(k.find("x") ? *k.find("x") : "0", Axis::X, vp).value_or(0),
+                                parse_length(k.find("y") ? *k.find("y") : "0", Axis::Y, vp).value_or(0));
+    if (const std::string* t2 = shape->find("transform")) km = km * parse_transform(*t2, position(*shape));
+    if (style[kClipPath] != "none") fail(k, "clip-path on <clipPath> content is not supported");
+    style = compute(style, specified_[t]);
+  }
+  if (style[kDisplay] == "none" || style[kVisibility] != "visible") return;
+  if (style[kClipPath] != "none") fail(*shape, "clip-path on <clipPath> content is not supported");
+  if (!(std::abs(km.determinant()) > 0.0) || !std::isfinite(km.determinant())) return;
+  Shape s;
+  try {
+    s.fill_rule = parse_fill_rule(style[kClipRule]);
+  } catch (const Error& err) {
+    fail(*shape, err.what());
+  }
+  s.contours = placed(*shape, element_geometry(*shape, vp), km, true);
+  if (!s.contours.empty()) out.push_back(std::move(s));
 }
 
 void Reader::check_unsupported(const XmlElement& e, const Computed& style) const {
-  for (int p : {kClipPath, kMask, kFilter})
+  for (int p : {kMask, kFilter})
     if (style[p] != "none") fail(e, std::string(prop_name(p)) + " '" + style[p] + "' is not supported");
   if (style[kMixBlendMode] != "normal") fail(e, "mix-blend-mode '" + style[kMixBlendMode] + "' is not supported");
   if (style[kTransformProperty] != "none")
@@ -272,7 +410,7 @@ void Reader::use(std::size_t i, const Computed& style, const Affine& m, const Vi
   const Affine placed = m * Affine::translate(parse_length(e.find("x") ? *e.find("x") : "0", Axis::X, vp).value_or(0),
                                               parse_length(e.find("y") ? *e.find("y") : "0", Axis::Y, vp).value_or(0));
   use_stack_.push_back(t);
-  with_opacity(e, style, [&] {
+  with_opacity(e, style, m, vp, [&] {
     if (target->name == "symbol" || target->name == "svg") {
       const Computed own = compute(style, specified_[t]);
       if (own[kDisplay] == "none") return;
@@ -311,13 +449,31 @@ void Reader::viewport_element(std::size_t t, const XmlElement& sizing, const Com
     inner_vp = {(*box)[2], (*box)[3]};
   }
   const std::size_t first = out_.shapes.size();
-  with_opacity(v, style, [&] { children(t, style, inner, inner_vp); });
+  with_opacity(v, style, m, vp, [&] { children(t, style, inner, inner_vp); });
   const std::optional<std::string>& overflow = specified_[t][kOverflow];
-  if (!overflow || (*overflow != "visible" && *overflow != "auto")) check_inside(v, first, m, x, y, w, h);
+  if (!overflow || (*overflow != "visible" && *overflow != "auto")) clip_to_viewport(first, m, x, y, w, h);
 }
 
-void Reader::check_inside(const XmlElement& e, std::size_t first_shape, const Affine& ctm, double x, double y, double w,
-                          double h) const {
+// A viewport clips what reaches outside it: a clip of its rectangle
+// (x, y, w, h) in user space `m` on shapes [first_shape, end), where any
+// reaches out.
+void Reader::clip_to_viewport(std::size_t first, const Affine& m, double x, double y, double w, double h) {
+  if (inside(first, m, x, y, w, h)) return;
+  Shape r;
+  ShapeContour k;
+  const Vec2 c[4] = {m.apply({x, y}), m.apply({x + w, y}), m.apply({x + w, y + h}), m.apply({x, y + h})};
+  for (int j = 0; j < 4; ++j) k.pieces.push_back(RationalBezier::line(c[j], c[(j + 1) % 4]));
+  r.contours.push_back(std::move(k));
+  ShapeGroup& g = group(first);
+  if (g.clip.empty())
+    g.clip.push_back(std::move(r));
+  else
+    out_.groups.push_back(ShapeGroup{first, out_.shapes.size(), 1.0f, {std::move(r)}});
+}
+
+// Whether shapes [first_shape, end) lie inside the viewport (x, y, w, h) of
+// user space `ctm` (within a flatness slack).
+bool Reader::inside(std::size_t first_shape, const Affine& ctm, double x, double y, double w, double h) const {
   const Affine back = ctm.inverse();
   const double slack = tolerance::kConicFlatnessRelative * std::max(w, h);
   for (std::size_t s = first_shape; s < out_.shapes.size(); ++s)
@@ -325,11 +481,9 @@ void Reader::check_inside(const XmlElement& e, std::size_t first_shape, const Af
       for (const RationalBezier& piece : c.pieces)
         for (Vec2 p : piece.points) {
           const Vec2 q = back.apply(p);
-          if (q.x < x - slack || q.x > x + w + slack || q.y < y - slack || q.y > y + h + slack)
-            fail(e, "<" + e.name +
-                        "> content reaches outside its viewport, which clips it; clipping is not "
-                        "supported (overflow=\"visible\" draws it unclipped)");
+          if (q.x < x - slack || q.x > x + w + slack || q.y < y - slack || q.y > y + h + slack) return false;
         }
+  return true;
 }
 
 Color Reader::color_value(const XmlElement& e, const std::string& value) const {
@@ -427,7 +581,7 @@ std::optional<Shape> Reader::stroke_shape(const XmlElement& e, const Computed& s
                                           const Viewport& vp, const std::vector<ShapeContour>& contours) {
   const PaintRef stroke = paint(e, style, kStroke);
   if (stroke.none()) return std::nullopt;
-  const std::optional<StrokeStyle> st = stroke_style(e, style, m, vp);
+  std::optional<ShapeStroke> st = stroke_style(e, style, m, vp);
   if (!st) return std::nullopt;
   // The paint is set as a fill's, then moved to the stroke.
   Shape paint_of;
@@ -436,7 +590,8 @@ std::optional<Shape> Reader::stroke_shape(const XmlElement& e, const Computed& s
   if (!set_paint(paint_of, stroke, e, contours, m, vp, alpha)) return std::nullopt;
   Shape s;
   s.filled = false;
-  s.stroke = ShapeStroke{*st, paint_of.color};
+  st->color = paint_of.color;
+  s.stroke = std::move(*st);
   s.stroke_gradient = std::move(paint_of.gradient);
   s.contours = placed(e, contours, m, false);
   if (s.contours.empty()) return std::nullopt;
@@ -461,15 +616,12 @@ std::optional<Shape> Reader::fill_shape(const XmlElement& e, const Computed& sty
 }
 
 // Fill and stroke as two shapes in paint order. With opacity below 1 the
-// element is one layer of both, which is refused where both draw (fade).
+// element is one layer of both where both draw (fade).
 void Reader::shape(std::size_t i, const Computed& style, const Affine& m, const Viewport& vp) {
   const XmlElement& e = doc_.elements[i];
   if (style[kVisibility] != "visible") return;
   const std::vector<ShapeContour> contours = element_geometry(e, vp);
   if (contours.empty()) return;
-  if (e.name != "rect" && e.name != "circle" && e.name != "ellipse")
-    for (int p : {kMarkerStart, kMarkerMid, kMarkerEnd})
-      if (style[p] != "none") fail(e, std::string(prop_name(p)) + " '" + style[p] + "': markers are not supported");
   const double opacity = unit_value(e, "opacity", style[kOpacity]);
   Computed opaque = style;
   opaque[kOpacity] = "1";  // applied once, by fade, to what the element drew
@@ -480,7 +632,105 @@ void Reader::shape(std::size_t i, const Computed& style, const Affine& m, const 
   if (stroke && stroke_first) out_.shapes.push_back(std::move(*stroke));
   if (fill) out_.shapes.push_back(std::move(*fill));
   if (stroke && !stroke_first) out_.shapes.push_back(std::move(*stroke));
-  fade(e, first, opacity);
+  if (e.name != "rect" && e.name != "circle" && e.name != "ellipse") markers(e, style, m, vp, contours);
+  if (style[kClipPath] != "none") clip(e, style[kClipPath], m, vp, first);
+  fade(first, opacity);
+}
+
+// marker-start, marker-mid and marker-end, drawn over the fill and stroke
+// (paint-order's markers last).
+void Reader::markers(const XmlElement& e, const Computed& style, const Affine& m, const Viewport& vp,
+                     const std::vector<ShapeContour>& contours) {
+  if (style[kMarkerStart] == "none" && style[kMarkerMid] == "none" && style[kMarkerEnd] == "none") return;
+  const std::vector<MarkerVertex> vertices = marker_vertices(contours);
+  if (vertices.empty()) return;
+  const std::optional<double> width = parse_length(style[kStrokeWidth], Axis::Other, vp);
+  if (!width) fail(e, "stroke-width '" + style[kStrokeWidth] + "' is not a length");
+  for (int p : {kMarkerStart, kMarkerMid, kMarkerEnd}) {
+    if (style[p] == "none") continue;
+    const std::string v = trim(style[p]);
+    const std::string name = prop_name(p);
+    if (!lower(v).starts_with("url(") || v.back() != ')') fail(e, name + " '" + style[p] + "' is not supported");
+    std::string ref = trim(std::string_view(v).substr(4, v.size() - 5));
+    if (ref.size() >= 2 && (ref.front() == '"' || ref.front() == '\'')) ref = ref.substr(1, ref.size() - 2);
+    const XmlElement* target = reference(e, ref);
+    if (!target) continue;  // names nothing: no marker
+    if (target->name != "marker") fail(e, name + " refers to <" + target->name + ">, which is not a <marker>");
+    // Arcs are cut into several conics, whose joins are no vertices of the path.
+    if (p == kMarkerMid && e.name == "path" && e.find("d") && e.find("d")->find_first_of("Aa") != std::string::npos)
+      fail(e, "marker-mid on a path with arcs is not supported");
+    const std::size_t k = static_cast<std::size_t>(target - doc_.elements.data());
+    // The path's first and last marker take the direction out and in alone
+    // (as librsvg, also where a subpath is closed).
+    if (p == kMarkerStart) {
+      MarkerVertex first = vertices.front();
+      first.angle = first.out_angle;
+      marker(k, first, true, *width, m, vp);
+    }
+    if (p == kMarkerMid)
+      for (std::size_t j = 1; j + 1 < vertices.size(); ++j) marker(k, vertices[j], false, *width, m, vp);
+    if (p == kMarkerEnd) {
+      MarkerVertex last = vertices.back();
+      last.angle = last.in_angle;
+      marker(k, last, false, *width, m, vp);
+    }
+  }
+}
+
+// One marker's content at vertex `v` of a path in user space `m`: its
+// viewBox in markerWidth x markerHeight, (refX, refY) on the vertex, turned
+// by orient, scaled by the stroke width (markerUnits strokeWidth), clipped
+// by its viewport unless overflow is visible.
+void Reader::marker(std::size_t k, const MarkerVertex& v, bool at_start, double stroke_width, const Affine& m,
+                    const Viewport& vp) {
+  const XmlElement& mk = doc_.elements[k];
+  if (std::find(marker_stack_.begin(), marker_stack_.end(), k) != marker_stack_.end())
+    fail(mk, "<marker> is drawn inside itself (a cycle)");
+  if (marker_stack_.size() >= kMaxUseDepth) fail(mk, "markers nested deeper than " + std::to_string(kMaxUseDepth));
+  auto length = [&](const char* name, Axis axis, const char* fallback) {
+    const std::string* s = mk.find(name);
+    const std::optional<double> l = parse_length(s ? *s : fallback, axis, vp);
+    if (!l) fail(mk, std::string(name) + " '" + *s + "' is not a length");
+    return *l;
+  };
+  const double w = length("markerWidth", Axis::X, "3"), h = length("markerHeight", Axis::Y, "3");
+  if (!(w > 0.0) || !(h > 0.0)) return;
+  const std::string* units = mk.find("markerUnits");
+  const std::string u = units ? trim(*units) : "strokeWidth";
+  if (u != "strokeWidth" && u != "userSpaceOnUse") fail(mk, "markerUnits '" + *units + "' is not supported");
+  const double scale = u == "strokeWidth" ? stroke_width : 1.0;
+  if (!(scale > 0.0)) return;  // scaled to nothing
+  const std::string* orient = mk.find("orient");
+  const std::string o = orient ? trim(*orient) : "0";
+  double angle = v.angle;
+  if (o == "auto-start-reverse") {
+    if (at_start) angle += std::numbers::pi;
+  } else if (o != "auto") {
+    const std::string deg = o.ends_with("deg") ? o.substr(0, o.size() - 3) : o;
+    double a = 0.0;
+    const auto [end, ec] = std::from_chars(deg.data(), deg.data() + deg.size(), a);
+    if (ec != std::errc() || end != deg.data() + deg.size() || !std::isfinite(a))
+      fail(mk, "orient '" + *orient + "' is not auto, auto-start-reverse or an angle in degrees");
+    angle = a * std::numbers::pi / 180.0;
+  }
+  Affine box;  // content to the marker's viewport
+  Viewport inner{w, h};
+  if (const auto b = parse_view_box(mk)) {
+    const std::string* aspect = mk.find("preserveAspectRatio");
+    box = view_box_transform(*b, aspect ? *aspect : "", 0, 0, w, h, position(mk));
+    inner = {(*b)[2], (*b)[3]};
+  }
+  const Vec2 ref = box.apply({length("refX", Axis::X, "0"), length("refY", Axis::Y, "0")});
+  const double c = std::cos(angle), s = std::sin(angle);
+  const Affine port = m * Affine::translate(v.at.x, v.at.y) * Affine{c, s, -s, c, 0, 0} * Affine::scale(scale, scale) *
+                      Affine::translate(-ref.x, -ref.y);
+  const Computed style = computed_at(k);
+  const std::size_t first = out_.shapes.size();
+  marker_stack_.push_back(k);
+  children(k, style, port * box, inner);
+  marker_stack_.pop_back();
+  const std::optional<std::string>& overflow = specified_[k][kOverflow];
+  if (!overflow || (*overflow != "visible" && *overflow != "auto")) clip_to_viewport(first, port, 0, 0, w, h);
 }
 
 }  // namespace

@@ -54,13 +54,28 @@ std::optional<Gradient> make_gradient(const GradientSource& source, std::size_t 
 
 // The element's stroke geometry from its computed style (stroke-width,
 // -linejoin, -linecap, -miterlimit, -dasharray, -dashoffset, pathLength,
-// vector-effect), in document units: user-space lengths times the uniform
-// scale of `m`. nullopt when the width is 0 or less (no stroke). Throws
-// Error(InvalidArgument) with the element's position for a malformed value
-// or a user-space stroke under a transform that is not a similarity (a
-// stroke's width would vary with direction there).
-std::optional<StrokeStyle> stroke_style(const XmlElement& e, const Computed& style, const Affine& m,
+// vector-effect), its colour left to the caller: in document units
+// (user-space lengths times the uniform scale of `m`) where `m` is a
+// similarity; otherwise in user space with user_to_document set to `m`.
+// nullopt when the width is 0 or less (no stroke). Throws
+// Error(InvalidArgument) with the element's position for a malformed value.
+std::optional<ShapeStroke> stroke_style(const XmlElement& e, const Computed& style, const Affine& m,
                                         const Viewport& vp);
+
+// A vertex of a path where a marker goes, in the path's user space, and
+// the angle (radians, from +x towards +y) that orient="auto" gives it; the
+// directions in and out alone (each the other where it is missing).
+struct MarkerVertex {
+  Vec2 at;
+  double angle = 0.0;
+  double in_angle = 0.0, out_angle = 0.0;
+};
+// Every vertex of the contours in order (each piece's start, each
+// subpath's end, and a closed subpath's closing vertex), oriented as SVG
+// says: the bisector of the directions in and out; the direction out at an
+// open subpath's start and in at its end; a closed subpath's first and last
+// vertex bisect its closing segment and its first one.
+std::vector<MarkerVertex> marker_vertices(const std::vector<ShapeContour>& contours);
 
 // The tight bounding box of the contours (extremes of each piece found by
 // sampling and refining to double precision).

@@ -49,7 +49,7 @@ std::vector<double> dash_array(const XmlElement& e, const std::string& text, con
 
 }  // namespace
 
-std::optional<StrokeStyle> stroke_style(const XmlElement& e, const Computed& style, const Affine& m,
+std::optional<ShapeStroke> stroke_style(const XmlElement& e, const Computed& style, const Affine& m,
                                         const Viewport& vp) {
   StrokeStyle st;
   st.width = length_value(e, "stroke-width", style[kStrokeWidth], vp);
@@ -91,17 +91,26 @@ std::optional<StrokeStyle> stroke_style(const XmlElement& e, const Computed& sty
     // Device pixels of the root viewport as drawn (SVG's host coordinates).
     if (!st.dashes.empty()) fail(e, "dashes with vector-effect: non-scaling-stroke are not supported");
     st.width_unit = StrokeWidthUnit::Device;
-    return st;
+    ShapeStroke out;
+    out.style = st;
+    return out;
   }
   if (style[kVectorEffect] != "none") fail(e, "vector-effect '" + style[kVectorEffect] + "' is not supported");
   const std::optional<double> scale = similarity_scale(m);
-  if (!scale)
-    fail(e, "a stroke under a transform that scales unevenly or skews is not supported (its width would vary)");
+  if (!scale) {
+    // SVG strokes in user space: built there and mapped (stroke_outline_mapped).
+    ShapeStroke out;
+    out.style = st;
+    out.user_to_document.m = {m.a, m.c, m.e, m.b, m.d, m.f, 0.0, 0.0, 1.0};
+    return out;
+  }
   st.width *= *scale;
   for (double& d : st.dashes) d *= *scale;
   st.dash_offset *= *scale;
   st.path_length *= *scale;
-  return st;
+  ShapeStroke out;
+  out.style = st;
+  return out;
 }
 
 }  // namespace curvetext::svg

@@ -41,7 +41,10 @@ class CURVETEXT_API ShapeDrawing {
   // framebuffer's viewport pixels as Renderer::draw does (x_px = at.scale x
   // + at.origin_x, y_px = at.origin_y - at.scale y, then at.transform), with
   // at's depth, depth offset and depth test. Each shape in its own colour
-  // or gradient (options.color is not used); antialiasing (`auto` resolved
+  // or gradient (options.color is not used); groups (ShapeGroup) drawn into
+  // offscreen layers the size of the bound viewport, multiplied by their
+  // clip's coverage and composited at their opacity (those composites are
+  // not depth-tested); antialiasing (`auto` resolved
   // per shape), curve mode, vbaa filter, gamma and the debug view from
   // `options`. Draw at the scale it was built for. Renderer::draw's GL state
   // contract holds. Throws as Renderer::draw.
@@ -53,8 +56,10 @@ class CURVETEXT_API ShapeDrawing {
 
  private:
   struct Layer;
+  struct Groups;  // layered groups (ShapeGroup): ranges, opacities, clip meshes, the compositing program
   ShapeDrawing();
   std::unique_ptr<std::vector<Layer>> layers_;
+  std::unique_ptr<Groups> groups_;
   Vec2 centre_{0, 0};
   double px_per_unit_ = 1.0;
 };

@@ -13,6 +13,7 @@
 // type or a pure function (thread-safe, export.hpp).
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -24,6 +25,7 @@
 #include "curvetext/outline.hpp"
 #include "curvetext/paint.hpp"
 #include "curvetext/stroke_style.hpp"
+#include "curvetext/transform.hpp"
 
 namespace curvetext {
 
@@ -61,6 +63,12 @@ struct ShapeContour {
 struct ShapeStroke {
   StrokeStyle style;
   Color color{0, 0, 0, 1};
+  // Where the style's lengths are in a user space other than document units
+  // (an SVG element's transform that scales unevenly or skews): the affine
+  // map from it to document units. The stroke is then built in user space
+  // and mapped (stroke_outline_mapped in stroke.hpp). Identity: document
+  // units.
+  Transform user_to_document;
 };
 
 // SVG paint-order for what shapes have: fill then stroke (the default), or
@@ -81,9 +89,23 @@ struct Shape {
   std::optional<Gradient> stroke_gradient;
 };
 
+// Shapes drawn as one layer, then composited (SVG's group opacity and
+// clip-path): shapes [begin, end) of the document are drawn into an
+// offscreen layer, which is multiplied by the coverage of `clip` (when it
+// has shapes: the union of their fills, colours unused) and composited
+// source-over at `opacity`. Groups nest: two groups' ranges are disjoint or
+// one holds the other.
+struct ShapeGroup {
+  std::size_t begin = 0, end = 0;
+  float opacity = 1.0f;
+  std::vector<Shape> clip;
+};
+
 // Coordinates are y-up (SVG's y-down input is mirrored when read).
 struct ShapeDocument {
   std::vector<Shape> shapes;
+  // Sorted by begin, a group before the groups it holds.
+  std::vector<ShapeGroup> groups;
   // The region to draw, in document units, y-up. Empty: the control box of
   // every shape.
   Box view;
@@ -177,8 +199,9 @@ CURVETEXT_API std::vector<ShapeContour> parse_svg_path(std::string_view d);
 // An SVG document: the static subset icons and drawings use (docs/svg.md):
 // shapes and paths, transforms, viewBox, <use>/<symbol>/<defs>, the CSS
 // cascade of <style> sheets, style and presentation attributes, colours,
-// opacity. Every part it does not draw (strokes, gradients, filters, text,
-// ...) is refused by name with its line and column, never dropped.
+// gradients, strokes, opacity and clip paths (ShapeGroup), markers. Every
+// part it does not draw (filters, masks, text, ...) is refused by name with
+// its line and column, never dropped.
 struct SvgOptions {
   // The value of `currentColor` where the document does not set `color`
   // (icon themes leave it to the toolkit: its text colour).

@@ -46,6 +46,7 @@
 #include "curvetext/shapes.hpp"
 #include "curvetext/stroke_style.hpp"
 #include "curvetext/tolerances.hpp"
+#include "curvetext/transform.hpp"
 
 namespace curvetext {
 
@@ -97,5 +98,21 @@ class CURVETEXT_API Stroker {
 // A Stroker's stroke into a new Outline.
 CURVETEXT_API Outline stroke_outline(const std::vector<ShapeContour>& contours, const StrokeStyle& style,
                                      double tolerance, double px_per_unit = 1.0);
+
+// The stroke of `contours` (document units) whose style is in a user space
+// that `user_to_document` (affine and invertible: an SVG element's transform
+// that scales unevenly or skews) maps into document units, as SVG defines
+// strokes: the contours are mapped back into user space, stroked there, and
+// the stroke's outline mapped forward. Both maps are exact (affine maps keep
+// lines lines and conics conics), so the width varies with direction as the
+// map says. The offsets are fitted within tolerance / (the map's largest
+// stretch) in user space, so within `tolerance` after the map. Device and
+// hairline widths are not user-space lengths: they are stroked in document
+// units as stroke_outline does. Throws stroke_outline's errors and
+// Error(InvalidArgument) for a map that is not affine, finite and invertible
+// (Transform::validate).
+CURVETEXT_API Outline stroke_outline_mapped(const std::vector<ShapeContour>& contours, const StrokeStyle& style,
+                                            const Transform& user_to_document, double tolerance,
+                                            double px_per_unit = 1.0);
 
 }  // namespace curvetext

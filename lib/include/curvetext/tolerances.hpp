@@ -165,6 +165,14 @@ inline constexpr std::size_t kMaxMarkupDepth = 64;
 inline constexpr std::size_t kMaxShapeFileBytes = std::size_t{64} << 20;
 inline constexpr std::size_t kMaxSegmentsPerPath = std::size_t{1} << 16;
 inline constexpr std::size_t kMaxSegmentsPerDocument = std::size_t{1} << 18;
+// Shape groups (ShapeGroup: group opacity, clip paths) nested deeper than
+// this are refused: each open group holds an offscreen layer the size of
+// the viewport (and a clip one more while its mask is drawn).
+inline constexpr std::size_t kMaxShapeGroupDepth = 32;
+// More shape groups than this in one document are refused: each is an
+// offscreen pass over the whole viewport per draw (markers clipped by their
+// viewport on a path of many vertices make one each).
+inline constexpr std::size_t kMaxShapeGroups = 4096;
 
 // --- Colour glyphs (color_glyph.hpp) -------------------------------------------
 // A COLR v1 paint graph nested deeper than this (paints within paints,
