@@ -31,17 +31,31 @@ vec4 texel(int i) {
 }
 
 // The conic (p0, c, p2) with weights 1, w, 1 at t, homogeneous (x w, y w, w).
+// Where a block's pieces are all parabolas (w = 1: every TrueType and CFF
+// glyph) the program is compiled without CURVETEXT_CONICS, and the
+// weights, divisions and the segment ratio's closed forms drop out: a
+// software rasteriser runs both sides of a branch, so they would cost every
+// piece.
 vec3 conic_at(vec2 p0, vec2 c, vec2 p2, float w, float t) {
   float a = 1.0 - t;
   float b0 = a * a;
+#if CURVETEXT_CONICS
   float b1 = 2.0 * t * a * w;
   float b2 = t * t;
   return vec3(b0 * p0 + b1 * c + b2 * p2, b0 + b1 + b2);
+#else
+  float b1 = 2.0 * t * a;
+  return vec3(b0 * p0 + b1 * c + t * t * p2, 1.0);
+#endif
 }
 
 float y_at(vec2 p0, vec2 c, vec2 p2, float w, float t) {
   vec3 h = conic_at(p0, c, p2, w, t);
+#if CURVETEXT_CONICS
   return h.y / h.z;
+#else
+  return h.y;
+#endif
 }
 
 // Where a coordinate (a0, a1, a2 at p0, c, p2), monotone along the piece,
@@ -66,6 +80,9 @@ float crossing(float a0, float a1, float a2, float w, float level) {
 // control triangle's (a circle's or hyperbola's segment, affinely; the
 // series in 1 - w near the parabola's 2/3, where the closed forms cancel).
 float segment_ratio(float w) {
+#if !CURVETEXT_CONICS
+  return 2.0 / 3.0;
+#else
   float e = 1.0 - w;
   if (abs(e) < 0.05) return 2.0 / 3.0 - e * (4.0 / 15.0 + e * (6.0 / 35.0 + e * (32.0 / 315.0 + e * 40.0 / 693.0)));
   if (w < 1.0) {
@@ -74,6 +91,7 @@ float segment_ratio(float w) {
   }
   float s = sqrt((w - 1.0) * (w + 1.0));
   return w * (w * s - log(w + s)) / (s * s * s);
+#endif
 }
 
 // The integral of x dy along the arc between t0 and t1: the chord's, plus
@@ -86,11 +104,18 @@ float arc_x_dy(vec2 p0, vec2 c, vec2 p2, float w, float t0, float t1) {
   float k1 = ((1.0 - t0) * t1 + t0 * (1.0 - t1)) * w;
   float k2 = t0 * t1;
   vec3 h1 = vec3(k0 * p0 + k1 * c + k2 * p2, k0 + k1 + k2);
+#if CURVETEXT_CONICS
   vec2 a = h0.xy / h0.z;
   vec2 b = h2.xy / h2.z;
   vec2 m = h1.xy / h1.z - a;
-  vec2 ab = b - a;
   float ws = h1.z / sqrt(h0.z * h2.z);
+#else
+  vec2 a = h0.xy;
+  vec2 b = h2.xy;
+  vec2 m = h1.xy - a;
+  float ws = 1.0;
+#endif
+  vec2 ab = b - a;
   return 0.5 * (a.x + b.x) * ab.y + segment_ratio(ws) * 0.5 * (m.x * ab.y - m.y * ab.x);
 }
 
@@ -115,26 +140,6 @@ float piece_area(vec2 p0, vec2 c, vec2 p2, float w) {
     sum += arc_x_dy(p0, c, p2, w, m0, m1) + 0.5 * (y_at(p0, c, p2, w, m1) - y_at(p0, c, p2, w, m0));
   }
   return sum;
-}
-
-// A straight piece p -> q: the integral of clamp(x + 1/2, 0, 1) dy over its
-// part within the rows, the mean of the clamped width between its clipped
-// ends (exact: the width is linear in y along a line), written with
-// differences so that a short piece keeps its digits.
-float line_area(vec2 p, vec2 q) {
-  float y0 = clamp(p.y, -0.5, 0.5);
-  float y1 = clamp(q.y, -0.5, 0.5);
-  float dy = q.y - p.y;
-  float inv = dy != 0.0 ? 1.0 / dy : 0.0;
-  float x0 = p.x + (q.x - p.x) * clamp((y0 - p.y) * inv, 0.0, 1.0) + 0.5;
-  float x1 = p.x + (q.x - p.x) * clamp((y1 - p.y) * inv, 0.0, 1.0) + 0.5;
-  float lo = min(x0, x1);
-  float hi = max(x0, x1);
-  float cl = clamp(lo, 0.0, 1.0);
-  float ch = clamp(hi, 0.0, 1.0);
-  float integral = 0.5 * (ch + cl) * (ch - cl) + max(hi - max(lo, 1.0), 0.0);
-  float len = hi - lo;
-  return (y1 - y0) * (len > 0.0 ? clamp(integral / len, 0.0, 1.0) : cl);
 }
 
 void main() {
@@ -177,11 +182,7 @@ void main() {
     vec4 b = texel(piece + 1);
     vec2 p0 = (a.xy - v_local) * scale;
     vec2 p2 = (b.xy - v_local) * scale;
-    if (b.w > 0.5) {
-      sum += line_area(p0, p2);
-    } else {
-      sum += piece_area(p0, (a.zw - v_local) * scale, p2, b.z);
-    }
+    sum += piece_area(p0, (a.zw - v_local) * scale, p2, b.z);
   }
   float coverage = clamp(sum, 0.0, 1.0);
   if (coverage <= 0.0) discard;

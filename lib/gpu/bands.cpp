@@ -283,6 +283,7 @@ void add_entries(const std::vector<BandPiece>& pieces, std::size_t piece_texel, 
 void build_bands(const Mesh& mesh, GlyphBands& out, BandScratch& scratch) {
   out.texels.clear();
   out.levels = 0;
+  out.conics = false;
   out.pieces = out.entries = 0;
   std::vector<BandPiece>& pieces = scratch.pieces;
   boundary_pieces(mesh, pieces);
@@ -299,6 +300,7 @@ void build_bands(const Mesh& mesh, GlyphBands& out, BandScratch& scratch) {
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     const BandPiece& p = pieces[i];
     const auto f = [](double v) { return static_cast<float>(v); };
+    out.conics = out.conics || f(p.w) != 1.0f;
     out.texels[piece_texel + 2 * i] = {f(p.p0.x), f(p.p0.y), f(p.c.x), f(p.c.y)};
     out.texels[piece_texel + 2 * i + 1] = {f(p.p2.x), f(p.p2.y), f(p.w), is_line(p) ? 1.0f : 0.0f};
   }

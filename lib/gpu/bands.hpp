@@ -72,8 +72,9 @@ inline constexpr int kMaxBandLevels = 5;
 
 struct GlyphBands {
   std::vector<std::array<float, 4>> texels;
-  Box box;         // of the pieces, in the float values the texels and instances carry
-  int levels = 0;  // 0: nothing to draw
+  Box box;              // of the pieces, in the float values the texels and instances carry
+  int levels = 0;       // 0: nothing to draw
+  bool conics = false;  // a piece has a middle weight other than 1 (the shader's CURVETEXT_CONICS)
   std::size_t pieces = 0, entries = 0;
   bool empty() const { return levels == 0; }
   std::size_t bytes() const { return texels.size() * sizeof(texels[0]); }
