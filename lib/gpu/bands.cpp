@@ -278,6 +278,94 @@ void add_entries(const std::vector<BandPiece>& pieces, std::size_t piece_texel, 
     });
 }
 
+// The side of the square the grids divide: the box's larger side (square
+// cells, so that a narrow glyph's cells are as large as a wide one's).
+double grid_side(const Box& box) { return std::max(box.max.x - box.min.x, box.max.y - box.min.y); }
+
+// The texel of grid g's first cell, from the first cell texel.
+constexpr int grid_offset(int g) { return ((1 << (2 * g)) - (1 << (2 * kGridMinLog2))) / 96; }
+
+// The finest grid (n x n cells of side `cell`): cells a piece reaches are
+// marked 2; each other cell 1 or 0 by the winding number
+// at its centre: the pieces crossing its row's centre line right of it,
+// upward +1 and downward -1 (fill on the left; half-open in y, so an end
+// shared by two pieces counts once). A crossing in a cell makes it a 2, so
+// a row's crossings are counted per column and summed from the right.
+void mark_cells(const std::vector<BandPiece>& pieces, const Box& box, int n, BandScratch& scratch) {
+  std::vector<std::uint8_t>& cells = scratch.cells;
+  std::vector<int>& delta = scratch.delta;  // per row, per column: the crossings' signs
+  const auto size = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
+  cells.assign(size, 0);
+  delta.assign(size, 0);
+  const double cell = grid_side(box) / n;
+  const auto index = [n](double v) { return std::clamp(static_cast<int>(std::floor(v)), 0, n - 1); };
+  for (const BandPiece& p : pieces) {
+    // In cell units: y0 <= y1 the piece's heights; x_at(y) where it reaches y.
+    const auto cy = [&](double y) { return (y - box.min.y) / cell; };
+    const double y0 = cy(std::min(p.p0.y, p.p2.y)), y1 = cy(std::max(p.p0.y, p.p2.y));
+    const auto x_at = [&](double y) {
+      if (!(y1 > y0)) return ((y > y0 ? std::max(p.p0.x, p.p2.x) : std::min(p.p0.x, p.p2.x)) - box.min.x) / cell;
+      const double t = monotone_crossing(p.p0.y, p.c.y, p.p2.y, p.w, box.min.y + std::clamp(y, y0, y1) * cell);
+      return (at(p, t).point().x - box.min.x) / cell;
+    };
+    // Each row the piece reaches (with a margin of 1/64 cell, more than the
+    // shader's rounding of a box's cells): the columns between its x at the
+    // row's ends (monotone in x and y).
+    constexpr double kMargin = 1.0 / 64;
+    double x_lo = x_at(std::floor(y0 - kMargin) - kMargin);
+    for (int r = index(y0 - kMargin); r <= index(y1 + kMargin); ++r) {
+      const double x_hi = x_at(r + 1 + kMargin);
+      const int c0 = index(std::min(x_lo, x_hi) - kMargin), c1 = index(std::max(x_lo, x_hi) + kMargin);
+      for (int c = c0; c <= c1; ++c) cells[static_cast<std::size_t>(r * n + c)] = 2;
+      x_lo = x_at(r + 1 - kMargin);
+    }
+    // The row centres r + 1/2 in [y0, y1): the piece crosses each once.
+    const int sign = p.p2.y > p.p0.y ? 1 : -1;
+    for (int r = std::max(0, static_cast<int>(std::ceil(y0 - 0.5))); r < n && r + 0.5 < y1; ++r)
+      delta[static_cast<std::size_t>(r * n + index(x_at(r + 0.5)))] += sign;
+  }
+  for (int r = 0; r < n; ++r) {
+    int winding = 0;  // of the crossings right of column c
+    for (int c = n - 1; c >= 0; --c) {
+      const auto i = static_cast<std::size_t>(r * n + c);
+      if (cells[i] != 2) cells[i] = winding != 0 ? 1 : 0;
+      winding += delta[i];
+    }
+  }
+}
+
+// Grid n / 2 from grid n: a cell is 0 or 1 where its four are, else 2.
+void halve_cells(std::vector<std::uint8_t>& cells, int n) {
+  const int h = n / 2;
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < h; ++c) {
+      const auto at = [&](int rr, int cc) { return cells[static_cast<std::size_t>(rr * n + cc)]; };
+      const std::uint8_t a = at(2 * r, 2 * c), b = at(2 * r, 2 * c + 1), d = at(2 * r + 1, 2 * c),
+                         e = at(2 * r + 1, 2 * c + 1);
+      cells[static_cast<std::size_t>(r * h + c)] = a == b && a == d && a == e ? a : 2;
+    }
+  cells.resize(static_cast<std::size_t>(h) * static_cast<std::size_t>(h));
+}
+
+// The cell grids (layout: bands.hpp), appended to the texels: the finest
+// marked, each coarser one from the one below it.
+void add_grids(const std::vector<BandPiece>& pieces, GlyphBands& out, BandScratch& scratch) {
+  if (!(out.box.max.x > out.box.min.x)) return;
+  const std::size_t first = out.texels.size();
+  out.texels.resize(first + static_cast<std::size_t>(grid_offset(kGridMaxLog2 + 1)), {0.0f, 0.0f, 0.0f, 0.0f});
+  mark_cells(pieces, out.box, 1 << kGridMaxLog2, scratch);
+  for (int g = kGridMaxLog2; g >= kGridMinLog2; --g) {
+    if (g < kGridMaxLog2) halve_cells(scratch.cells, 2 << g);
+    std::array<float, 4>* texels = out.texels.data() + first + grid_offset(g);
+    for (std::size_t i = 0; i < scratch.cells.size(); i += 8) {
+      unsigned bits = 0;
+      for (std::size_t k = 0; k < 8; ++k) bits |= static_cast<unsigned>(scratch.cells[i + k]) << (2 * k);
+      texels[i / 32][(i / 8) % 4] = static_cast<float>(bits);
+    }
+  }
+  out.texels[0][2] = static_cast<float>(first);
+}
+
 }  // namespace
 
 void build_bands(const Mesh& mesh, GlyphBands& out, BandScratch& scratch) {
@@ -315,6 +403,7 @@ void build_bands(const Mesh& mesh, GlyphBands& out, BandScratch& scratch) {
     out.texels.push_back(t);
   }
   out.texels[0] = {static_cast<float>(entry_texel), static_cast<float>(ref_texel), 0.0f, 0.0f};
+  add_grids(pieces, out, scratch);
 }
 
 double box_coverage(std::span<const BandPiece> pieces, Vec2 centre, Vec2 half) {
@@ -334,8 +423,37 @@ int band_level(const GlyphBands& bands, double half_y) {
   return std::clamp(level, 0, bands.levels - 1);
 }
 
+int cell_state(const GlyphBands& bands, int g, int column, int row) {
+  const int n = 1 << g;
+  if (column < 0 || row < 0 || column >= n || row >= n) return 0;
+  const int i = row * n + column;
+  const auto first = static_cast<std::size_t>(bands.texels[0][2]) + static_cast<std::size_t>(grid_offset(g));
+  const auto bits = static_cast<unsigned>(bands.texels[first + static_cast<std::size_t>(i / 32)][(i / 8) % 4]);
+  return static_cast<int>((bits >> (2 * (i % 8))) & 3u);
+}
+
+int grid_state(const GlyphBands& bands, Vec2 centre, Vec2 half) {
+  if (bands.empty() || bands.texels[0][2] == 0.0f) return 2;
+  const Box& b = bands.box;
+  const double w = grid_side(b), h = w;
+  // The finest grid whose cells are at least the box (both ways).
+  const double ratio = w / (2.0 * std::max(half.x, half.y)) / 1.0001;
+  if (!(ratio >= (1 << kGridMinLog2))) return 2;
+  const int g = std::min(static_cast<int>(std::floor(std::log2(ratio))), kGridMaxLog2);
+  const double n = 1 << g;
+  const auto cell = [&](double v, double lo, double size) { return static_cast<int>(std::floor((v - lo) * n / size)); };
+  const int c0 = cell(centre.x - half.x, b.min.x, w), c1 = cell(centre.x + half.x, b.min.x, w);
+  const int r0 = cell(centre.y - half.y, b.min.y, h), r1 = cell(centre.y + half.y, b.min.y, h);
+  if (c1 - c0 > 1 || r1 - r0 > 1) return 2;
+  const int s00 = cell_state(bands, g, c0, r0), s01 = cell_state(bands, g, c1, r0);
+  const int s10 = cell_state(bands, g, c0, r1), s11 = cell_state(bands, g, c1, r1);
+  const int lo = std::min({s00, s01, s10, s11}), hi = std::max({s00, s01, s10, s11});
+  return hi == 0 ? 0 : lo == 1 && hi == 1 ? 1 : 2;
+}
+
 double band_box_coverage(const GlyphBands& bands, Vec2 centre, Vec2 half) {
   if (bands.empty()) return 0.0;
+  if (const int state = grid_state(bands, centre, half); state != 2) return state;
   const int level = band_level(bands, half.y);
   const int n = 1 << level;
   const double h = (bands.box.max.y - bands.box.min.y) / n;

@@ -7,7 +7,8 @@
 //
 // Texel layout of one glyph, from its first texel (RGBA32F, a row-major
 // texture kBandTextureWidth texels wide; offsets relative to that texel):
-//   texel 0: (first entry texel E, first reference texel R, 0, 0).
+//   texel 0: (first entry texel E, first reference texel R, first cell
+//            texel G, 0); G = 0: no cell grids.
 //   headers: band b (level L, band k: b = 2^L - 1 + k, L = 0..levels-1) in
 //            texel 1 + b / 2, components 2 (b % 2) and 2 (b % 2) + 1: (its
 //            first entry j, relative to E, and its entry count).
@@ -23,6 +24,15 @@
 //            pixel (such pieces add nothing, below); a piece wholly right of
 //            it adds its height within the rows, read from the entry alone.
 //   refs:    entry j's piece texel in component j % 4 of texel R + j / 4.
+//   cells:   grids of 2^g x 2^g square cells over the square of the box's
+//            larger side from its lower left corner, g = kGridMinLog2 ..
+//            kGridMaxLog2, each cell 0 (wholly outside the glyph), 1 (wholly
+//            inside) or 2 (a piece's bounds reach it), 2 bits; cell i = row
+//            n + column of grid g from texel G + (4^g - 4^kGridMinLog2) / 96:
+//            bits 2 (i % 8) of component (i / 8) % 4 of texel i / 32. A
+//            pixel box within cells all 0 or all 1 has coverage 0 or 1,
+//            exactly, without the loop over its band (most pixels of a
+//            large glyph).
 // Level L has 2^L bands; with H = (box height) / 2^L, band k holds the pieces
 // that reach into [y0 + k H, y0 + (k + 2) H]: overlapping bands, so a pixel
 // row at most H tall lies wholly in band floor((row's bottom - y0) / H).
@@ -41,6 +51,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "curvetext/geometry.hpp"
@@ -69,6 +80,10 @@ inline constexpr int kBandTextureWidthLog2 = 10;
 inline constexpr int kBandTextureWidth = 1 << kBandTextureWidthLog2;
 // Most levels a glyph's bands have (2^kMaxBandLevels - 1 bands in all).
 inline constexpr int kMaxBandLevels = 5;
+// The cell grids: 8 x 8 to 32 x 32 cells (a pixel reads the finest whose
+// cells are at least its size; 42 texels in all).
+inline constexpr int kGridMinLog2 = 3;
+inline constexpr int kGridMaxLog2 = 5;
 
 struct GlyphBands {
   std::vector<std::array<float, 4>> texels;
@@ -85,6 +100,8 @@ struct BandScratch {
   std::vector<BandPiece> pieces;
   std::vector<std::uint32_t> order, refs, next;
   std::vector<std::array<float, 4>> entries;
+  std::vector<std::uint8_t> cells;
+  std::vector<int> delta;
 };
 
 void build_bands(const Mesh& mesh, GlyphBands& out, BandScratch& scratch);
@@ -113,5 +130,10 @@ double box_coverage(std::span<const BandPiece> pieces, Vec2 centre, Vec2 half);
 double band_box_coverage(const GlyphBands& bands, Vec2 centre, Vec2 half);
 // The level a box of half-height `half_y` reads (the shader's choice).
 int band_level(const GlyphBands& bands, double half_y);
+// The state of the cells under the box (0: all outside, 1: all inside, 2:
+// the loop decides), as the shader reads them.
+int grid_state(const GlyphBands& bands, Vec2 centre, Vec2 half);
+// The state of cell (column, row) of grid g as packed (0 beyond the grid).
+int cell_state(const GlyphBands& bands, int g, int column, int row);
 
 }  // namespace curvetext::gpu

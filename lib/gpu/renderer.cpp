@@ -91,11 +91,13 @@ void compile(const Shader& shader, GLenum type, const char* source, bool gles, c
 
 // The band shaders (bands.vert/frag.glsl) are GLSL ES 3.00 / desktop 3.30
 // (texelFetch, integer operations, flat varyings); the preamble is only the
-// #version line and the band texture's width.
+// #version line, the band texture's width and the cell grids' sizes.
 void compile_glsl3(const Shader& shader, GLenum type, const char* source, bool gles, const std::string& defines) {
-  char width[96];
-  std::snprintf(width, sizeof width, "#define CURVETEXT_BAND_WIDTH %d\n#define CURVETEXT_BAND_WIDTH_LOG2 %d\n",
-                gpu::kBandTextureWidth, gpu::kBandTextureWidthLog2);
+  char width[192];
+  std::snprintf(width, sizeof width,
+                "#define CURVETEXT_BAND_WIDTH %d\n#define CURVETEXT_BAND_WIDTH_LOG2 %d\n"
+                "#define CURVETEXT_GRID_MIN_LOG2 %d\n#define CURVETEXT_GRID_MAX_LOG2 %d\n",
+                gpu::kBandTextureWidth, gpu::kBandTextureWidthLog2, gpu::kGridMinLog2, gpu::kGridMaxLog2);
   compile_text(shader, type,
                std::string(gles ? "#version 300 es\n" : "#version 330 core\n") + width + defines + source);
 }
