@@ -207,21 +207,41 @@ void main() {
     sum = float(state);
     count = 0;
   }
-  for (int j = start; j < start + count; ++j) {
-    vec4 e = texel(entry_texel + j);  // (largest x, smallest x, y of p0, y of p2)
-    if (e.x < left) break;
-    if (max(e.z, e.w) < row_lo || min(e.z, e.w) > row_hi) continue;
-    if (e.y >= right) {
-      // Wholly right of the box: its height within the rows (monotone in y).
-      sum += clamp((e.w - v_local.y) * scale.y, -0.5, 0.5) - clamp((e.z - v_local.y) * scale.y, -0.5, 0.5);
-      continue;
+  // The entries in runs of 24: a cheap pass sums the pieces wholly right
+  // of the box and marks those across it in a mask; the exact area then
+  // runs over the marked ones only (about one per pixel), so lanes of a
+  // SIMD group that wait for each other wait on the cheap pass.
+  int end = start + count;
+  for (int run = start; run < end; run += 24) {
+    uint marked = 0u;
+    bool done = false;
+    int stop = min(run + 24, end);
+    for (int j = run; j < stop; ++j) {
+      vec4 e = texel(entry_texel + j);  // (largest x, smallest x, y of p0, y of p2)
+      if (e.x < left) {
+        done = true;
+        break;
+      }
+      if (max(e.z, e.w) < row_lo || min(e.z, e.w) > row_hi) continue;
+      if (e.y >= right) {
+        // Wholly right of the box: its height within the rows (monotone in y).
+        sum += clamp((e.w - v_local.y) * scale.y, -0.5, 0.5) - clamp((e.z - v_local.y) * scale.y, -0.5, 0.5);
+      } else {
+        marked |= 1u << uint(j - run);
+      }
     }
-    int piece = first + int(texel(ref_texel + (j >> 2))[j & 3]);
-    vec4 a = texel(piece);
-    vec4 b = texel(piece + 1);
-    vec2 p0 = (a.xy - v_local) * scale;
-    vec2 p2 = (b.xy - v_local) * scale;
-    sum += piece_area(p0, (a.zw - v_local) * scale, p2, b.z);
+    while (marked != 0u) {
+      uint lowest = marked & (~marked + 1u);
+      marked ^= lowest;
+      int j = run + int(round(log2(float(lowest))));  // a power of two below 2^24: exact
+      int piece = first + int(texel(ref_texel + (j >> 2))[j & 3]);
+      vec4 a = texel(piece);
+      vec4 b = texel(piece + 1);
+      vec2 p0 = (a.xy - v_local) * scale;
+      vec2 p2 = (b.xy - v_local) * scale;
+      sum += piece_area(p0, (a.zw - v_local) * scale, p2, b.z);
+    }
+    if (done) break;
   }
   float coverage = clamp(sum, 0.0, 1.0);
   if (coverage <= 0.0) discard;
