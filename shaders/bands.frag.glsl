@@ -142,11 +142,12 @@ float piece_area(vec2 p0, vec2 c, vec2 p2, float w) {
   return sum;
 }
 
-// Cell (column, row) of the n x n grid from texel `base`: 0 wholly outside,
-// 1 wholly inside, 2 reached by a piece (layout: lib/gpu/bands.hpp).
-int cell_state(int base, int n, int column, int row) {
-  if (column < 0 || row < 0 || column >= n || row >= n) return 0;
-  int i = row * n + column;
+// The cells column - 1 .. column, row - 1 .. row of the n x n grid whose
+// blocks start at texel `base`: 0 all wholly outside, 1 all wholly inside, 2
+// otherwise (layout: lib/gpu/bands.hpp).
+int block_state(int base, int n, int column, int row) {
+  if (column < 0 || row < 0 || column > n || row > n) return 0;
+  int i = row * (n + 1) + column;
   float bits = texel(base + (i >> 5))[(i >> 3) & 3];
   return (int(bits) >> (2 * (i & 7))) & 3;
 }
@@ -154,26 +155,19 @@ int cell_state(int base, int n, int column, int row) {
 // The cells under the pixel's box in the finest grid whose cells are at
 // least the box: 0 all outside, 1 all inside (the coverage, exactly), 2
 // otherwise (the loop decides).
-int grid_state(int first, int grid, float left, float right, float row_lo, float row_hi) {
+int grid_state(int first, int grid, float left, float row_lo) {
   if (grid == 0) return 2;
-  vec2 box = v_rect.zw - v_rect.xy;
-  vec2 size = vec2(max(box.x, box.y));  // the grids' square
-  float ratio = size.x / (2.0 * max(u_half.x, u_half.y)) / 1.0001;
+  float side = max(v_rect.z - v_rect.x, v_rect.w - v_rect.y);  // the grids' square
+  float ratio = side / (2.0 * max(u_half.x, u_half.y)) / 1.0001;
   if (!(ratio >= float(1 << CURVETEXT_GRID_MIN_LOG2))) return 2;
   int g = min(int(floor(log2(ratio))), CURVETEXT_GRID_MAX_LOG2);
   int n = 1 << g;
-  vec2 k = float(n) / size;
-  ivec2 c0 = ivec2(floor((vec2(left, row_lo) - v_rect.xy) * k));
-  ivec2 c1 = ivec2(floor((vec2(right, row_hi) - v_rect.xy) * k));
-  if (c1.x - c0.x > 1 || c1.y - c0.y > 1) return 2;
-  int base = first + grid + ((1 << (2 * g)) - (1 << (2 * CURVETEXT_GRID_MIN_LOG2))) / 96;
-  int s00 = cell_state(base, n, c0.x, c0.y);
-  int s01 = cell_state(base, n, c1.x, c0.y);
-  int s10 = cell_state(base, n, c0.x, c1.y);
-  int s11 = cell_state(base, n, c1.x, c1.y);
-  int lo = min(min(s00, s01), min(s10, s11));
-  int hi = max(max(s00, s01), max(s10, s11));
-  return hi == 0 ? 0 : (lo == 1 && hi == 1 ? 1 : 2);
+  int base = first + grid;
+  for (int k = CURVETEXT_GRID_MIN_LOG2; k < g; ++k) base += (((1 << k) + 1) * ((1 << k) + 1) + 31) / 32;
+  // The box's lower left cell; the box, no larger than a cell, lies in the
+  // block of that cell and the three above and right of it.
+  ivec2 c0 = ivec2(floor((vec2(left, row_lo) - v_rect.xy) * (float(n) / side)));
+  return block_state(base, n, c0.x + 1, c0.y + 1);
 }
 
 void main() {
@@ -202,7 +196,7 @@ void main() {
   int count = int(entries.y);
   vec2 scale = 0.5 / u_half;
   float sum = 0.0;
-  int state = grid_state(first, int(regions.z), left, right, row_lo, row_hi);
+  int state = grid_state(first, int(regions.z), left, row_lo);
   if (state != 2) {
     sum = float(state);
     count = 0;

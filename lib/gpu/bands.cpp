@@ -282,8 +282,10 @@ void add_entries(const std::vector<BandPiece>& pieces, std::size_t piece_texel, 
 // cells, so that a narrow glyph's cells are as large as a wide one's).
 double grid_side(const Box& box) { return std::max(box.max.x - box.min.x, box.max.y - box.min.y); }
 
-// The texel of grid g's first cell, from the first cell texel.
-constexpr int grid_offset(int g) { return ((1 << (2 * g)) - (1 << (2 * kGridMinLog2))) / 96; }
+// The texels of grid g's blocks, (2^g + 1)^2 of 2 bits; the first of grid g,
+// from the first cell texel.
+constexpr int grid_texels(int g) { return (((1 << g) + 1) * ((1 << g) + 1) + 31) / 32; }
+constexpr int grid_offset(int g) { return g <= kGridMinLog2 ? 0 : grid_offset(g - 1) + grid_texels(g - 1); }
 
 // The finest grid (n x n cells of side `cell`): cells a piece reaches are
 // marked 2; each other cell 1 or 0 by the winding number
@@ -357,11 +359,18 @@ void add_grids(const std::vector<BandPiece>& pieces, GlyphBands& out, BandScratc
   for (int g = kGridMaxLog2; g >= kGridMinLog2; --g) {
     if (g < kGridMaxLog2) halve_cells(scratch.cells, 2 << g);
     std::array<float, 4>* texels = out.texels.data() + first + grid_offset(g);
-    for (std::size_t i = 0; i < scratch.cells.size(); i += 8) {
-      unsigned bits = 0;
-      for (std::size_t k = 0; k < 8; ++k) bits |= static_cast<unsigned>(scratch.cells[i + k]) << (2 * k);
-      texels[i / 32][(i / 8) % 4] = static_cast<float>(bits);
-    }
+    const int n = 1 << g;
+    const auto cell = [&](int c, int r) {
+      return c < 0 || r < 0 || c >= n || r >= n ? 0 : scratch.cells[static_cast<std::size_t>(r * n + c)];
+    };
+    for (int r = 0; r <= n; ++r)
+      for (int c = 0; c <= n; ++c) {
+        const int a = cell(c - 1, r - 1), b = cell(c, r - 1), d = cell(c - 1, r), e = cell(c, r);
+        const unsigned state = a == b && a == d && a == e ? static_cast<unsigned>(a) : 2u;
+        const int i = r * (n + 1) + c;
+        float& bits = texels[i / 32][(i / 8) % 4];
+        bits = static_cast<float>(static_cast<unsigned>(bits) | state << (2 * (i % 8)));
+      }
   }
   out.texels[0][2] = static_cast<float>(first);
 }
@@ -423,10 +432,10 @@ int band_level(const GlyphBands& bands, double half_y) {
   return std::clamp(level, 0, bands.levels - 1);
 }
 
-int cell_state(const GlyphBands& bands, int g, int column, int row) {
+int block_state(const GlyphBands& bands, int g, int column, int row) {
   const int n = 1 << g;
-  if (column < 0 || row < 0 || column >= n || row >= n) return 0;
-  const int i = row * n + column;
+  if (column < 0 || row < 0 || column > n || row > n) return 0;
+  const int i = row * (n + 1) + column;
   const auto first = static_cast<std::size_t>(bands.texels[0][2]) + static_cast<std::size_t>(grid_offset(g));
   const auto bits = static_cast<unsigned>(bands.texels[first + static_cast<std::size_t>(i / 32)][(i / 8) % 4]);
   return static_cast<int>((bits >> (2 * (i % 8))) & 3u);
@@ -445,10 +454,7 @@ int grid_state(const GlyphBands& bands, Vec2 centre, Vec2 half) {
   const int c0 = cell(centre.x - half.x, b.min.x, w), c1 = cell(centre.x + half.x, b.min.x, w);
   const int r0 = cell(centre.y - half.y, b.min.y, h), r1 = cell(centre.y + half.y, b.min.y, h);
   if (c1 - c0 > 1 || r1 - r0 > 1) return 2;
-  const int s00 = cell_state(bands, g, c0, r0), s01 = cell_state(bands, g, c1, r0);
-  const int s10 = cell_state(bands, g, c0, r1), s11 = cell_state(bands, g, c1, r1);
-  const int lo = std::min({s00, s01, s10, s11}), hi = std::max({s00, s01, s10, s11});
-  return hi == 0 ? 0 : lo == 1 && hi == 1 ? 1 : 2;
+  return block_state(bands, g, c0 + 1, r0 + 1);  // the cells c0 .. c0 + 1, r0 .. r0 + 1
 }
 
 double band_box_coverage(const GlyphBands& bands, Vec2 centre, Vec2 half) {

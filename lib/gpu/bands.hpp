@@ -24,15 +24,18 @@
 //            pixel (such pieces add nothing, below); a piece wholly right of
 //            it adds its height within the rows, read from the entry alone.
 //   refs:    entry j's piece texel in component j % 4 of texel R + j / 4.
-//   cells:   grids of 2^g x 2^g square cells over the square of the box's
-//            larger side from its lower left corner, g = kGridMinLog2 ..
-//            kGridMaxLog2, each cell 0 (wholly outside the glyph), 1 (wholly
-//            inside) or 2 (a piece's bounds reach it), 2 bits; cell i = row
-//            n + column of grid g from texel G + (4^g - 4^kGridMinLog2) / 96:
-//            bits 2 (i % 8) of component (i / 8) % 4 of texel i / 32. A
-//            pixel box within cells all 0 or all 1 has coverage 0 or 1,
-//            exactly, without the loop over its band (most pixels of a
-//            large glyph).
+//   cells:   grids of n x n square cells (n = 2^g, g = kGridMinLog2 ..
+//            kGridMaxLog2) over the square of the box's larger side from its
+//            lower left corner, each cell 0 (wholly outside the glyph), 1
+//            (wholly inside) or 2 (a piece reaches it); stored per block of
+//            2 x 2 cells, (column - 1 .. column, row - 1 .. row), column and
+//            row 0 .. n: 0 or 1 where all four are, else 2, in 2 bits. Block
+//            i = row (n + 1) + column of grid g, from texel G plus the
+//            coarser grids' ceil((n + 1)^2 / 32) texels each: bits 2 (i % 8)
+//            of component (i / 8) % 4 of texel i / 32. A pixel box no larger
+//            than a cell lies within one block: where the block is 0 or 1
+//            that is its coverage, exactly, without the loop over its band
+//            (most pixels of a large glyph), from one texel.
 // Level L has 2^L bands; with H = (box height) / 2^L, band k holds the pieces
 // that reach into [y0 + k H, y0 + (k + 2) H]: overlapping bands, so a pixel
 // row at most H tall lies wholly in band floor((row's bottom - y0) / H).
@@ -81,7 +84,7 @@ inline constexpr int kBandTextureWidth = 1 << kBandTextureWidthLog2;
 // Most levels a glyph's bands have (2^kMaxBandLevels - 1 bands in all).
 inline constexpr int kMaxBandLevels = 5;
 // The cell grids: 8 x 8 to 32 x 32 cells (a pixel reads the finest whose
-// cells are at least its size; 42 texels in all).
+// cells are at least its size; 48 texels in all).
 inline constexpr int kGridMinLog2 = 3;
 inline constexpr int kGridMaxLog2 = 5;
 
@@ -133,7 +136,9 @@ int band_level(const GlyphBands& bands, double half_y);
 // The state of the cells under the box (0: all outside, 1: all inside, 2:
 // the loop decides), as the shader reads them.
 int grid_state(const GlyphBands& bands, Vec2 centre, Vec2 half);
-// The state of cell (column, row) of grid g as packed (0 beyond the grid).
-int cell_state(const GlyphBands& bands, int g, int column, int row);
+// The state of the cells column - 1 .. column, row - 1 .. row of grid g
+// together (0 or 1 where all four are, else 2; cells beyond the grid are 0),
+// as packed.
+int block_state(const GlyphBands& bands, int g, int column, int row);
 
 }  // namespace curvetext::gpu
