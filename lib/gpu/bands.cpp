@@ -305,21 +305,33 @@ void mark_cells(const std::vector<BandPiece>& pieces, const Box& box, int n, Ban
     // In cell units: y0 <= y1 the piece's heights; x_at(y) where it reaches y.
     const auto cy = [&](double y) { return (y - box.min.y) / cell; };
     const double y0 = cy(std::min(p.p0.y, p.p2.y)), y1 = cy(std::max(p.p0.y, p.p2.y));
+    const bool line = is_line(p);
     const auto x_at = [&](double y) {
       if (!(y1 > y0)) return ((y > y0 ? std::max(p.p0.x, p.p2.x) : std::min(p.p0.x, p.p2.x)) - box.min.x) / cell;
-      const double t = monotone_crossing(p.p0.y, p.c.y, p.p2.y, p.w, box.min.y + std::clamp(y, y0, y1) * cell);
-      return (at(p, t).point().x - box.min.x) / cell;
+      const double level = box.min.y + std::clamp(y, y0, y1) * cell;
+      if (line) {
+        const double t = std::clamp((level - p.p0.y) / (p.p2.y - p.p0.y), 0.0, 1.0);
+        return (p.p0.x + t * (p.p2.x - p.p0.x) - box.min.x) / cell;
+      }
+      return (at(p, monotone_crossing(p.p0.y, p.c.y, p.p2.y, p.w, level)).point().x - box.min.x) / cell;
     };
     // Each row the piece reaches (with a margin of 1/64 cell, more than the
     // shader's rounding of a box's cells): the columns between its x at the
     // row's ends (monotone in x and y).
     constexpr double kMargin = 1.0 / 64;
-    double x_lo = x_at(std::floor(y0 - kMargin) - kMargin);
-    for (int r = index(y0 - kMargin); r <= index(y1 + kMargin); ++r) {
-      const double x_hi = x_at(r + 1 + kMargin);
-      const int c0 = index(std::min(x_lo, x_hi) - kMargin), c1 = index(std::max(x_lo, x_hi) + kMargin);
-      for (int c = c0; c <= c1; ++c) cells[static_cast<std::size_t>(r * n + c)] = 2;
-      x_lo = x_at(r + 1 - kMargin);
+    const int r0 = index(y0 - kMargin), r1 = index(y1 + kMargin);
+    if (r0 == r1) {  // one row: the columns of its bounds
+      const int c0 = index((std::min({p.p0.x, p.c.x, p.p2.x}) - box.min.x) / cell - kMargin);
+      const int c1 = index((std::max({p.p0.x, p.c.x, p.p2.x}) - box.min.x) / cell + kMargin);
+      for (int c = c0; c <= c1; ++c) cells[static_cast<std::size_t>(r0 * n + c)] = 2;
+    } else {
+      double x_lo = x_at(std::floor(y0 - kMargin) - kMargin);
+      for (int r = r0; r <= r1; ++r) {
+        const double x_hi = x_at(r + 1 + kMargin);
+        const int c0 = index(std::min(x_lo, x_hi) - kMargin), c1 = index(std::max(x_lo, x_hi) + kMargin);
+        for (int c = c0; c <= c1; ++c) cells[static_cast<std::size_t>(r * n + c)] = 2;
+        x_lo = x_at(r + 1 - kMargin);
+      }
     }
     // The row centres r + 1/2 in [y0, y1): the piece crosses each once.
     const int sign = p.p2.y > p.p0.y ? 1 : -1;
@@ -360,17 +372,25 @@ void add_grids(const std::vector<BandPiece>& pieces, GlyphBands& out, BandScratc
     if (g < kGridMaxLog2) halve_cells(scratch.cells, 2 << g);
     std::array<float, 4>* texels = out.texels.data() + first + grid_offset(g);
     const int n = 1 << g;
-    const auto cell = [&](int c, int r) {
-      return c < 0 || r < 0 || c >= n || r >= n ? 0 : scratch.cells[static_cast<std::size_t>(r * n + c)];
-    };
+    // The cells with a border of outside cells, so that block (c, r) is
+    // the padded cells (c .. c + 1, r .. r + 1).
+    const int m = n + 2;
+    std::vector<std::uint8_t>& padded = scratch.padded;
+    padded.assign(static_cast<std::size_t>(m) * static_cast<std::size_t>(m), 0);
+    for (int r = 0; r < n; ++r) std::copy_n(scratch.cells.begin() + r * n, n, padded.begin() + (r + 1) * m + 1);
+    unsigned word = 0;  // blocks i - i % 8 .. i, 2 bits each
+    int i = 0;
     for (int r = 0; r <= n; ++r)
-      for (int c = 0; c <= n; ++c) {
-        const int a = cell(c - 1, r - 1), b = cell(c, r - 1), d = cell(c - 1, r), e = cell(c, r);
-        const unsigned state = a == b && a == d && a == e ? static_cast<unsigned>(a) : 2u;
-        const int i = r * (n + 1) + c;
-        float& bits = texels[i / 32][(i / 8) % 4];
-        bits = static_cast<float>(static_cast<unsigned>(bits) | state << (2 * (i % 8)));
+      for (int c = 0; c <= n; ++c, ++i) {
+        const std::uint8_t* q = padded.data() + r * m + c;
+        const int a = q[0], b = q[1], d = q[m], e = q[m + 1];
+        word |= (a == b && a == d && a == e ? static_cast<unsigned>(a) : 2u) << (2 * (i % 8));
+        if (i % 8 == 7) {
+          texels[i / 32][(i / 8) % 4] = static_cast<float>(word);
+          word = 0;
+        }
       }
+    if (i % 8 != 0) texels[(i - 1) / 32][((i - 1) / 8) % 4] = static_cast<float>(word);
   }
   out.texels[0][2] = static_cast<float>(first);
 }

@@ -83,10 +83,11 @@ inline constexpr int kBandTextureWidthLog2 = 10;
 inline constexpr int kBandTextureWidth = 1 << kBandTextureWidthLog2;
 // Most levels a glyph's bands have (2^kMaxBandLevels - 1 bands in all).
 inline constexpr int kMaxBandLevels = 5;
-// The cell grids: 8 x 8 to 32 x 32 cells (a pixel reads the finest whose
-// cells are at least its size; 48 texels in all).
+// The cell grids: 8 x 8 and 16 x 16 cells (a pixel reads the finest whose
+// cells are at least its size; 13 texels in all; a 32 x 32 grid doubled
+// the grids' building time for a few per cent at 64 px, docs/performance.md).
 inline constexpr int kGridMinLog2 = 3;
-inline constexpr int kGridMaxLog2 = 5;
+inline constexpr int kGridMaxLog2 = 4;
 
 struct GlyphBands {
   std::vector<std::array<float, 4>> texels;
@@ -103,7 +104,7 @@ struct BandScratch {
   std::vector<BandPiece> pieces;
   std::vector<std::uint32_t> order, refs, next;
   std::vector<std::array<float, 4>> entries;
-  std::vector<std::uint8_t> cells;
+  std::vector<std::uint8_t> cells, padded;
   std::vector<int> delta;
 };
 
