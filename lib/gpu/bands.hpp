@@ -16,8 +16,8 @@
 //            quadratic (p0, c, p2) with end weights 1 and middle weight w, in
 //            the outline's units, directed with the fill on its left (y up).
 //            A line is stored as the conic whose control point is its
-//            midpoint, w = 1 (its segment area is 0), with line = 1 (the
-//            shader takes a shorter path for it; 0 for a conic).
+//            midpoint, w = 1 (its segment area is 0), with line = 1 (0
+//            for a conic; the shader reads both through one path).
 //   entries: texel E + j, one per piece in a band: (largest x, smallest x,
 //            y of p0, y of p2), a band's entries by decreasing largest x, so
 //            the loop over them stops at the first entry wholly left of the
