@@ -287,6 +287,37 @@ double grid_side(const Box& box) { return std::max(box.max.x - box.min.x, box.ma
 constexpr int grid_texels(int g) { return (((1 << g) + 1) * ((1 << g) + 1) + 31) / 32; }
 constexpr int grid_offset(int g) { return g <= kGridMinLog2 ? 0 : grid_offset(g - 1) + grid_texels(g - 1); }
 
+// A triangle's edges, with their inverse heights (0 for a level edge), for
+// the x extent of the triangle within slabs lo <= y <= hi.
+struct SlabTriangle {
+  Vec2 a[3], d[3];
+  double inv[3];
+  explicit SlabTriangle(const Vec2 (&t)[3]) {
+    for (int e = 0; e < 3; ++e) {
+      a[e] = t[e];
+      d[e] = t[(e + 1) % 3] - t[e];
+      inv[e] = d[e].y != 0.0 ? 1.0 / d[e].y : 0.0;
+    }
+  }
+  // Empty (first > second) where the slab misses the triangle.
+  std::pair<double, double> extent(double lo, double hi) const {
+    double x_lo = std::numeric_limits<double>::infinity(), x_hi = -x_lo;
+    for (int e = 0; e < 3; ++e) {
+      if (std::max(a[e].y, a[e].y + d[e].y) < lo || std::min(a[e].y, a[e].y + d[e].y) > hi) continue;
+      double s0 = 0.0, s1 = 1.0;  // the edge's part within the slab
+      if (inv[e] != 0.0) {
+        const double u = (lo - a[e].y) * inv[e], v = (hi - a[e].y) * inv[e];
+        s0 = std::max(0.0, std::min(u, v));
+        s1 = std::min(1.0, std::max(u, v));
+      }
+      const double x0 = a[e].x + s0 * d[e].x, x1 = a[e].x + s1 * d[e].x;
+      x_lo = std::min({x_lo, x0, x1});
+      x_hi = std::max({x_hi, x0, x1});
+    }
+    return {x_lo, x_hi};
+  }
+};
+
 // The finest grid (n x n cells of side `cell`): cells a piece reaches are
 // marked 2; each other cell 1 or 0 by the winding number
 // at its centre: the pieces crossing its row's centre line right of it,
@@ -302,41 +333,34 @@ void mark_cells(const std::vector<BandPiece>& pieces, const Box& box, int n, Ban
   const double cell = grid_side(box) / n;
   const auto index = [n](double v) { return std::clamp(static_cast<int>(std::floor(v)), 0, n - 1); };
   for (const BandPiece& p : pieces) {
-    // In cell units: y0 <= y1 the piece's heights; x_at(y) where it reaches y.
-    const auto cy = [&](double y) { return (y - box.min.y) / cell; };
-    const double y0 = cy(std::min(p.p0.y, p.p2.y)), y1 = cy(std::max(p.p0.y, p.p2.y));
-    const bool line = is_line(p);
-    const auto x_at = [&](double y) {
-      if (!(y1 > y0)) return ((y > y0 ? std::max(p.p0.x, p.p2.x) : std::min(p.p0.x, p.p2.x)) - box.min.x) / cell;
-      const double level = box.min.y + std::clamp(y, y0, y1) * cell;
-      if (line) {
-        const double t = std::clamp((level - p.p0.y) / (p.p2.y - p.p0.y), 0.0, 1.0);
-        return (p.p0.x + t * (p.p2.x - p.p0.x) - box.min.x) / cell;
-      }
-      return (at(p, monotone_crossing(p.p0.y, p.c.y, p.p2.y, p.w, level)).point().x - box.min.x) / cell;
-    };
+    // In cell units: the control triangle (the arc lies in it), y0 <= y1 the
+    // piece's heights.
+    const auto to_cells = [&](Vec2 v) { return Vec2{(v.x - box.min.x) / cell, (v.y - box.min.y) / cell}; };
+    const Vec2 tri[3] = {to_cells(p.p0), to_cells(p.c), to_cells(p.p2)};
+    const SlabTriangle slabs(tri);
+    const double y0 = std::min(tri[0].y, tri[2].y), y1 = std::max(tri[0].y, tri[2].y);
     // Each row the piece reaches (with a margin of 1/64 cell, more than the
-    // shader's rounding of a box's cells): the columns between its x at the
-    // row's ends (monotone in x and y).
+    // shader's rounding of a box's cells): the columns of the triangle's
+    // part within the row.
     constexpr double kMargin = 1.0 / 64;
-    const int r0 = index(y0 - kMargin), r1 = index(y1 + kMargin);
-    if (r0 == r1) {  // one row: the columns of its bounds
-      const int c0 = index((std::min({p.p0.x, p.c.x, p.p2.x}) - box.min.x) / cell - kMargin);
-      const int c1 = index((std::max({p.p0.x, p.c.x, p.p2.x}) - box.min.x) / cell + kMargin);
-      for (int c = c0; c <= c1; ++c) cells[static_cast<std::size_t>(r0 * n + c)] = 2;
-    } else {
-      double x_lo = x_at(std::floor(y0 - kMargin) - kMargin);
-      for (int r = r0; r <= r1; ++r) {
-        const double x_hi = x_at(r + 1 + kMargin);
-        const int c0 = index(std::min(x_lo, x_hi) - kMargin), c1 = index(std::max(x_lo, x_hi) + kMargin);
-        for (int c = c0; c <= c1; ++c) cells[static_cast<std::size_t>(r * n + c)] = 2;
-        x_lo = x_at(r + 1 - kMargin);
-      }
+    for (int r = index(y0 - kMargin); r <= index(y1 + kMargin); ++r) {
+      const auto [x_lo, x_hi] = slabs.extent(r - kMargin, r + 1 + kMargin);
+      if (!(x_hi >= x_lo)) continue;
+      const int c1 = index(x_hi + kMargin);
+      for (int c = index(x_lo - kMargin); c <= c1; ++c) cells[static_cast<std::size_t>(r * n + c)] = 2;
     }
-    // The row centres r + 1/2 in [y0, y1): the piece crosses each once.
+    // The row centres r + 1/2 in [y0, y1): the piece crosses each once, in
+    // the column of the triangle's part there where that is one column.
     const int sign = p.p2.y > p.p0.y ? 1 : -1;
-    for (int r = std::max(0, static_cast<int>(std::ceil(y0 - 0.5))); r < n && r + 0.5 < y1; ++r)
-      delta[static_cast<std::size_t>(r * n + index(x_at(r + 0.5)))] += sign;
+    for (int r = std::max(0, static_cast<int>(std::ceil(y0 - 0.5))); r < n && r + 0.5 < y1; ++r) {
+      const auto [x_lo, x_hi] = slabs.extent(r + 0.5, r + 0.5);
+      int c = index(x_lo);
+      if (index(x_hi) != c) {
+        const double t = monotone_crossing(p.p0.y, p.c.y, p.p2.y, p.w, box.min.y + (r + 0.5) * cell);
+        c = index((at(p, t).point().x - box.min.x) / cell);
+      }
+      delta[static_cast<std::size_t>(r * n + c)] += sign;
+    }
   }
   for (int r = 0; r < n; ++r) {
     int winding = 0;  // of the crossings right of column c
