@@ -19,6 +19,8 @@
 //      build/bench/glyph_prep_bench --rounds=N  (default 5)
 //      build/bench/glyph_prep_bench --warm      (each glyph's rounds back to back instead of
 //                                                the glyphs in turn: trained branch predictors)
+//      build/bench/glyph_prep_bench --no-bands  (the mesh side without gpu::build_bands: the
+//                                                mesh path's own cost, against which the bands' is set)
 //      build/bench/glyph_prep_bench --stages    (where the mesh time goes, stage by stage; needs
 //                                                a build configured with -DCURVETEXT_STAGE_TIMING=ON)
 #include <benchmark/benchmark.h>
@@ -128,7 +130,7 @@ struct FtFace {
 // what an atlas renderer pays: FT_Load_Glyph + FT_Render_Glyph (AA, 32 px).
 // With `warm`, each glyph's rounds run back to back instead (the predictors
 // and caches trained on that glyph): the cost of the work itself.
-PrepResult measure(const FontCase& fc, const std::vector<unsigned>& glyphs, int rounds, bool warm) {
+PrepResult measure(const FontCase& fc, const std::vector<unsigned>& glyphs, int rounds, bool warm, bool bands_too) {
   namespace detail = curvetext::detail;
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
@@ -177,8 +179,10 @@ PrepResult measure(const FontCase& fc, const std::vector<unsigned>& glyphs, int 
       benchmark::DoNotOptimize(packed.indices.data());
       packed_bytes = packed.gpu_bytes();
       // The curve bands full draws text from in one pass (GLES 3 / GL 3.3).
-      curvetext::gpu::build_bands(mesh, bands, band_scratch);
-      benchmark::DoNotOptimize(bands.texels.data());
+      if (bands_too) {
+        curvetext::gpu::build_bands(mesh, bands, band_scratch);
+        benchmark::DoNotOptimize(bands.texels.data());
+      }
       s3 = stage_tick();
     }  // (freed inside the timed span, as the cache would free a replaced mesh)
     auto t1 = clock::now();
@@ -336,7 +340,7 @@ void BM_FreeTypeBitmap32(benchmark::State& state, const FontCase* fc) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool tables_only = false, warm = false, stages = false;
+  bool tables_only = false, warm = false, stages = false, bands_too = true;
   int rounds = 5;
   std::vector<char*> args;
   for (int i = 0; i < argc; ++i) {
@@ -344,6 +348,8 @@ int main(int argc, char** argv) {
       tables_only = true;
     } else if (std::strcmp(argv[i], "--warm") == 0) {
       warm = true;
+    } else if (std::strcmp(argv[i], "--no-bands") == 0) {
+      bands_too = false;
     } else if (std::strcmp(argv[i], "--stages") == 0) {
       stages = true;
     } else if (std::strncmp(argv[i], "--rounds=", 9) == 0) {
@@ -387,9 +393,10 @@ int main(int argc, char** argv) {
       "ratio = FT32 / mesh (>= 1: the mesh is prepared at least as fast); faster = share of glyphs whose\n"
       "mesh is faster than their bitmap; triangles, GPU bytes (%zu-byte vertices and 16-bit indices) and\n"
       "atlas cells (atlN: mean FreeType bitmap width x rows at N px, 1 byte per pixel, no padding) are\n"
-      "means over all glyphs of the row, empty ones included.%s\n",
+      "means over all glyphs of the row, empty ones included.%s%s\n",
       rounds, sizeof(curvetext::gpu::Vertex),
-      warm ? "\n--warm: each glyph's rounds back to back (predictors and caches trained on it)." : "");
+      warm ? "\n--warm: each glyph's rounds back to back (predictors and caches trained on it)." : "",
+      bands_too ? "" : "\n--no-bands: mesh without gpu::build_bands.");
 
   std::printf("\nLatin glyphs (U+0020..U+024F)  [target: ratio >= 1.0 and mesh < 5 us]\n");
   print_header();
@@ -397,7 +404,7 @@ int main(int argc, char** argv) {
   for (const FontCase* fc : fonts) {
     if (!fc->latin) continue;
     curvetext::Font font = curvetext::Font::open(fc->path, fc->face_index);
-    latin_rows.emplace_back(fc, measure(*fc, latin_glyphs(font), rounds, warm));
+    latin_rows.emplace_back(fc, measure(*fc, latin_glyphs(font), rounds, warm, bands_too));
     print_row(fc->name, latin_rows.back().second);
     std::fflush(stdout);
   }
@@ -410,7 +417,7 @@ int main(int argc, char** argv) {
   double seconds = 0;
   for (const FontCase* fc : fonts) {
     curvetext::Font font = curvetext::Font::open(fc->path, fc->face_index);
-    all_rows.emplace_back(fc, measure(*fc, all_glyphs(font, fc->max_glyphs), rounds, warm));
+    all_rows.emplace_back(fc, measure(*fc, all_glyphs(font, fc->max_glyphs), rounds, warm, bands_too));
     print_row(fc->name, all_rows.back().second);
     seconds += all_rows.back().second.seconds;
     std::fflush(stdout);

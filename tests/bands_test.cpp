@@ -220,5 +220,50 @@ TEST(BandArea, EveryGlyphOfDejaVuSans) { check_font(test::kDejaVuSans, 13.0, fal
 TEST(BandArea, DejaVuSansPixelsAgainstUnionSweep) { check_font(test::kDejaVuSans, 24.0, true, 400); }
 TEST(BandArea, OverlappingContoursOfInter) { check_font(test::kInterVariable, 17.0, false); }
 
+// Each block of 2 x 2 cells of each grid marked wholly inside (1) or outside
+// (0) is so: the exact area of the block inside the glyph (through every
+// piece) is the block's area or nothing; every `step`th glyph of DejaVu Sans
+// and of Inter (overlapping contours), and both kinds occur.
+void check_cells(const char* path, std::uint32_t step) {
+  const Font font = Font::open(path);
+  gpu::BandScratch scratch;
+  gpu::GlyphBands bands;
+  Mesh mesh;
+  std::vector<BandPiece> pieces;
+  double worst = 0.0;
+  std::size_t counts[3] = {0, 0, 0};
+  for (std::uint32_t id = 0; id < font.glyph_count(); id += step) {
+    const Outline outline = font.glyph_outline(id);
+    if (outline.empty() || outline.has_cubics()) continue;
+    build_mesh(outline, {}, mesh);
+    gpu::boundary_pieces(mesh, pieces);
+    gpu::build_bands(mesh, bands, scratch);
+    if (bands.empty()) continue;
+    const Box& b = bands.box;
+    const double side = std::max(b.max.x - b.min.x, b.max.y - b.min.y);  // the grids' square
+    for (int g = gpu::kGridMinLog2; g <= gpu::kGridMaxLog2; ++g) {
+      const int n = 1 << g;
+      const Vec2 half{side / n, side / n};  // a block of 2 x 2 cells
+      for (int r = 0; r <= n; ++r)
+        for (int c = 0; c <= n; ++c) {
+          const int state = gpu::block_state(bands, g, c, r);
+          ASSERT_LE(state, 2) << path << " glyph " << id;
+          ++counts[state];
+          if (state == 2) continue;
+          const Vec2 centre{b.min.x + c * half.x, b.min.y + r * half.y};
+          worst = std::max(worst, std::abs(gpu::box_coverage(pieces, centre, half) - state));
+        }
+    }
+  }
+  std::printf("%s: blocks outside %zu, inside %zu, edge %zu; worst |area - state| %.3g\n", path, counts[0], counts[1],
+              counts[2], worst);
+  EXPECT_LT(worst, 1e-9) << path;
+  EXPECT_GT(counts[0], 0u);
+  EXPECT_GT(counts[1], 0u);
+}
+
+TEST(BandCells, InsideAndOutsideCellsOfDejaVuSans) { check_cells(test::kDejaVuSans, 7); }
+TEST(BandCells, InsideAndOutsideCellsOfInter) { check_cells(test::kInterVariable, 3); }
+
 }  // namespace
 }  // namespace curvetext

@@ -448,6 +448,73 @@ TEST(Context, TextBlocksTakeThePathOfTheContext) {
   }
 }
 
+// Shapes with conic arcs (a circle's quarters, w = cos 45; a flat ellipse
+// arc, w = 0.05; a heavy hyperbola arc, w = 40) take the band program
+// compiled with CURVETEXT_CONICS (the weights, the segment's closed forms);
+// every pixel matches the CPU reference within the 8-bit rounding, at two
+// sizes whose pixels read the cell grids and the band loop.
+TEST(Bands, ConicProgramMatchesCpuReference) {
+  context();
+  if (!gpu::context_instances()) GTEST_SKIP() << "GLES2: no band program";
+  std::vector<Mesh> meshes;
+  {
+    Outline circle;
+    const double r = 40.0, k = std::sqrt(0.5);
+    circle.move_to({r, 0.0});
+    circle.conic_to({r, r}, {0.0, r}, k);
+    circle.conic_to({-r, r}, {-r, 0.0}, k);
+    circle.conic_to({-r, -r}, {0.0, -r}, k);
+    circle.conic_to({r, -r}, {r, 0.0}, k);
+    circle.close();
+    meshes.push_back(build_mesh(circle));
+    Outline arcs;
+    arcs.move_to({0.0, 0.0});
+    arcs.conic_to({40.0, 70.0}, {80.0, 0.0}, 0.05);
+    arcs.conic_to({40.0, -30.0}, {0.0, 0.0}, 40.0);
+    arcs.close();
+    meshes.push_back(build_mesh(arcs));
+  }
+  const std::vector<Vec2> offsets{{50.0, 50.0}, {110.0, 20.0}};
+  std::vector<const Mesh*> pointers{&meshes[0], &meshes[1]};
+  std::vector<gpu::GlyphBands> bands(meshes.size());
+  gpu::BandScratch scratch;
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    gpu::build_bands(meshes[i], bands[i], scratch);
+    ASSERT_TRUE(bands[i].conics) << i;
+  }
+  Renderer renderer;
+  ImageTarget target;
+  for (double scale : {0.25, 1.3}) {
+    // The batch's mesh (the first shape, unmoved) is drawn only where the
+    // bands are not: a pixel off the CPU's shows it.
+    auto impl = gpu::upload(gpu::pack_mesh(meshes[0]));
+    gpu::add_mesh_bands(*impl, pointers, offsets);
+    ASSERT_TRUE(impl->banded && impl->band_conics);
+    const DrawBatch batch = DrawBatchAccess::make(std::move(impl));
+    const int width = static_cast<int>(std::ceil(220 * scale)), height = static_cast<int>(std::ceil(120 * scale));
+    const Placement placement{scale, 0.31, 0.77 + 100 * scale};
+    target.begin(width, height, Color{1, 1, 1, 1});
+    renderer.draw(batch, placement, DrawOptions(Color{0, 0, 0, 1}, AntiAliasing::Full));
+    const Image image = target.read_pixels();
+    double worst = 0.0, ink = 0.0;
+    for (int j = 0; j < height; ++j)
+      for (int i = 0; i < width; ++i) {
+        double clear = 1.0;
+        for (std::size_t g = 0; g < meshes.size(); ++g) {
+          const Vec2 centre{(i + 0.5 - placement.origin_x) / scale - offsets[g].x,
+                            (placement.origin_y - j - 0.5) / scale - offsets[g].y};
+          clear *= 1.0 - std::clamp(gpu::band_box_coverage(bands[g], centre, Vec2{0.5 / scale, 0.5 / scale}), 0.0, 1.0);
+        }
+        const double got = 1.0 - image.rgba[4 * (static_cast<std::size_t>(j) * width + i)] / 255.0;
+        worst = std::max(worst, std::abs(got - (1.0 - clear)));
+        ink += 1.0 - clear;
+      }
+    std::printf("conic bands at scale %.2f: largest difference to the CPU %.4f (ink %.1f px)\n", scale, worst, ink);
+    EXPECT_GT(ink, 10.0);
+    EXPECT_LE(worst, 0.5 / 255.0 + 1e-3) << scale;
+  }
+}
+
 // full for a text block where the context instances (docs/design.md
 // section 9): one quad per glyph evaluating the exact area from the glyph's
 // curve bands, no offscreen pass. Every pixel matches the CPU reference of

@@ -278,11 +278,153 @@ void add_entries(const std::vector<BandPiece>& pieces, std::size_t piece_texel, 
     });
 }
 
+// The side of the square the grids divide: the box's larger side (square
+// cells, so that a narrow glyph's cells are as large as a wide one's).
+double grid_side(const Box& box) { return std::max(box.max.x - box.min.x, box.max.y - box.min.y); }
+
+// The texels of grid g's blocks, (2^g + 1)^2 of 2 bits; the first of grid g,
+// from the first cell texel.
+constexpr int grid_texels(int g) { return (((1 << g) + 1) * ((1 << g) + 1) + 31) / 32; }
+constexpr int grid_offset(int g) { return g <= kGridMinLog2 ? 0 : grid_offset(g - 1) + grid_texels(g - 1); }
+
+// A triangle's edges, with their inverse heights (0 for a level edge), for
+// the x extent of the triangle within slabs lo <= y <= hi.
+struct SlabTriangle {
+  Vec2 a[3], d[3];
+  double inv[3];
+  explicit SlabTriangle(const Vec2 (&t)[3]) {
+    for (int e = 0; e < 3; ++e) {
+      a[e] = t[e];
+      d[e] = t[(e + 1) % 3] - t[e];
+      inv[e] = d[e].y != 0.0 ? 1.0 / d[e].y : 0.0;
+    }
+  }
+  // Empty (first > second) where the slab misses the triangle.
+  std::pair<double, double> extent(double lo, double hi) const {
+    double x_lo = std::numeric_limits<double>::infinity(), x_hi = -x_lo;
+    for (int e = 0; e < 3; ++e) {
+      if (std::max(a[e].y, a[e].y + d[e].y) < lo || std::min(a[e].y, a[e].y + d[e].y) > hi) continue;
+      double s0 = 0.0, s1 = 1.0;  // the edge's part within the slab
+      if (inv[e] != 0.0) {
+        const double u = (lo - a[e].y) * inv[e], v = (hi - a[e].y) * inv[e];
+        s0 = std::max(0.0, std::min(u, v));
+        s1 = std::min(1.0, std::max(u, v));
+      }
+      const double x0 = a[e].x + s0 * d[e].x, x1 = a[e].x + s1 * d[e].x;
+      x_lo = std::min({x_lo, x0, x1});
+      x_hi = std::max({x_hi, x0, x1});
+    }
+    return {x_lo, x_hi};
+  }
+};
+
+// The finest grid (n x n cells of side `cell`): cells a piece reaches are
+// marked 2; each other cell 1 or 0 by the winding number
+// at its centre: the pieces crossing its row's centre line right of it,
+// upward +1 and downward -1 (fill on the left; half-open in y, so an end
+// shared by two pieces counts once). A crossing in a cell makes it a 2, so
+// a row's crossings are counted per column and summed from the right.
+void mark_cells(const std::vector<BandPiece>& pieces, const Box& box, int n, BandScratch& scratch) {
+  std::vector<std::uint8_t>& cells = scratch.cells;
+  std::vector<int>& delta = scratch.delta;  // per row, per column: the crossings' signs
+  const auto size = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
+  cells.assign(size, 0);
+  delta.assign(size, 0);
+  const double cell = grid_side(box) / n;
+  const auto index = [n](double v) { return std::clamp(static_cast<int>(std::floor(v)), 0, n - 1); };
+  for (const BandPiece& p : pieces) {
+    // In cell units: the control triangle (the arc lies in it), y0 <= y1 the
+    // piece's heights.
+    const auto to_cells = [&](Vec2 v) { return Vec2{(v.x - box.min.x) / cell, (v.y - box.min.y) / cell}; };
+    const Vec2 tri[3] = {to_cells(p.p0), to_cells(p.c), to_cells(p.p2)};
+    const SlabTriangle slabs(tri);
+    const double y0 = std::min(tri[0].y, tri[2].y), y1 = std::max(tri[0].y, tri[2].y);
+    // Each row the piece reaches (with a margin of 1/64 cell, more than the
+    // shader's rounding of a box's cells): the columns of the triangle's
+    // part within the row.
+    constexpr double kMargin = 1.0 / 64;
+    for (int r = index(y0 - kMargin); r <= index(y1 + kMargin); ++r) {
+      const auto [x_lo, x_hi] = slabs.extent(r - kMargin, r + 1 + kMargin);
+      if (!(x_hi >= x_lo)) continue;
+      const int c1 = index(x_hi + kMargin);
+      for (int c = index(x_lo - kMargin); c <= c1; ++c) cells[static_cast<std::size_t>(r * n + c)] = 2;
+    }
+    // The row centres r + 1/2 in [y0, y1): the piece crosses each once, in
+    // the column of the triangle's part there where that is one column.
+    const int sign = p.p2.y > p.p0.y ? 1 : -1;
+    for (int r = std::max(0, static_cast<int>(std::ceil(y0 - 0.5))); r < n && r + 0.5 < y1; ++r) {
+      const auto [x_lo, x_hi] = slabs.extent(r + 0.5, r + 0.5);
+      int c = index(x_lo);
+      if (index(x_hi) != c) {
+        const double t = monotone_crossing(p.p0.y, p.c.y, p.p2.y, p.w, box.min.y + (r + 0.5) * cell);
+        c = index((at(p, t).point().x - box.min.x) / cell);
+      }
+      delta[static_cast<std::size_t>(r * n + c)] += sign;
+    }
+  }
+  for (int r = 0; r < n; ++r) {
+    int winding = 0;  // of the crossings right of column c
+    for (int c = n - 1; c >= 0; --c) {
+      const auto i = static_cast<std::size_t>(r * n + c);
+      if (cells[i] != 2) cells[i] = winding != 0 ? 1 : 0;
+      winding += delta[i];
+    }
+  }
+}
+
+// Grid n / 2 from grid n: a cell is 0 or 1 where its four are, else 2.
+void halve_cells(std::vector<std::uint8_t>& cells, int n) {
+  const int h = n / 2;
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < h; ++c) {
+      const auto at = [&](int rr, int cc) { return cells[static_cast<std::size_t>(rr * n + cc)]; };
+      const std::uint8_t a = at(2 * r, 2 * c), b = at(2 * r, 2 * c + 1), d = at(2 * r + 1, 2 * c),
+                         e = at(2 * r + 1, 2 * c + 1);
+      cells[static_cast<std::size_t>(r * h + c)] = a == b && a == d && a == e ? a : 2;
+    }
+  cells.resize(static_cast<std::size_t>(h) * static_cast<std::size_t>(h));
+}
+
+// The cell grids (layout: bands.hpp), appended to the texels: the finest
+// marked, each coarser one from the one below it.
+void add_grids(const std::vector<BandPiece>& pieces, GlyphBands& out, BandScratch& scratch) {
+  if (!(out.box.max.x > out.box.min.x)) return;
+  const std::size_t first = out.texels.size();
+  out.texels.resize(first + static_cast<std::size_t>(grid_offset(kGridMaxLog2 + 1)), {0.0f, 0.0f, 0.0f, 0.0f});
+  mark_cells(pieces, out.box, 1 << kGridMaxLog2, scratch);
+  for (int g = kGridMaxLog2; g >= kGridMinLog2; --g) {
+    if (g < kGridMaxLog2) halve_cells(scratch.cells, 2 << g);
+    std::array<float, 4>* texels = out.texels.data() + first + grid_offset(g);
+    const int n = 1 << g;
+    // The cells with a border of outside cells, so that block (c, r) is
+    // the padded cells (c .. c + 1, r .. r + 1).
+    const int m = n + 2;
+    std::vector<std::uint8_t>& padded = scratch.padded;
+    padded.assign(static_cast<std::size_t>(m) * static_cast<std::size_t>(m), 0);
+    for (int r = 0; r < n; ++r) std::copy_n(scratch.cells.begin() + r * n, n, padded.begin() + (r + 1) * m + 1);
+    unsigned word = 0;  // blocks i - i % 8 .. i, 2 bits each
+    int i = 0;
+    for (int r = 0; r <= n; ++r)
+      for (int c = 0; c <= n; ++c, ++i) {
+        const std::uint8_t* q = padded.data() + r * m + c;
+        const int a = q[0], b = q[1], d = q[m], e = q[m + 1];
+        word |= (a == b && a == d && a == e ? static_cast<unsigned>(a) : 2u) << (2 * (i % 8));
+        if (i % 8 == 7) {
+          texels[i / 32][(i / 8) % 4] = static_cast<float>(word);
+          word = 0;
+        }
+      }
+    if (i % 8 != 0) texels[(i - 1) / 32][((i - 1) / 8) % 4] = static_cast<float>(word);
+  }
+  out.texels[0][2] = static_cast<float>(first);
+}
+
 }  // namespace
 
 void build_bands(const Mesh& mesh, GlyphBands& out, BandScratch& scratch) {
   out.texels.clear();
   out.levels = 0;
+  out.conics = false;
   out.pieces = out.entries = 0;
   std::vector<BandPiece>& pieces = scratch.pieces;
   boundary_pieces(mesh, pieces);
@@ -299,6 +441,7 @@ void build_bands(const Mesh& mesh, GlyphBands& out, BandScratch& scratch) {
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     const BandPiece& p = pieces[i];
     const auto f = [](double v) { return static_cast<float>(v); };
+    out.conics = out.conics || f(p.w) != 1.0f;
     out.texels[piece_texel + 2 * i] = {f(p.p0.x), f(p.p0.y), f(p.c.x), f(p.c.y)};
     out.texels[piece_texel + 2 * i + 1] = {f(p.p2.x), f(p.p2.y), f(p.w), is_line(p) ? 1.0f : 0.0f};
   }
@@ -313,6 +456,7 @@ void build_bands(const Mesh& mesh, GlyphBands& out, BandScratch& scratch) {
     out.texels.push_back(t);
   }
   out.texels[0] = {static_cast<float>(entry_texel), static_cast<float>(ref_texel), 0.0f, 0.0f};
+  add_grids(pieces, out, scratch);
 }
 
 double box_coverage(std::span<const BandPiece> pieces, Vec2 centre, Vec2 half) {
@@ -332,8 +476,34 @@ int band_level(const GlyphBands& bands, double half_y) {
   return std::clamp(level, 0, bands.levels - 1);
 }
 
+int block_state(const GlyphBands& bands, int g, int column, int row) {
+  const int n = 1 << g;
+  if (column < 0 || row < 0 || column > n || row > n) return 0;
+  const int i = row * (n + 1) + column;
+  const auto first = static_cast<std::size_t>(bands.texels[0][2]) + static_cast<std::size_t>(grid_offset(g));
+  const auto bits = static_cast<unsigned>(bands.texels[first + static_cast<std::size_t>(i / 32)][(i / 8) % 4]);
+  return static_cast<int>((bits >> (2 * (i % 8))) & 3u);
+}
+
+int grid_state(const GlyphBands& bands, Vec2 centre, Vec2 half) {
+  if (bands.empty() || bands.texels[0][2] == 0.0f) return 2;
+  const Box& b = bands.box;
+  const double w = grid_side(b), h = w;
+  // The finest grid whose cells are at least the box (both ways).
+  const double ratio = w / (2.0 * std::max(half.x, half.y)) / 1.0001;
+  if (!(ratio >= (1 << kGridMinLog2))) return 2;
+  const int g = std::min(static_cast<int>(std::floor(std::log2(ratio))), kGridMaxLog2);
+  const double n = 1 << g;
+  const auto cell = [&](double v, double lo, double size) { return static_cast<int>(std::floor((v - lo) * n / size)); };
+  const int c0 = cell(centre.x - half.x, b.min.x, w), c1 = cell(centre.x + half.x, b.min.x, w);
+  const int r0 = cell(centre.y - half.y, b.min.y, h), r1 = cell(centre.y + half.y, b.min.y, h);
+  if (c1 - c0 > 1 || r1 - r0 > 1) return 2;
+  return block_state(bands, g, c0 + 1, r0 + 1);  // the cells c0 .. c0 + 1, r0 .. r0 + 1
+}
+
 double band_box_coverage(const GlyphBands& bands, Vec2 centre, Vec2 half) {
   if (bands.empty()) return 0.0;
+  if (const int state = grid_state(bands, centre, half); state != 2) return state;
   const int level = band_level(bands, half.y);
   const int n = 1 << level;
   const double h = (bands.box.max.y - bands.box.min.y) / n;

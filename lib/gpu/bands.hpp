@@ -7,7 +7,8 @@
 //
 // Texel layout of one glyph, from its first texel (RGBA32F, a row-major
 // texture kBandTextureWidth texels wide; offsets relative to that texel):
-//   texel 0: (first entry texel E, first reference texel R, 0, 0).
+//   texel 0: (first entry texel E, first reference texel R, first cell
+//            texel G, 0); G = 0: no cell grids.
 //   headers: band b (level L, band k: b = 2^L - 1 + k, L = 0..levels-1) in
 //            texel 1 + b / 2, components 2 (b % 2) and 2 (b % 2) + 1: (its
 //            first entry j, relative to E, and its entry count).
@@ -15,14 +16,26 @@
 //            quadratic (p0, c, p2) with end weights 1 and middle weight w, in
 //            the outline's units, directed with the fill on its left (y up).
 //            A line is stored as the conic whose control point is its
-//            midpoint, w = 1 (its segment area is 0), with line = 1 (the
-//            shader takes a shorter path for it; 0 for a conic).
+//            midpoint, w = 1 (its segment area is 0), with line = 1 (0
+//            for a conic; the shader reads both through one path).
 //   entries: texel E + j, one per piece in a band: (largest x, smallest x,
 //            y of p0, y of p2), a band's entries by decreasing largest x, so
 //            the loop over them stops at the first entry wholly left of the
 //            pixel (such pieces add nothing, below); a piece wholly right of
 //            it adds its height within the rows, read from the entry alone.
 //   refs:    entry j's piece texel in component j % 4 of texel R + j / 4.
+//   cells:   grids of n x n square cells (n = 2^g, g = kGridMinLog2 ..
+//            kGridMaxLog2) over the square of the box's larger side from its
+//            lower left corner, each cell 0 (wholly outside the glyph), 1
+//            (wholly inside) or 2 (a piece reaches it); stored per block of
+//            2 x 2 cells, (column - 1 .. column, row - 1 .. row), column and
+//            row 0 .. n: 0 or 1 where all four are, else 2, in 2 bits. Block
+//            i = row (n + 1) + column of grid g, from texel G plus the
+//            coarser grids' ceil((n + 1)^2 / 32) texels each: bits 2 (i % 8)
+//            of component (i / 8) % 4 of texel i / 32. A pixel box no larger
+//            than a cell lies within one block: where the block is 0 or 1
+//            that is its coverage, exactly, without the loop over its band
+//            (most pixels of a large glyph), from one texel.
 // Level L has 2^L bands; with H = (box height) / 2^L, band k holds the pieces
 // that reach into [y0 + k H, y0 + (k + 2) H]: overlapping bands, so a pixel
 // row at most H tall lies wholly in band floor((row's bottom - y0) / H).
@@ -41,6 +54,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "curvetext/geometry.hpp"
@@ -69,11 +83,17 @@ inline constexpr int kBandTextureWidthLog2 = 10;
 inline constexpr int kBandTextureWidth = 1 << kBandTextureWidthLog2;
 // Most levels a glyph's bands have (2^kMaxBandLevels - 1 bands in all).
 inline constexpr int kMaxBandLevels = 5;
+// The cell grids: 8 x 8 and 16 x 16 cells (a pixel reads the finest whose
+// cells are at least its size; 13 texels in all; a 32 x 32 grid doubled
+// the grids' building time for a few per cent at 64 px, docs/performance.md).
+inline constexpr int kGridMinLog2 = 3;
+inline constexpr int kGridMaxLog2 = 4;
 
 struct GlyphBands {
   std::vector<std::array<float, 4>> texels;
-  Box box;         // of the pieces, in the float values the texels and instances carry
-  int levels = 0;  // 0: nothing to draw
+  Box box;              // of the pieces, in the float values the texels and instances carry
+  int levels = 0;       // 0: nothing to draw
+  bool conics = false;  // a piece has a middle weight other than 1 (the shader's CURVETEXT_CONICS)
   std::size_t pieces = 0, entries = 0;
   bool empty() const { return levels == 0; }
   std::size_t bytes() const { return texels.size() * sizeof(texels[0]); }
@@ -84,6 +104,8 @@ struct BandScratch {
   std::vector<BandPiece> pieces;
   std::vector<std::uint32_t> order, refs, next;
   std::vector<std::array<float, 4>> entries;
+  std::vector<std::uint8_t> cells, padded;
+  std::vector<int> delta;
 };
 
 void build_bands(const Mesh& mesh, GlyphBands& out, BandScratch& scratch);
@@ -112,5 +134,12 @@ double box_coverage(std::span<const BandPiece> pieces, Vec2 centre, Vec2 half);
 double band_box_coverage(const GlyphBands& bands, Vec2 centre, Vec2 half);
 // The level a box of half-height `half_y` reads (the shader's choice).
 int band_level(const GlyphBands& bands, double half_y);
+// The state of the cells under the box (0: all outside, 1: all inside, 2:
+// the loop decides), as the shader reads them.
+int grid_state(const GlyphBands& bands, Vec2 centre, Vec2 half);
+// The state of the cells column - 1 .. column, row - 1 .. row of grid g
+// together (0 or 1 where all four are, else 2; cells beyond the grid are 0),
+// as packed.
+int block_state(const GlyphBands& bands, int g, int column, int row);
 
 }  // namespace curvetext::gpu

@@ -277,6 +277,7 @@ void band_instances(std::span<const CacheImpl::Packed> glyphs, std::span<const P
     auto it = std::find_if(pages.begin(), pages.end(), [&](const auto& p) { return p.first == g.bands.page; });
     if (it == pages.end()) it = pages.insert(pages.end(), {g.bands.page, {}});
     const Box& box = g.bands.box;
+    impl.band_conics = impl.band_conics || g.bands.conics;
     it->second.insert(it->second.end(),
                       {static_cast<float>(box.min.x), static_cast<float>(box.min.y), static_cast<float>(box.max.x),
                        static_cast<float>(box.max.y), static_cast<float>(placed[i].x), static_cast<float>(placed[i].y),
@@ -374,6 +375,7 @@ bool append_bands(const GlyphBands& bands, std::shared_ptr<BandPage>& page_slot,
   out.page = page_slot;
   out.first = static_cast<int>(first);
   out.levels = bands.levels;
+  out.conics = bands.conics;
   out.box = bands.box;
   out.bytes = bands.bytes();
   return true;
@@ -393,6 +395,7 @@ void add_mesh_bands(BatchImpl& impl, std::span<const Mesh* const> meshes, std::s
     if (!append_bands(bands, page, ref)) return;  // too large for a page: the mesh path only
     if (runs.empty() || page.get() != before) runs.push_back({page, static_cast<GLint>(instances.size() / 8), 0});
     ++runs.back().count;
+    impl.band_conics = impl.band_conics || ref.conics;
     const Box& box = ref.box;
     instances.insert(instances.end(),
                      {static_cast<float>(box.min.x), static_cast<float>(box.min.y), static_cast<float>(box.max.x),

@@ -66,6 +66,7 @@ struct BandPage {
 struct GlyphBandRef {
   std::shared_ptr<BandPage> page;  // null: no bands (not built, or too large for a page)
   int first = 0, levels = 0;
+  bool conics = false;  // GlyphBands::conics
   Box box;
   std::size_t bytes = 0;  // its texels
   bool tried = false;     // built (or found too large) already
@@ -142,6 +143,7 @@ struct DrawBatch::Impl {
   GLuint bands_vbo = 0;
   std::vector<BandRun> band_runs;
   bool banded = false;
+  bool band_conics = false;  // a placed glyph's bands have conics (GlyphBands::conics)
 
   // Colour bitmaps: textured quads (6 vertices of x, y, u, v each, outline
   // units and texture coordinates), one run per atlas page.

@@ -92,11 +92,13 @@ void compile(const Shader& shader, GLenum type, const char* source, bool gles, c
 
 // The band shaders (bands.vert/frag.glsl) are GLSL ES 3.00 / desktop 3.30
 // (texelFetch, integer operations, flat varyings); the preamble is only the
-// #version line and the band texture's width.
+// #version line, the band texture's width and the cell grids' sizes.
 void compile_glsl3(const Shader& shader, GLenum type, const char* source, bool gles, const std::string& defines) {
-  char width[96];
-  std::snprintf(width, sizeof width, "#define CURVETEXT_BAND_WIDTH %d\n#define CURVETEXT_BAND_WIDTH_LOG2 %d\n",
-                gpu::kBandTextureWidth, gpu::kBandTextureWidthLog2);
+  char width[192];
+  std::snprintf(width, sizeof width,
+                "#define CURVETEXT_BAND_WIDTH %d\n#define CURVETEXT_BAND_WIDTH_LOG2 %d\n"
+                "#define CURVETEXT_GRID_MIN_LOG2 %d\n#define CURVETEXT_GRID_MAX_LOG2 %d\n",
+                gpu::kBandTextureWidth, gpu::kBandTextureWidthLog2, gpu::kGridMinLog2, gpu::kGridMaxLog2);
   compile_text(shader, type,
                std::string(gles ? "#version 300 es\n" : "#version 330 core\n") + width + defines + source);
 }
@@ -212,7 +214,7 @@ struct Renderer::Impl {
     ProgramUniforms view;
     GLint half = -1, bands = -1;
   };
-  BandProgram band_program[2];
+  BandProgram band_program[2][2];  // [gamma][conics]
   GLuint corner_vbo = 0;
   std::size_t band_draws = 0;
   // Colour bitmaps: textured quads (bitmap.vert/frag.glsl).
@@ -344,7 +346,7 @@ struct Renderer::Impl {
   // Each program compiled and linked on first use (Error(Gl) if it fails).
   void make_curve_program();
   void make_area_programs(bool gamma);  // area_program[gamma]
-  const BandProgram& make_band_program(bool gamma);
+  const BandProgram& make_band_program(bool gamma, bool conics);
   const QuadProgram& composite_program(bool box, bool gamma);
   const QuadProgram& resolve_program();
   const QuadProgram& paint_program(bool box, bool gamma);
@@ -363,10 +365,11 @@ struct Renderer::Impl {
   Impl(const Impl&) = delete;
   Impl& operator=(const Impl&) = delete;
   ~Impl() {
-    for (GLuint p : {program, area_program[0][0], area_program[0][1], area_program[1][0], area_program[1][1],
-                     resolve.id, composite[0][0].id, composite[0][1].id, composite[1][0].id, composite[1][1].id,
-                     bitmap_program, paint_composite[0][0].id, paint_composite[0][1].id, paint_composite[1][0].id,
-                     paint_composite[1][1].id, band_program[0].id, band_program[1].id})
+    for (GLuint p :
+         {program, area_program[0][0], area_program[0][1], area_program[1][0], area_program[1][1], resolve.id,
+          composite[0][0].id, composite[0][1].id, composite[1][0].id, composite[1][1].id, bitmap_program,
+          paint_composite[0][0].id, paint_composite[0][1].id, paint_composite[1][0].id, paint_composite[1][1].id,
+          band_program[0][0].id, band_program[0][1].id, band_program[1][0].id, band_program[1][1].id})
       if (p != 0) glDeleteProgram(p);
     if (quad_vbo != 0) glDeleteBuffers(1, &quad_vbo);
     if (corner_vbo != 0) glDeleteBuffers(1, &corner_vbo);
@@ -444,13 +447,14 @@ void Renderer::Impl::make_area_programs(bool gamma) {
   }
 }
 
-const Renderer::Impl::BandProgram& Renderer::Impl::make_band_program(bool gamma) {
-  BandProgram& p = band_program[gamma ? 1 : 0];
+const Renderer::Impl::BandProgram& Renderer::Impl::make_band_program(bool gamma, bool conics) {
+  BandProgram& p = band_program[gamma ? 1 : 0][conics ? 1 : 0];
   if (p.id != 0) return p;
   Shader vs(GL_VERTEX_SHADER), fs(GL_FRAGMENT_SHADER);
   compile_glsl3(vs, GL_VERTEX_SHADER, shader_source::bands_vert_glsl, gles, "");
   compile_glsl3(fs, GL_FRAGMENT_SHADER, shader_source::bands_frag_glsl, gles,
-                std::string("#define CURVETEXT_GAMMA ") + (gamma ? "1" : "0") + "\n");
+                std::string("#define CURVETEXT_GAMMA ") + (gamma ? "1" : "0") + "\n#define CURVETEXT_CONICS " +
+                    (conics ? "1" : "0") + "\n");
   p.id = link_program(vs, fs, {"a_corner", "a_rect", "a_place"}, "band program");
   p.view = ProgramUniforms::of(p.id);
   p.half = glGetUniformLocation(p.id, "u_half");
@@ -958,7 +962,7 @@ bool Renderer::Impl::draw_bands(const gpu::BatchImpl& b, const Transform& full, 
   const double sx = std::abs(m[0] / m[8]), sy = std::abs(m[4] / m[8]);
   if (!(sx > 0.0) || !(sy > 0.0) || !std::isfinite(sx) || !std::isfinite(sy)) return false;
   const bool gamma = coverage_exponent(options.gamma) != 1.0f;
-  const BandProgram& p = make_band_program(gamma);
+  const BandProgram& p = make_band_program(gamma, b.band_conics);
   glUseProgram(p.id);
   set_view(p.view, full, vw, vh, pass_depth);
   glUniform2f(p.half, static_cast<float>(0.5 / sx), static_cast<float>(0.5 / sy));
