@@ -291,6 +291,7 @@ TEST(TextBlockEffects, ParagraphOutlineAndShadowMatchTheReference) {
 // size of the same level of detail band (40 and 48 px/em) neither; another
 // width builds.
 TEST(TextEffectsCache, OutlinesAreBuiltOncePerGlyphAndWidthInEms) {
+  (void)test::gpu();  // the cache uploads meshes: a current context, also when this test runs alone
   GlyphCache cache;
   const Font font = Font::open(test::kDejaVuSans);
   const ShapedLine line = shape_line(font, "cache");
