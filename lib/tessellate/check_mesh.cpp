@@ -110,8 +110,13 @@ double outline_area(const Outline& outline, FillRule rule, CheckScratch& scratch
   for (std::size_t i = 0; i < n; ++i) {
     Outline single;
     single.contours().push_back(contours[i]);
-    area[i] = single.signed_area();
     box[i] = single.control_box();
+    // The area about the contour's own corner: far from the origin, the
+    // products of absolute coordinates round away a tiny contour's area
+    // (a 1e-9 triangle at (1, 1)), which the mesh's triangles keep.
+    for (Segment& s : single.contours()[0].segments)
+      for (Vec2& p : s.p) p = p - box[i].min;
+    area[i] = single.signed_area();
     probes[i] = probe_points(contours[i]);
   }
   std::vector<int> outside(n, 0);
