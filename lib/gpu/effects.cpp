@@ -152,58 +152,11 @@ struct EffectPasses {
   void ensure_targets(int need_w, int need_h);
 };
 
-namespace {
-
-GLuint compile_shader(GLenum type, const char* source, bool gles) {
-  std::string text = gles ? "#version 100\n" : "#version 330 core\n#define texture2D texture\n";
-  if (!gles)
-    text += type == GL_VERTEX_SHADER
-                ? "#define attribute in\n#define varying out\n"
-                : "#define varying in\nout vec4 curvetext_frag_color;\n#define gl_FragColor curvetext_frag_color\n";
-  text += "#define CURVETEXT_MAX_BLUR_RADIUS " + std::to_string(kMaxBlurRadius) + "\n";
-  text += source;
-  const GLuint shader = glCreateShader(type);
-  if (shader == 0) throw Error(ErrorCode::Gl, "glCreateShader failed");
-  const char* src = text.c_str();
-  glShaderSource(shader, 1, &src, nullptr);
-  glCompileShader(shader);
-  GLint ok = GL_FALSE;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (ok != GL_TRUE) {
-    char log[1024] = {};
-    glGetShaderInfoLog(shader, sizeof log - 1, nullptr, log);
-    glDeleteShader(shader);
-    throw Error(ErrorCode::Gl, std::string("shadow shader failed to compile: ") + log);
-  }
-  return shader;
-}
-
-}  // namespace
-
 void EffectPasses::make_program(const ContextInfo& info) {
   if (program != 0) return;
-  const GLuint vs = compile_shader(GL_VERTEX_SHADER, shader_source::shadow_vert_glsl, info.gles);
-  GLuint fs = 0;
-  try {
-    fs = compile_shader(GL_FRAGMENT_SHADER, shader_source::shadow_frag_glsl, info.gles);
-  } catch (...) {
-    glDeleteShader(vs);
-    throw;
-  }
-  const GLuint p = glCreateProgram();
-  glAttachShader(p, vs);
-  glAttachShader(p, fs);
-  glBindAttribLocation(p, 0, "a_pixel");
-  glBindAttribLocation(p, 1, "a_uv");
-  glLinkProgram(p);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
-  GLint ok = GL_FALSE;
-  glGetProgramiv(p, GL_LINK_STATUS, &ok);
-  if (ok != GL_TRUE) {
-    glDeleteProgram(p);
-    throw Error(ErrorCode::Gl, "shadow program failed to link");
-  }
+  const GLuint p =
+      glsl1_program(shader_source::shadow_vert_glsl, shader_source::shadow_frag_glsl, info.gles, {"a_pixel", "a_uv"},
+                    "the shadow program", "#define CURVETEXT_MAX_BLUR_RADIUS " + std::to_string(kMaxBlurRadius) + "\n");
   program = p;
   u_viewport = glGetUniformLocation(p, "u_viewport");
   u_depth = glGetUniformLocation(p, "u_depth");

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+
+#include "curvetext/error.hpp"
 
 namespace curvetext::gpu {
 
@@ -52,6 +55,85 @@ Blending bound_framebuffer_blending(bool gles, bool gl3, GLuint draw_framebuffer
                                           &encoding);
   glGetError();  // a framebuffer without that attachment: not sRGB
   return encoding == GL_SRGB ? Blending::Linear : Blending::Srgb;
+}
+
+std::string glsl1_preamble(GLenum type, bool gles) {
+  if (gles) return "#version 100\n";
+  std::string p = "#version 330 core\n#define texture2D texture\n";
+  if (type == GL_VERTEX_SHADER) {
+    p += "#define attribute in\n#define varying out\n";
+  } else {
+    p += "#define varying in\nout vec4 curvetext_frag_color;\n#define gl_FragColor curvetext_frag_color\n";
+  }
+  return p;
+}
+
+namespace {
+
+std::string info_log(GLuint object, bool program) {
+  GLint len = 0;
+  if (program) {
+    glGetProgramiv(object, GL_INFO_LOG_LENGTH, &len);
+  } else {
+    glGetShaderiv(object, GL_INFO_LOG_LENGTH, &len);
+  }
+  std::string log(static_cast<std::size_t>(std::max(len, 1)), '\0');
+  if (program) {
+    glGetProgramInfoLog(object, len, nullptr, log.data());
+  } else {
+    glGetShaderInfoLog(object, len, nullptr, log.data());
+  }
+  log.resize(std::strlen(log.c_str()));
+  std::replace(log.begin(), log.end(), '\n', ' ');
+  return log;
+}
+
+GLuint glsl1_shader(GLenum type, const char* source, bool gles, const std::string& defines, const char* what) {
+  const std::string text = glsl1_preamble(type, gles) + defines + source;
+  const GLuint shader = glCreateShader(type);
+  if (shader == 0) throw Error(ErrorCode::Gl, std::string(what) + ": glCreateShader failed");
+  const char* src = text.c_str();
+  glShaderSource(shader, 1, &src, nullptr);
+  glCompileShader(shader);
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    const std::string log = info_log(shader, false);
+    glDeleteShader(shader);
+    throw Error(ErrorCode::Gl, std::string(what) + (type == GL_VERTEX_SHADER ? " vertex" : " fragment") +
+                                   " shader failed to compile: " + log);
+  }
+  return shader;
+}
+
+}  // namespace
+
+GLuint glsl1_program(const char* vertex, const char* fragment, bool gles, std::initializer_list<const char*> attributes,
+                     const char* what, const std::string& defines) {
+  const GLuint vs = glsl1_shader(GL_VERTEX_SHADER, vertex, gles, defines, what);
+  GLuint fs = 0;
+  try {
+    fs = glsl1_shader(GL_FRAGMENT_SHADER, fragment, gles, defines, what);
+  } catch (...) {
+    glDeleteShader(vs);
+    throw;
+  }
+  const GLuint program = glCreateProgram();
+  glAttachShader(program, vs);
+  glAttachShader(program, fs);
+  GLuint location = 0;
+  for (const char* name : attributes) glBindAttribLocation(program, location++, name);
+  glLinkProgram(program);
+  glDeleteShader(vs);
+  glDeleteShader(fs);
+  GLint ok = GL_FALSE;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    const std::string log = info_log(program, true);
+    glDeleteProgram(program);
+    throw Error(ErrorCode::Gl, std::string(what) + " failed to link: " + log);
+  }
+  return program;
 }
 
 }  // namespace curvetext::gpu

@@ -5,6 +5,7 @@
 #include <GLES3/gl3.h>
 
 #include <array>
+#include <initializer_list>
 #include <string>
 
 #include "curvetext/color.hpp"
@@ -19,6 +20,17 @@ std::string hex(GLenum e);
 // library's framebuffers and coverage textures. Leaves no texture bound (the
 // caller restores the application's binding).
 GLuint new_texture(GLint internal_format, GLenum format, int w, int h);
+
+// The #version line and renames that let a GLSL ES 1.00 shader file (no
+// #version of its own) compile as desktop GLSL 3.30 core too.
+std::string glsl1_preamble(GLenum type, bool gles);
+
+// A program from two GLSL ES 1.00 shader files, each after the preamble and
+// `defines`, its attributes bound to locations 0, 1, ... in the order given.
+// Error(Gl) naming `what`, with the compile or link log, on failure; nothing
+// is left allocated then.
+GLuint glsl1_program(const char* vertex, const char* fragment, bool gles, std::initializer_list<const char*> attributes,
+                     const char* what, const std::string& defines = "");
 
 // sRGB transfer functions (IEC 61966-2-1), on values in [0, 1].
 float srgb_to_linear(float c);

@@ -11,58 +11,11 @@
 
 namespace curvetext::gpu {
 
-namespace {
-
-// GLSL ES 1.00 files; desktop core profiles get 3.30 with the renamed
-// built-ins mapped back (as the renderer's programs).
-GLuint compile(GLenum type, const char* source, bool gles) {
-  std::string text = gles ? "#version 100\n" : "#version 330 core\n#define texture2D texture\n";
-  if (!gles)
-    text += type == GL_VERTEX_SHADER
-                ? "#define attribute in\n#define varying out\n"
-                : "#define varying in\nout vec4 curvetext_frag_color;\n#define gl_FragColor curvetext_frag_color\n";
-  text += source;
-  const GLuint shader = glCreateShader(type);
-  const char* src = text.c_str();
-  glShaderSource(shader, 1, &src, nullptr);
-  glCompileShader(shader);
-  GLint ok = GL_FALSE;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (ok != GL_TRUE) {
-    char log[512] = {0};
-    glGetShaderInfoLog(shader, sizeof log - 1, nullptr, log);
-    glDeleteShader(shader);
-    throw Error(ErrorCode::Gl, std::string("the layer shader failed to compile: ") + log);
-  }
-  return shader;
-}
-
-}  // namespace
-
 void LayerPrograms::make(const ContextInfo& info) {
   if (program_ != 0) return;
   info_ = info;
-  const GLuint vs = compile(GL_VERTEX_SHADER, shader_source::layer_vert_glsl, info.gles);
-  GLuint fs = 0;
-  try {
-    fs = compile(GL_FRAGMENT_SHADER, shader_source::layer_frag_glsl, info.gles);
-  } catch (...) {
-    glDeleteShader(vs);
-    throw;
-  }
-  const GLuint program = glCreateProgram();
-  glAttachShader(program, vs);
-  glAttachShader(program, fs);
-  glBindAttribLocation(program, 0, "a_clip");
-  glLinkProgram(program);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
-  GLint ok = GL_FALSE;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (ok != GL_TRUE) {
-    glDeleteProgram(program);
-    throw Error(ErrorCode::Gl, "the layer program failed to link");
-  }
+  const GLuint program = glsl1_program(shader_source::layer_vert_glsl, shader_source::layer_frag_glsl, info.gles,
+                                       {"a_clip"}, "the layer program");
   program_ = program;
   u_texture_ = glGetUniformLocation(program, "u_texture");
   u_opacity_ = glGetUniformLocation(program, "u_opacity");

@@ -27,6 +27,7 @@
 
 namespace curvetext {
 
+using gpu::glsl1_preamble;
 using gpu::hex;
 using gpu::new_texture;
 using gpu::premultiplied;
@@ -51,21 +52,8 @@ bool is_gles() {
 
 void compile_text(const Shader& shader, GLenum type, const std::string& text);
 
-// The shader files are GLSL ES 1.00 without a #version line; desktop core
-// profiles (GUI toolkits) get 3.30 with the renamed built-ins mapped back.
-std::string preamble(GLenum type, bool gles) {
-  if (gles) return "#version 100\n";
-  std::string p = "#version 330 core\n#define texture2D texture\n";
-  if (type == GL_VERTEX_SHADER) {
-    p += "#define attribute in\n#define varying out\n";
-  } else {
-    p += "#define varying in\nout vec4 curvetext_frag_color;\n#define gl_FragColor curvetext_frag_color\n";
-  }
-  return p;
-}
-
 void compile(const Shader& shader, GLenum type, const char* source, bool gles, const char* defines_ = "") {
-  std::string text = preamble(type, gles);
+  std::string text = glsl1_preamble(type, gles);  // (the files have no #version line)
   text += defines_;
   // Tolerances the shaders share with the library (tolerances.hpp), named
   // there only; preprocessor lines may precede #extension.
