@@ -424,7 +424,7 @@ std::unique_ptr<BatchImpl> text_block(CacheImpl& cache, const Font& font, std::s
 
 }  // namespace gpu
 
-DrawBatch DrawBatch::from_text(GlyphCache& cache, const Font& font, const ShapedLine& line, double pixels_per_em) {
+std::vector<PlacedGlyph> gpu::placed_glyphs(const ShapedLine& line) {
   std::vector<PlacedGlyph> placed;
   placed.reserve(line.glyphs.size());
   double pen_x = 0.0, pen_y = 0.0;
@@ -433,7 +433,11 @@ DrawBatch DrawBatch::from_text(GlyphCache& cache, const Font& font, const Shaped
     pen_x += g.x_advance;
     pen_y += g.y_advance;
   }
-  return from_glyphs(cache, font, placed, pixels_per_em);
+  return placed;
+}
+
+DrawBatch DrawBatch::from_text(GlyphCache& cache, const Font& font, const ShapedLine& line, double pixels_per_em) {
+  return from_glyphs(cache, font, gpu::placed_glyphs(line), pixels_per_em);
 }
 
 DrawBatch DrawBatch::from_glyphs(GlyphCache& cache, const Font& font, std::span<const PlacedGlyph> glyphs,

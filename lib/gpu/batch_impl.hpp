@@ -287,6 +287,8 @@ bool append_bands(const GlyphBands& bands, std::shared_ptr<BandPage>& page_slot,
 // it in one pass (the shapes' and tests' way to the band path). Leaves it
 // without bands if one is too large for a page.
 void add_mesh_bands(BatchImpl& impl, std::span<const Mesh* const> meshes, std::span<const Vec2> offsets);
+// A shaped line's glyphs at their pen positions (font units, from the origin).
+std::vector<PlacedGlyph> placed_glyphs(const ShapedLine& line);
 }  // namespace gpu
 
 }  // namespace curvetext

@@ -65,15 +65,7 @@ EffectBatch EffectBatch::from_glyphs(GlyphCache& cache, const Font& font, std::s
 
 EffectBatch EffectBatch::from_text(GlyphCache& cache, const Font& font, const ShapedLine& line, double pixels_per_em,
                                    const TextEffects& effects) {
-  std::vector<PlacedGlyph> placed;
-  placed.reserve(line.glyphs.size());
-  double pen_x = 0.0, pen_y = 0.0;
-  for (const ShapedGlyph& g : line.glyphs) {
-    placed.push_back(PlacedGlyph{g.glyph_id, pen_x + g.x_offset, pen_y + g.y_offset});
-    pen_x += g.x_advance;
-    pen_y += g.y_advance;
-  }
-  return from_glyphs(cache, font, placed, pixels_per_em, effects);
+  return from_glyphs(cache, font, gpu::placed_glyphs(line), pixels_per_em, effects);
 }
 
 void EffectBatch::draw_layer(Renderer& renderer, const Placement& at, const DrawOptions& options,
