@@ -18,9 +18,11 @@
 #include "curvetext/error.hpp"
 #include "curvetext/headless.hpp"
 #include "curvetext/image.hpp"
+#include "curvetext/image_style.hpp"
 #include "curvetext/renderer.hpp"
 #include "curvetext/font.hpp"
 #include "curvetext/shaping.hpp"
+#include "curvetext/text_image.hpp"
 #include "gpu/bands.hpp"
 #include "gpu/batch_impl.hpp"
 #include "gpu/vertex_format.hpp"
@@ -577,6 +579,47 @@ TEST(Bands, ShaderMatchesCpuReferenceInOnePass) {
   renderer.draw(batch, Placement{16.0 / fm.units_per_em, 10, 30, Transform::rotation(10.0)},
                 DrawOptions(Color{0, 0, 0, 1}, AntiAliasing::Full));
   EXPECT_EQ(renderer.offscreen_passes(), passes + 1);
+}
+
+// `auto` is full wherever the renderer draws a text block from its curve
+// bands (at or below vbaa's edge error, no offscreen pass), else vbaa up to
+// kAutoVbaaMaxPx: a small line drawn with auto is then full's image, pixel
+// for pixel, and costs no offscreen pass; where the block has no bands (a
+// GLES 2 context) auto is vbaa's.
+TEST(Bands, AutoIsFullWhereBandsDraw) {
+  context();
+  const Font font = Font::open(test::kDejaVuSans);
+  GlyphCache cache;
+  Renderer renderer;
+  const DrawBatch batch = DrawBatch::from_text(cache, font, shape_line(font, "auto"), 14.0);
+  const double scale = 14.0 / font.metrics().units_per_em;
+  for (const Placement& placement :
+       {Placement{scale, 2.0, 14.0}, Placement{scale, 2.0, 14.0, Transform::rotation(10.0)}}) {
+    const bool bands = renderer.draws_from_bands(batch, placement);
+    EXPECT_EQ(resolve_antialiasing(AntiAliasing::Auto, 14.0, renderer, batch, placement),
+              bands ? AntiAliasing::Full : AntiAliasing::Vbaa);
+    EXPECT_EQ(resolve_antialiasing(AntiAliasing::Curves, 14.0, renderer, batch, placement), AntiAliasing::Curves);
+  }
+  EXPECT_EQ(renderer.draws_from_bands(batch, Placement{scale, 2.0, 14.0}), gpu::context_instances());
+
+  TextImageOptions options;
+  options.size_px = 14.0;
+  options.margin_px = 3.0;
+  const TextImageLayout layout = layout_text_image(font, "Auto, 14 px", options);
+  options.antialiasing = AntiAliasing::Full;
+  const Image full = render_text_image(renderer, cache, font, layout, options);
+  options.antialiasing = AntiAliasing::Vbaa;
+  const Image vbaa = render_text_image(renderer, cache, font, layout, options);
+  options.antialiasing = AntiAliasing::Auto;
+  const std::size_t passes = renderer.offscreen_passes();
+  const Image automatic = render_text_image(renderer, cache, font, layout, options);
+  ASSERT_NE(full.rgba, vbaa.rgba);  // else the comparison below could not tell them apart
+  if (gpu::context_instances()) {
+    EXPECT_EQ(automatic.rgba, full.rgba);
+    EXPECT_EQ(renderer.offscreen_passes(), passes);
+  } else {
+    EXPECT_EQ(automatic.rgba, vbaa.rgba);
+  }
 }
 
 // A block of N placed glyphs uploads bytes in proportion to N: instanced, 40

@@ -246,10 +246,11 @@ TEST(ParagraphTransform, ImageIsTheTransformedBoundingBox) {
   EXPECT_THROW(render_paragraph_image(gpu().renderer, gpu().cache, p, options), Error);
 }
 
-// auto resolves per run from its pixels per em on screen, as for one line:
-// vbaa at 12 px (the same image as vbaa, issue 4's target edge <= 0.02),
-// full when a scale puts the em above tolerance::kAutoVbaaMaxPx.
-TEST(ParagraphAntialiasing, AutoIsVbaaForSmallTextAndFullForLarge) {
+// auto resolves per run: full where the run's block draws from its curve
+// bands (GLES 3 / GL 3.3), else from its pixels per em on screen, as for one
+// line: vbaa at 12 px (issue 4's target edge <= 0.02), full when a scale puts
+// the em above tolerance::kAutoVbaaMaxPx.
+TEST(ParagraphAntialiasing, AutoIsFullWhereBandsDrawElseVbaaForSmallText) {
   FontCollection fonts;
   const Paragraph small = styled_paragraph(fonts, 12, 120);
   ParagraphImageOptions options;
@@ -258,16 +259,18 @@ TEST(ParagraphAntialiasing, AutoIsVbaaForSmallTextAndFullForLarge) {
   expect_styled("auto_12px", autod, 0.02, 0.03);
   options.antialiasing = AntiAliasing::Vbaa;
   const Styled vbaa = render_styled(small, options);
-  EXPECT_EQ(autod.result.value, vbaa.result.value) << "auto at 12 px is not vbaa";
   options.antialiasing = AntiAliasing::Full;
   const Styled full = render_styled(small, options);
   std::printf("12 px: vbaa edge %.5f, full edge %.5f\n", vbaa.stats.edge_mean_abs, full.stats.edge_mean_abs);
+  ASSERT_NE(full.result.value, vbaa.result.value);
   if (gpu::context_instances()) {
     // full in one pass from curve bands (docs/design.md section 9): no
     // coverage texture between it and the exact areas, and no worse than vbaa.
     EXPECT_LE(full.stats.edge_mean_abs, vbaa.stats.edge_mean_abs);
+    EXPECT_EQ(autod.result.value, full.result.value) << "auto at 12 px is not full where bands draw";
   } else {
     EXPECT_LT(vbaa.stats.edge_mean_abs, full.stats.edge_mean_abs);
+    EXPECT_EQ(autod.result.value, vbaa.result.value) << "auto at 12 px is not vbaa without bands";
   }
 
   // 200 px per em scaled 2x: 400 px on screen, above 384.

@@ -53,6 +53,12 @@ AntiAliasing resolve_antialiasing(AntiAliasing aa, double on_screen_px) {
   return on_screen_px <= tolerance::kAutoVbaaMaxPx ? AntiAliasing::Vbaa : AntiAliasing::Full;
 }
 
+AntiAliasing resolve_antialiasing(AntiAliasing aa, double on_screen_px, const Renderer& renderer,
+                                  const DrawBatch& batch, const Placement& placement) {
+  if (aa == AntiAliasing::Auto && renderer.draws_from_bands(batch, placement)) return AntiAliasing::Full;
+  return resolve_antialiasing(aa, on_screen_px);
+}
+
 DrawOptions draw_options(const ImageStyle& style, Color color, double on_screen_px) {
   check_coverage_gamma(style.gamma);
   DrawOptions draw;

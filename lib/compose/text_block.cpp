@@ -186,13 +186,15 @@ void TextBlock::draw(Renderer& renderer, double x, double y, const DrawOptions& 
 
 void TextBlock::draw_group(Renderer& renderer, const Group& g, const Placement& at, const DrawOptions& options,
                            const Color& color) const {
-  DrawOptions draw = options;
-  draw.color = color;
-  draw.antialiasing = resolve_antialiasing(options.antialiasing, g.size_px * on_screen_scale_);
   // The glyphs are in font units (y up), the bars and backgrounds in layout
   // pixels with y up, both from the layout box's top-left.
   Placement p = at;
   p.scale = at.scale * g.scale;
+  DrawOptions draw = options;
+  draw.color = color;
+  const double on_screen_px = g.size_px * on_screen_scale_;
+  draw.antialiasing = g.glyphs ? resolve_antialiasing(options.antialiasing, on_screen_px, renderer, *g.glyphs, p)
+                               : resolve_antialiasing(options.antialiasing, on_screen_px);
   if (g.glyphs) renderer.draw(*g.glyphs, p, draw);
   if (g.effects) g.effects->draw_layer(renderer, p, draw, EffectLayer::Fill);
   p.scale = at.scale;

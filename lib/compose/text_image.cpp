@@ -68,8 +68,11 @@ Image render_text_image(Renderer& renderer, GlyphCache& cache, const Font& font,
     return target.read_pixels();
   }
   DrawBatch batch = DrawBatch::from_text(cache, font, layout.line, options.size_px * layout.largest_stretch);
-  // auto: per pixels per em on screen, as for paragraphs (image_style.hpp).
-  const DrawOptions draw = draw_options(options, options.foreground, options.size_px * layout.largest_stretch);
+  // auto: full where the block draws from its bands, else per pixels per em
+  // on screen, as for paragraphs (image_style.hpp).
+  const double on_screen_px = options.size_px * layout.largest_stretch;
+  DrawOptions draw = draw_options(options, options.foreground, on_screen_px);
+  draw.antialiasing = resolve_antialiasing(options.antialiasing, on_screen_px, renderer, batch, layout.placement);
   ImageTarget target;
   target.begin(layout.width, layout.height, options.background, options.blending);
   renderer.draw(batch, layout.placement, draw);

@@ -346,7 +346,10 @@ struct Renderer::Impl {
   void draw_area(const gpu::BatchImpl& b, const Transform& full, float vw, float vh, const std::array<float, 4>& color,
                  float gamma, CurveMode curve_mode, bool accumulate);
   void draw_debug_edges(const gpu::BatchImpl& b, const Transform& full, float vw, float vh);
-  bool draw_bands(const gpu::BatchImpl& b, const Transform& full, float vw, float vh, const DrawOptions& options);
+  // Whether the band program draws `b` under `full` (outline units ->
+  // pixels): draw_bands' precondition.
+  bool bands_serve(const gpu::BatchImpl& b, const Transform& full) const;
+  void draw_bands(const gpu::BatchImpl& b, const Transform& full, float vw, float vh, const DrawOptions& options);
   void draw_bitmaps(const gpu::BatchImpl& b, const Transform& full, float vw, float vh, const DrawOptions& options);
 
   Impl() = default;
@@ -512,16 +515,36 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
 
 Renderer::~Renderer() = default;
 
-void Renderer::draw(const DrawBatch& batch, const Placement& placement, const DrawOptions& options) {
-  Impl& r = *impl_;
+namespace {
+
+void check_placement(const Placement& placement) {
   if (!std::isfinite(placement.scale) || placement.scale == 0.0 || !std::isfinite(placement.origin_x) ||
       !std::isfinite(placement.origin_y) || !std::isfinite(placement.depth_offset)) {
     throw Error(ErrorCode::InvalidArgument,
                 "placement needs a finite non-zero scale, a finite origin and a finite depth offset");
   }
+  placement.transform.validate();
+}
+
+// Outline units -> pixels (x_px = s x + ox, y_px = oy - s y), then the
+// placement's projective transform.
+Transform outline_to_pixels(const Placement& placement) {
+  const double s = placement.scale;
+  return placement.transform * Transform{{s, 0.0, placement.origin_x, 0.0, -s, placement.origin_y, 0.0, 0.0, 1.0}};
+}
+
+}  // namespace
+
+bool Renderer::draws_from_bands(const DrawBatch& batch, const Placement& placement) const {
+  check_placement(placement);
+  return impl_->bands_serve(DrawBatchAccess::impl(batch), outline_to_pixels(placement));
+}
+
+void Renderer::draw(const DrawBatch& batch, const Placement& placement, const DrawOptions& options) {
+  Impl& r = *impl_;
+  check_placement(placement);
   const gpu::BatchImpl& b = DrawBatchAccess::impl(batch);
   if (b.empty()) return;
-  placement.transform.validate();
   gpu::check_no_pending_error("Renderer::draw");
 
   // The application's state comes back as it was when this returns or throws.
@@ -535,11 +558,7 @@ void Renderer::draw(const DrawBatch& batch, const Placement& placement, const Dr
 
   for (int i = 0; i < 3; ++i) r.pass_depth[i] = static_cast<float>(placement.depth[i]);
   r.pass_depth[2] -= static_cast<float>(placement.depth_offset);
-  const double s = placement.scale;
-  // Outline units -> pixels (x_px = s x + ox, y_px = oy - s y), then the
-  // projective transform.
-  const Transform full =
-      placement.transform * Transform{{s, 0.0, placement.origin_x, 0.0, -s, placement.origin_y, 0.0, 0.0, 1.0}};
+  const Transform full = outline_to_pixels(placement);
   if (b.bitmaps()) {
     r.draw_bitmaps(b, full, vw, vh, options);
     return;
@@ -564,9 +583,11 @@ void Renderer::draw(const DrawBatch& batch, const Placement& placement, const Dr
     r.draw_curves(b, full, vw, vh, options);
     return;
   }
-  if (options.antialiasing == AntiAliasing::Full && b.banded && options.curve_mode == CurveMode::Exact &&
-      options.gradient == nullptr && r.draw_bands(b, full, vw, vh, options))
+  if ((options.antialiasing == AntiAliasing::Full || options.antialiasing == AntiAliasing::Auto) &&
+      options.curve_mode == CurveMode::Exact && options.gradient == nullptr && r.bands_serve(b, full)) {
+    r.draw_bands(b, full, vw, vh, options);
     return;
+  }
   if (r.draw_offscreen(b, full, vw, vh, state, options)) return;
   if (options.gradient)
     throw Error(ErrorCode::InvalidArgument, "a gradient cannot be drawn where no coverage buffer fits the block");
@@ -943,12 +964,18 @@ class SamplerScope {
 // Where the application writes depth, the glyphs' quads overlap at one
 // depth: the colour pass leaves depth alone (a glyph would hide its
 // neighbour's fringe), and a second pass writes it where there is ink.
-bool Renderer::Impl::draw_bands(const gpu::BatchImpl& b, const Transform& full, float vw, float vh,
-                                const DrawOptions& options) {
+bool Renderer::Impl::bands_serve(const gpu::BatchImpl& b, const Transform& full) const {
+  if (!b.banded) return false;
   const auto& m = full.m;
   if (m[1] != 0.0 || m[3] != 0.0 || m[6] != 0.0 || m[7] != 0.0 || !(m[8] > 0.0)) return false;
   const double sx = std::abs(m[0] / m[8]), sy = std::abs(m[4] / m[8]);
-  if (!(sx > 0.0) || !(sy > 0.0) || !std::isfinite(sx) || !std::isfinite(sy)) return false;
+  return sx > 0.0 && sy > 0.0 && std::isfinite(sx) && std::isfinite(sy);
+}
+
+void Renderer::Impl::draw_bands(const gpu::BatchImpl& b, const Transform& full, float vw, float vh,
+                                const DrawOptions& options) {
+  const auto& m = full.m;
+  const double sx = std::abs(m[0] / m[8]), sy = std::abs(m[4] / m[8]);
   const bool gamma = coverage_exponent(options.gamma) != 1.0f;
   const BandProgram& p = make_band_program(gamma, b.band_conics);
   glUseProgram(p.id);
@@ -998,7 +1025,6 @@ bool Renderer::Impl::draw_bands(const gpu::BatchImpl& b, const Transform& full, 
   ++band_draws;
   if (GLenum err = glGetError(); err != GL_NO_ERROR)
     throw Error(ErrorCode::Gl, "drawing curve bands failed (GL error " + hex(err) + ")");
-  return true;
 }
 
 // Colour bitmaps: one draw per atlas page, premultiplied source-over into

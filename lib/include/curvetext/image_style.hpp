@@ -36,6 +36,13 @@ struct ImageStyle {
 // tolerance::kAutoVbaaMaxPx, full above (bench/quality_bench). Other modes
 // are returned as they are. Thread-safe.
 CURVETEXT_API AntiAliasing resolve_antialiasing(AntiAliasing aa, double on_screen_px);
+// The same for `batch` drawn by `renderer` under `placement`: `auto` is full
+// where the renderer draws the batch in one pass from its curve bands
+// (Renderer::draws_from_bands: there full's edge error is at or below
+// vbaa's at every size measured, and it draws without an offscreen pass),
+// else as above. The renderer's context must be current.
+CURVETEXT_API AntiAliasing resolve_antialiasing(AntiAliasing aa, double on_screen_px, const Renderer& renderer,
+                                                const DrawBatch& batch, const Placement& placement);
 
 // The style's DrawOptions for one block drawn in `color` (auto resolved for
 // `on_screen_px`). Throws Error(InvalidArgument) for a gamma that is not

@@ -33,7 +33,8 @@ enum class AntiAliasing {
            // texture would exceed the GL maximum)
   Msaa,    // in/out test into a multisampled renderbuffer, resolved (GLES3 / desktop GL;
            // falls back to full where the context has none)
-  Auto,    // per size, what bench/quality_bench measures best (text_image.hpp)
+  Auto,    // full where a text block draws from its curve bands (Renderer::draws_from_bands),
+           // else per size, what bench/quality_bench measures best (image_style.hpp)
 };
 enum class CurveMode {
   Exact,  // F = tau1^2 - 4 w^2 tau0 tau2 (docs/design.md section 3), exact for every weight
@@ -179,6 +180,12 @@ class CURVETEXT_API Renderer {
   // origin or depth offset, or a transform Transform::validate refuses, Error(Gl) when a GL
   // call fails.
   void draw(const DrawBatch& batch, const Placement& placement, const DrawOptions& options);
+  // Whether `full` draws `batch` under `placement` in one pass from its
+  // glyphs' curve bands here (docs/design.md section 9: text blocks whose
+  // glyphs all have bands, on the contexts and under the maps the band
+  // shader serves), with no offscreen pass. `auto` then means full at every
+  // size (image_style.hpp). Throws as draw() does for a bad placement.
+  bool draws_from_bands(const DrawBatch& batch, const Placement& placement) const;
   // Samples per pixel msaa uses here: GL_MAX_SAMPLES capped at 16 (llvmpipe
   // offers 4); 0 where the context has no multisampled renderbuffers.
   int msaa_samples() const;

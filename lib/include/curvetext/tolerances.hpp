@@ -83,8 +83,9 @@ inline constexpr double kFlushCoordinateAbsolute = 1e-30;
 // rounds positions below 2^20 px to within 1/16 px. Shape images draw their
 // meshes relative to the view's centre and refuse geometry reaching further.
 inline constexpr double kMaxGpuCoordinatePx = 1048576.0;
-// `auto` antialiasing uses vbaa up to this many pixels per em (on screen) and
-// full above it, from bench/quality_bench's table: vbaa has the lowest edge
+// `auto` antialiasing, for blocks the renderer does not draw from curve bands
+// (shapes, GLES 2, ...), uses vbaa up to this many pixels per em (on screen)
+// and full above it, from bench/quality_bench's table of the mesh path: vbaa has the lowest edge
 // error (0.0009-0.0020) and largest error (0.021-0.043) of every mode at each
 // measured size, 8 to 384 px (full: 0.0012-0.0058 and 0.041-0.074);
 // above the largest size measured, full's edge error is already 0.0012 and
