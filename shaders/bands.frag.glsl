@@ -199,11 +199,29 @@ float right_of(vec2 q, vec2 a, vec2 d) { return (d.y * (q.x - a.x) - d.x * (q.y 
 // (a near-level edge is not sheared by its slope).
 float edge_x(vec2 a, vec2 d, float y) { return a.x + d.x * clamp((y - a.y) / d.y, 0.0, 1.0); }
 
-// The integral of x - e(y) dy along the arc between t0 and t1.
+// The integral of x - e(y) dy along the arc between t0 and t1: arc_x_dy's
+// chord and segment, less the edge's chord over the same rows.
 float beyond_edge(vec2 p0, vec2 c, vec2 p2, float w, float t0, float t1, vec2 a, vec2 d) {
-  float y0 = y_at(p0, c, p2, w, t0);
-  float y1 = y_at(p0, c, p2, w, t1);
-  return arc_x_dy(p0, c, p2, w, t0, t1) - (y1 - y0) * edge_x(a, d, 0.5 * (y0 + y1));
+  vec3 h0 = conic_at(p0, c, p2, w, t0);
+  vec3 h2 = conic_at(p0, c, p2, w, t1);
+  float k0 = (1.0 - t0) * (1.0 - t1);
+  float k1 = ((1.0 - t0) * t1 + t0 * (1.0 - t1)) * w;
+  float k2 = t0 * t1;
+  vec3 h1 = vec3(k0 * p0 + k1 * c + k2 * p2, k0 + k1 + k2);
+#if CURVETEXT_CONICS
+  vec2 q0 = h0.xy / h0.z;
+  vec2 q2 = h2.xy / h2.z;
+  vec2 m = h1.xy / h1.z - q0;
+  float ws = h1.z / sqrt(h0.z * h2.z);
+#else
+  vec2 q0 = h0.xy;
+  vec2 q2 = h2.xy;
+  vec2 m = h1.xy - q0;
+  float ws = 1.0;
+#endif
+  vec2 chord = q2 - q0;
+  float e = edge_x(a, d, 0.5 * (q0.y + q2.y));
+  return (0.5 * (q0.x + q2.x) - e) * chord.y + segment_ratio(ws) * 0.5 * (m.x * chord.y - m.y * chord.x);
 }
 
 // Both roots of the Bernstein quadratic (b0, b1, b2), ascending; 2 for one
@@ -224,11 +242,10 @@ vec2 bernstein_roots(float b0, float b1, float b2) {
 // piece is monotone in y), plus on the left chain, minus on the right. Its
 // line crossings cut it into a middle part on one side and outer parts on
 // the other; the side is read at the middle of the longest part.
-float edge_term(vec2 p0, vec2 c, vec2 p2, float w, vec2 a, vec2 b) {
+// s0 and s1: the piece's parameters at the heights of a and b.
+float edge_term(vec2 p0, vec2 c, vec2 p2, float w, vec2 a, vec2 b, float s0, float s1) {
   vec2 d = b - a;
   if (d.y == 0.0) return 0.0;
-  float s0 = crossing(p0.y, c.y, p2.y, w, min(a.y, b.y));
-  float s1 = crossing(p0.y, c.y, p2.y, w, max(a.y, b.y));
   float ta = min(s0, s1);
   float tb = max(s0, s1);
   if (!(tb > ta)) return 0.0;
@@ -238,8 +255,10 @@ float edge_term(vec2 p0, vec2 c, vec2 p2, float w, vec2 a, vec2 b) {
   float probe = middle_longest ? 0.5 * (r.x + r.y) : (r.x - ta >= tb - r.y ? 0.5 * (ta + r.x) : 0.5 * (r.y + tb));
   vec3 h = conic_at(p0, c, p2, w, probe);
   bool middle_right = (right_of(h.xy / h.z, a, d) > 0.0) == middle_longest;
-  float mid = r.y > r.x ? beyond_edge(p0, c, p2, w, r.x, r.y, a, d) : 0.0;
-  float sum = middle_right ? mid : beyond_edge(p0, c, p2, w, ta, tb, a, d) - mid;
+  // One arc in all but the rare case of two crossings with the middle left
+  // of the line (a SIMD group then skips the second).
+  float sum = beyond_edge(p0, c, p2, w, middle_right ? r.x : ta, middle_right ? r.y : tb, a, d);
+  if (!middle_right && r.y > r.x) sum -= beyond_edge(p0, c, p2, w, r.x, r.y, a, d);
   return a.y > b.y ? sum : -sum;
 }
 
@@ -258,9 +277,23 @@ float width_integral(vec2 corner[4], float y0, float y1) {
   return sum;
 }
 
+// One piece across the parallelogram's x extent: its four edges' terms (the
+// piece's parameters at the corners' heights shared between them).
+float footprint_piece(vec2 p0, vec2 c, vec2 p2, float w, vec2 corner[4]) {
+  float s0 = crossing(p0.y, c.y, p2.y, w, corner[0].y);
+  float s1 = crossing(p0.y, c.y, p2.y, w, corner[1].y);
+  float s2 = crossing(p0.y, c.y, p2.y, w, corner[2].y);
+  float s3 = crossing(p0.y, c.y, p2.y, w, corner[3].y);
+  return edge_term(p0, c, p2, w, corner[0], corner[1], s0, s1) + edge_term(p0, c, p2, w, corner[1], corner[2], s1, s2) +
+         edge_term(p0, c, p2, w, corner[2], corner[3], s2, s3) + edge_term(p0, c, p2, w, corner[3], corner[0], s3, s0);
+}
+
 // The coverage of the pixel's parallelogram: the band of its bounding
 // box's rows, the cells where the box lies in one block (an affine map:
-// u_half is the box's half size), the loop's early stop by the box's left.
+// u_half is the box's half size), the loop's early stop by the box's left,
+// and the entries in runs of 24 as in main(): a cheap pass adds the pieces
+// wholly right and marks those across, the four edges' terms then run over
+// the marked ones only.
 float footprint_coverage() {
   int first = int(v_glyph.x);
   int levels = int(v_glyph.y);
@@ -294,22 +327,35 @@ float footprint_coverage() {
   }
   vec2 corner[4] = vec2[4](-0.5 * (u + v), 0.5 * (u - v), 0.5 * (u + v), 0.5 * (v - u));
   float sum = 0.0;
-  int end = int(entries.x) + int(entries.y);
-  for (int j = int(entries.x); j < end; ++j) {
-    vec4 e = texel(entry_texel + j);  // (largest x, smallest x, y of p0, y of p2)
-    if (e.x < left) break;
-    if (max(e.z, e.w) < row_lo || min(e.z, e.w) > row_hi) continue;
-    if (e.y >= right) {
-      sum += width_integral(corner, (e.z - v_local.y) * scale.y, (e.w - v_local.y) * scale.y);
-      continue;
+  int start = int(entries.x);
+  int end = start + int(entries.y);
+  for (int run = start; run < end; run += 24) {
+    uint marked = 0u;
+    bool done = false;
+    int stop = min(run + 24, end);
+    for (int j = run; j < stop; ++j) {
+      vec4 e = texel(entry_texel + j);  // (largest x, smallest x, y of p0, y of p2)
+      if (e.x < left) {
+        done = true;
+        break;
+      }
+      if (max(e.z, e.w) < row_lo || min(e.z, e.w) > row_hi) continue;
+      if (e.y >= right) {
+        sum += width_integral(corner, (e.z - v_local.y) * scale.y, (e.w - v_local.y) * scale.y);
+      } else {
+        marked |= 1u << uint(j - run);
+      }
     }
-    int piece = first + int(texel(ref_texel + (j >> 2))[j & 3]);
-    vec4 a = texel(piece);
-    vec4 b = texel(piece + 1);
-    vec2 p0 = (a.xy - v_local) * scale;
-    vec2 c = (a.zw - v_local) * scale;
-    vec2 p2 = (b.xy - v_local) * scale;
-    for (int k = 0; k < 4; ++k) sum += edge_term(p0, c, p2, b.z, corner[k], corner[(k + 1) & 3]);
+    while (marked != 0u) {
+      uint lowest = marked & (~marked + 1u);
+      marked ^= lowest;
+      int j = run + int(round(log2(float(lowest))));
+      int piece = first + int(texel(ref_texel + (j >> 2))[j & 3]);
+      vec4 a = texel(piece);
+      vec4 b = texel(piece + 1);
+      sum += footprint_piece((a.xy - v_local) * scale, (a.zw - v_local) * scale, (b.xy - v_local) * scale, b.z, corner);
+    }
+    if (done) break;
   }
   return sum / abs(u.x * v.y - u.y * v.x);
 }
