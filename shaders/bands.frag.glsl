@@ -242,12 +242,13 @@ vec2 bernstein_roots(float b0, float b1, float b2) {
 // piece is monotone in y), plus on the left chain, minus on the right. Its
 // line crossings cut it into a middle part on one side and outer parts on
 // the other; the side is read at the middle of the longest part.
-// s0 and s1: the piece's parameters at the heights of a and b.
-float edge_term(vec2 p0, vec2 c, vec2 p2, float w, vec2 a, vec2 b, float s0, float s1) {
+// s0 and s1: the piece's parameters at the heights of a and b; [m0, m1]
+// its part within the bounding box's columns.
+float edge_term(vec2 p0, vec2 c, vec2 p2, float w, vec2 a, vec2 b, float s0, float s1, float m0, float m1) {
   vec2 d = b - a;
   if (d.y == 0.0) return 0.0;
-  float ta = min(s0, s1);
-  float tb = max(s0, s1);
+  float ta = max(min(s0, s1), m0);
+  float tb = min(max(s0, s1), m1);
   if (!(tb > ta)) return 0.0;
   vec2 r = clamp(bernstein_roots(right_of(p0, a, d), w * right_of(c, a, d), right_of(p2, a, d)), ta, tb);
   float outer = max(r.x - ta, tb - r.y);
@@ -277,15 +278,29 @@ float width_integral(vec2 corner[4], float y0, float y1) {
   return sum;
 }
 
-// One piece across the parallelogram's x extent: its four edges' terms (the
-// piece's parameters at the corners' heights shared between them).
+// One piece across the parallelogram's x extent. Its part right of the
+// bounding box is wholly right of the parallelogram (the width over its
+// rows), its part left of it adds nothing, and the four edges' terms (the
+// piece's parameters at the corners' heights shared between them) run over
+// the part between, where x - e(y) stays within the box's width: a long
+// flat piece reaching far right would otherwise enter as large terms of the
+// two chains that cancel, and lose float precision.
 float footprint_piece(vec2 p0, vec2 c, vec2 p2, float w, vec2 corner[4]) {
+  float tx0 = crossing(p0.x, c.x, p2.x, w, -0.5);
+  float tx1 = crossing(p0.x, c.x, p2.x, w, 0.5);
+  bool increasing = p2.x > p0.x;
+  float sum = width_integral(corner, y_at(p0, c, p2, w, increasing ? tx1 : 0.0),
+                             y_at(p0, c, p2, w, increasing ? 1.0 : tx1));
+  float m0 = min(tx0, tx1);
+  float m1 = max(tx0, tx1);
   float s0 = crossing(p0.y, c.y, p2.y, w, corner[0].y);
   float s1 = crossing(p0.y, c.y, p2.y, w, corner[1].y);
   float s2 = crossing(p0.y, c.y, p2.y, w, corner[2].y);
   float s3 = crossing(p0.y, c.y, p2.y, w, corner[3].y);
-  return edge_term(p0, c, p2, w, corner[0], corner[1], s0, s1) + edge_term(p0, c, p2, w, corner[1], corner[2], s1, s2) +
-         edge_term(p0, c, p2, w, corner[2], corner[3], s2, s3) + edge_term(p0, c, p2, w, corner[3], corner[0], s3, s0);
+  return sum + edge_term(p0, c, p2, w, corner[0], corner[1], s0, s1, m0, m1) +
+         edge_term(p0, c, p2, w, corner[1], corner[2], s1, s2, m0, m1) +
+         edge_term(p0, c, p2, w, corner[2], corner[3], s2, s3, m0, m1) +
+         edge_term(p0, c, p2, w, corner[3], corner[0], s3, s0, m0, m1);
 }
 
 // The coverage of the pixel's parallelogram: the band of its bounding

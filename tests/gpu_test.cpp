@@ -485,7 +485,9 @@ TEST(Bands, ConicProgramMatchesCpuReference) {
   }
   Renderer renderer;
   ImageTarget target;
-  for (double scale : {0.25, 1.3}) {
+  // Two scales, and one turned 35 degrees about the image's centre (the
+  // program with CURVETEXT_FOOTPRINT and CURVETEXT_CONICS).
+  for (const auto& [scale, degrees] : {std::pair{0.25, 0.0}, std::pair{1.3, 0.0}, std::pair{1.1, -35.0}}) {
     // The batch's mesh (the first shape, unmoved) is drawn only where the
     // bands are not: a pixel off the CPU's shows it.
     auto impl = gpu::upload(gpu::pack_mesh(meshes[0]));
@@ -493,7 +495,12 @@ TEST(Bands, ConicProgramMatchesCpuReference) {
     ASSERT_TRUE(impl->banded && impl->band_conics);
     const DrawBatch batch = DrawBatchAccess::make(std::move(impl));
     const int width = static_cast<int>(std::ceil(220 * scale)), height = static_cast<int>(std::ceil(120 * scale));
-    const Placement placement{scale, 0.31, 0.77 + 100 * scale};
+    const Transform turn = Transform::translation(width / 2.0, height / 2.0) * Transform::rotation(degrees) *
+                           Transform::translation(-width / 2.0, -height / 2.0);
+    const Placement placement{scale, 0.31, 0.77 + 100 * scale, turn};
+    const Transform inv = gpu::inverse(
+        turn * Transform{{scale, 0.0, placement.origin_x, 0.0, -scale, placement.origin_y, 0.0, 0.0, 1.0}});
+    const gpu::Footprint f{{inv.m[0], inv.m[3]}, {inv.m[1], inv.m[4]}};
     target.begin(width, height, Color{1, 1, 1, 1});
     renderer.draw(batch, placement, DrawOptions(Color{0, 0, 0, 1}, AntiAliasing::Full));
     const Image image = target.read_pixels();
@@ -502,15 +509,17 @@ TEST(Bands, ConicProgramMatchesCpuReference) {
       for (int i = 0; i < width; ++i) {
         double clear = 1.0;
         for (std::size_t g = 0; g < meshes.size(); ++g) {
-          const Vec2 centre{(i + 0.5 - placement.origin_x) / scale - offsets[g].x,
-                            (placement.origin_y - j - 0.5) / scale - offsets[g].y};
-          clear *= 1.0 - std::clamp(gpu::band_box_coverage(bands[g], centre, Vec2{0.5 / scale, 0.5 / scale}), 0.0, 1.0);
+          const Vec2 centre = inv.apply({i + 0.5, j + 0.5}) - offsets[g];
+          const double c = degrees == 0.0 ? gpu::band_box_coverage(bands[g], centre, Vec2{0.5 / scale, 0.5 / scale})
+                                          : gpu::band_footprint_coverage(bands[g], centre, f);
+          clear *= 1.0 - std::clamp(c, 0.0, 1.0);
         }
         const double got = 1.0 - image.rgba[4 * (static_cast<std::size_t>(j) * width + i)] / 255.0;
         worst = std::max(worst, std::abs(got - (1.0 - clear)));
         ink += 1.0 - clear;
       }
-    std::printf("conic bands at scale %.2f: largest difference to the CPU %.4f (ink %.1f px)\n", scale, worst, ink);
+    std::printf("conic bands at scale %.2f, turned %g degrees: largest difference to the CPU %.4f (ink %.1f px)\n",
+                scale, degrees, worst, ink);
     EXPECT_GT(ink, 10.0);
     EXPECT_LE(worst, 0.5 / 255.0 + 1e-3) << scale;
   }

@@ -558,16 +558,17 @@ double beyond_edge(const BandPiece& p, double t0, double t1, Vec2 a, Vec2 d) {
 double right_of(Vec2 q, Vec2 a, Vec2 d) { return (d.y * (q.x - a.x) - d.x * (q.y - a.y)) * (d.y > 0.0 ? 1.0 : -1.0); }
 
 // Edge a -> b of the parallelogram (counter-clockwise): the integral of
-// max(0, x - e(y)) dy over the piece's part within the edge's rows, plus on
+// max(0, x - e(y)) dy over the piece's part within the edge's rows and
+// within parameters [m0, m1], plus on
 // the left chain (a above b), minus on the right. The piece is monotone in y:
 // the rows are one parameter interval; its line crossings, two at most, cut
 // it into parts alternately right and left of the line.
-double edge_term(const BandPiece& p, Vec2 a, Vec2 b) {
+double edge_term(const BandPiece& p, Vec2 a, Vec2 b, double m0, double m1) {
   const Vec2 d = b - a;
   if (d.y == 0.0) return 0.0;
   const double s0 = monotone_crossing(p.p0.y, p.c.y, p.p2.y, p.w, std::min(a.y, b.y));
   const double s1 = monotone_crossing(p.p0.y, p.c.y, p.p2.y, p.w, std::max(a.y, b.y));
-  const double ta = std::min(s0, s1), tb = std::max(s0, s1);
+  const double ta = std::max(std::min(s0, s1), m0), tb = std::min(std::max(s0, s1), m1);
   if (!(tb > ta)) return 0.0;
   double roots[2];
   const int n = roots_in_unit(right_of(p.p0, a, d), p.w * right_of(p.c, a, d), right_of(p.p2, a, d), roots);
@@ -590,9 +591,17 @@ double edge_term(const BandPiece& p, Vec2 a, Vec2 b) {
 }  // namespace
 
 double monotone_piece_footprint_integral(const BandPiece& p, const Footprint& f) {
+  // The part right of the bounding box adds the width over its rows, the
+  // part left of it nothing; the edges' terms run over the part between
+  // (bounded terms: no cancelling of large ones in the shader's floats).
   const std::array<Vec2, 4> v = corners(f);
-  double sum = 0.0;
-  for (int e = 0; e < 4; ++e) sum += edge_term(p, v[e], v[(e + 1) % 4]);
+  const double hx = f.half().x;
+  const double tx0 = monotone_crossing(p.p0.x, p.c.x, p.p2.x, p.w, -hx);
+  const double tx1 = monotone_crossing(p.p0.x, p.c.x, p.p2.x, p.w, hx);
+  const bool increasing = p.p2.x > p.p0.x;
+  double sum = footprint_width_integral(f, y_at(p, increasing ? tx1 : 0.0), y_at(p, increasing ? 1.0 : tx1));
+  const double m0 = std::min(tx0, tx1), m1 = std::max(tx0, tx1);
+  for (int e = 0; e < 4; ++e) sum += edge_term(p, v[e], v[(e + 1) % 4], m0, m1);
   return sum;
 }
 
