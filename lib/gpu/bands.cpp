@@ -641,7 +641,7 @@ double piece_footprint_integral(const BandPiece& p, const Footprint& f) {
     // The row at the midpoint's height: the edges of the left chain (going
     // down) and of the right (going up) that span it; the part stays within
     // their rows, where each is one line.
-    Vec2 la, ld, ra, rd;
+    Vec2 la{0.0, 0.0}, ld{0.0, 1.0}, ra{0.0, 0.0}, rd{0.0, 1.0};
     for (int e = 0; e < 4; ++e) {
       const Vec2 a = v[e], d = v[(e + 1) % 4] - a;
       if (d.y == 0.0 || m.y < std::min(a.y, a.y + d.y) || m.y > std::max(a.y, a.y + d.y)) continue;

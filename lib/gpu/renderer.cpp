@@ -973,6 +973,8 @@ BandFootprint band_footprint(const Transform& full, const Box& bounds) {
   if (bounds.empty()) return {};
   for (Vec2 c : {bounds.min, Vec2{bounds.max.x, bounds.min.y}, Vec2{bounds.min.x, bounds.max.y}, bounds.max})
     if (!(full.w(c) > 0.0)) return {};
+  for (double v : gpu::inverse(full).m)
+    if (!std::isfinite(v)) return {};
   return {BandFootprint::Projective, {0.0, 0.0}};
 }
 
