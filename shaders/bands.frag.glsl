@@ -170,7 +170,227 @@ int grid_state(int first, int grid, float left, float row_lo) {
   return block_state(base, n, c0.x + 1, c0.y + 1);
 }
 
+#if CURVETEXT_FOOTPRINT
+// Under a map that turns the axes (rotation, skew; perspective to first
+// order, its local affine map at the pixel) the pixel's footprint in outline
+// units is a parallelogram, integrated along the outline's x as the box is,
+// so the bands and their culling hold (bands.hpp, Footprint; the CPU's
+// monotone_piece_footprint_integral and band_footprint_coverage): the
+// width of its row left of the piece is a sum over its four edges of
+// max(0, x - e(y)) over the edge's rows, plus on the left chain, minus on the
+// right. Units: from the pixel's centre, scaled so that the parallelogram's
+// bounding box is [-1/2, 1/2]^2.
+uniform mat3 u_transform;  // as the vertex stage's: its third row gives a projective map's w
+uniform mat3 u_inverse;    // framebuffer pixels -> outline units (u_transform's inverse)
+uniform int u_projective;  // 1: the footprint varies per pixel (no cells: u_half is not it)
+flat in vec2 v_offset;     // the glyph's origin in the block, outline units
+
+// The pixel's footprint at outline point p (block units): the columns of
+// the inverse map's Jacobian, w (p's) times (g_i - p g_i.z) for columns g_i.
+mat2 footprint_at(vec2 p) {
+  float w = dot(vec3(u_transform[0].z, u_transform[1].z, u_transform[2].z), vec3(p, 1.0));
+  return w * mat2(u_inverse[0].xy - p * u_inverse[0].z, u_inverse[1].xy - p * u_inverse[1].z);
+}
+
+// Positive right of the line through a along d (d.y != 0), as x - e(y).
+float right_of(vec2 q, vec2 a, vec2 d) { return (d.y * (q.x - a.x) - d.x * (q.y - a.y)) * sign(d.y); }
+
+// The edge's x at height y within its rows, from the parameter along it
+// (a near-level edge is not sheared by its slope).
+float edge_x(vec2 a, vec2 d, float y) { return a.x + d.x * clamp((y - a.y) / d.y, 0.0, 1.0); }
+
+// The integral of x - e(y) dy along the arc between t0 and t1: arc_x_dy's
+// chord and segment, less the edge's chord over the same rows.
+float beyond_edge(vec2 p0, vec2 c, vec2 p2, float w, float t0, float t1, vec2 a, vec2 d) {
+  vec3 h0 = conic_at(p0, c, p2, w, t0);
+  vec3 h2 = conic_at(p0, c, p2, w, t1);
+  float k0 = (1.0 - t0) * (1.0 - t1);
+  float k1 = ((1.0 - t0) * t1 + t0 * (1.0 - t1)) * w;
+  float k2 = t0 * t1;
+  vec3 h1 = vec3(k0 * p0 + k1 * c + k2 * p2, k0 + k1 + k2);
+#if CURVETEXT_CONICS
+  vec2 q0 = h0.xy / h0.z;
+  vec2 q2 = h2.xy / h2.z;
+  vec2 m = h1.xy / h1.z - q0;
+  float ws = h1.z / sqrt(h0.z * h2.z);
+#else
+  vec2 q0 = h0.xy;
+  vec2 q2 = h2.xy;
+  vec2 m = h1.xy - q0;
+  float ws = 1.0;
+#endif
+  vec2 chord = q2 - q0;
+  float e = edge_x(a, d, 0.5 * (q0.y + q2.y));
+  return (0.5 * (q0.x + q2.x) - e) * chord.y + segment_ratio(ws) * 0.5 * (m.x * chord.y - m.y * chord.x);
+}
+
+// Both roots of the Bernstein quadratic (b0, b1, b2), ascending; 2 for one
+// that is not there (a line's second, or none).
+vec2 bernstein_roots(float b0, float b1, float b2) {
+  float a = b0 - 2.0 * b1 + b2;
+  float b = b1 - b0;
+  float disc = b * b - a * b0;
+  if (disc < 0.0) return vec2(2.0);
+  float q = -(b + (b >= 0.0 ? 1.0 : -1.0) * sqrt(disc));
+  float r1 = a != 0.0 ? q / a : 2.0;
+  float r2 = q != 0.0 ? b0 / q : r1;
+  return vec2(min(r1, r2), max(r1, r2));
+}
+
+// Edge a -> b (counter-clockwise): the integral of max(0, x - e(y)) dy over
+// the piece's part within the edge's rows (one parameter interval: the
+// piece is monotone in y), plus on the left chain, minus on the right. Its
+// line crossings cut it into a middle part on one side and outer parts on
+// the other; the side is read at the middle of the longest part.
+// s0 and s1: the piece's parameters at the heights of a and b; [m0, m1]
+// its part within the bounding box's columns.
+float edge_term(vec2 p0, vec2 c, vec2 p2, float w, vec2 a, vec2 b, float s0, float s1, float m0, float m1) {
+  vec2 d = b - a;
+  if (d.y == 0.0) return 0.0;
+  float ta = max(min(s0, s1), m0);
+  float tb = min(max(s0, s1), m1);
+  if (!(tb > ta)) return 0.0;
+  vec2 r = clamp(bernstein_roots(right_of(p0, a, d), w * right_of(c, a, d), right_of(p2, a, d)), ta, tb);
+  float outer = max(r.x - ta, tb - r.y);
+  bool middle_longest = r.y - r.x >= outer;
+  float probe = middle_longest ? 0.5 * (r.x + r.y) : (r.x - ta >= tb - r.y ? 0.5 * (ta + r.x) : 0.5 * (r.y + tb));
+  vec3 h = conic_at(p0, c, p2, w, probe);
+  bool middle_right = (right_of(h.xy / h.z, a, d) > 0.0) == middle_longest;
+  // One arc in all but the rare case of two crossings with the middle left
+  // of the line (a SIMD group then skips the second).
+  float sum = beyond_edge(p0, c, p2, w, middle_right ? r.x : ta, middle_right ? r.y : tb, a, d);
+  if (!middle_right && r.y > r.x) sum -= beyond_edge(p0, c, p2, w, r.x, r.y, a, d);
+  return a.y > b.y ? sum : -sum;
+}
+
+// A piece wholly right of the parallelogram, from height y0 to y1: the
+// integral of its row's width; the chains' x cancel, leaving the edges'.
+float width_integral(vec2 corner[4], float y0, float y1) {
+  float sum = 0.0;
+  for (int e = 0; e < 4; ++e) {
+    vec2 a = corner[e];
+    vec2 d = corner[(e + 1) & 3] - a;
+    if (d.y == 0.0) continue;
+    float c0 = clamp(y0, min(a.y, a.y + d.y), max(a.y, a.y + d.y));
+    float c1 = clamp(y1, min(a.y, a.y + d.y), max(a.y, a.y + d.y));
+    sum += sign(d.y) * (c1 - c0) * edge_x(a, d, 0.5 * (c0 + c1));
+  }
+  return sum;
+}
+
+// One piece across the parallelogram's x extent. Its part right of the
+// bounding box is wholly right of the parallelogram (the width over its
+// rows), its part left of it adds nothing, and the four edges' terms (the
+// piece's parameters at the corners' heights shared between them) run over
+// the part between, where x - e(y) stays within the box's width: a long
+// flat piece reaching far right would otherwise enter as large terms of the
+// two chains that cancel, and lose float precision.
+float footprint_piece(vec2 p0, vec2 c, vec2 p2, float w, vec2 corner[4]) {
+  float tx0 = crossing(p0.x, c.x, p2.x, w, -0.5);
+  float tx1 = crossing(p0.x, c.x, p2.x, w, 0.5);
+  bool increasing = p2.x > p0.x;
+  float sum = width_integral(corner, y_at(p0, c, p2, w, increasing ? tx1 : 0.0),
+                             y_at(p0, c, p2, w, increasing ? 1.0 : tx1));
+  float m0 = min(tx0, tx1);
+  float m1 = max(tx0, tx1);
+  float s0 = crossing(p0.y, c.y, p2.y, w, corner[0].y);
+  float s1 = crossing(p0.y, c.y, p2.y, w, corner[1].y);
+  float s2 = crossing(p0.y, c.y, p2.y, w, corner[2].y);
+  float s3 = crossing(p0.y, c.y, p2.y, w, corner[3].y);
+  return sum + edge_term(p0, c, p2, w, corner[0], corner[1], s0, s1, m0, m1) +
+         edge_term(p0, c, p2, w, corner[1], corner[2], s1, s2, m0, m1) +
+         edge_term(p0, c, p2, w, corner[2], corner[3], s2, s3, m0, m1) +
+         edge_term(p0, c, p2, w, corner[3], corner[0], s3, s0, m0, m1);
+}
+
+// The coverage of the pixel's parallelogram: the band of its bounding
+// box's rows, the cells where the box lies in one block (an affine map:
+// u_half is the box's half size), the loop's early stop by the box's left,
+// and the entries in runs of 24 as in main(): a cheap pass adds the pieces
+// wholly right and marks those across, the four edges' terms then run over
+// the marked ones only.
+float footprint_coverage() {
+  int first = int(v_glyph.x);
+  int levels = int(v_glyph.y);
+  mat2 f = footprint_at(v_local + v_offset);
+  vec2 half_box = u_projective != 0 ? 0.5 * (abs(f[0]) + abs(f[1])) : u_half;
+  float height = v_rect.w - v_rect.y;
+  float ratio = height / (2.0 * half_box.y * 1.0001);
+  int level = clamp(ratio >= 1.0 ? int(floor(log2(ratio))) : 0, 0, levels - 1);
+  int n = 1 << level;
+  float row_lo = v_local.y - half_box.y;
+  float row_hi = v_local.y + half_box.y;
+  float left = v_local.x - half_box.x;
+  float right = v_local.x + half_box.x;
+  int band = n - 1 + clamp(int(floor((row_lo - v_rect.y) / (height / float(n)))), 0, n - 1);
+  vec4 regions = texel(first);
+  if (u_projective == 0) {
+    int state = grid_state(first, int(regions.z), left, row_lo);
+    if (state != 2) return float(state);
+  }
+  int entry_texel = first + int(regions.x);
+  int ref_texel = first + int(regions.y);
+  vec4 header = texel(first + 1 + band / 2);
+  vec2 entries = (band & 1) == 0 ? header.xy : header.zw;
+  vec2 scale = 0.5 / half_box;
+  vec2 u = f[0] * scale;
+  vec2 v = f[1] * scale;
+  if (u.x * v.y - u.y * v.x < 0.0) {
+    vec2 t = u;
+    u = v;
+    v = t;
+  }
+  vec2 corner[4] = vec2[4](-0.5 * (u + v), 0.5 * (u - v), 0.5 * (u + v), 0.5 * (v - u));
+  float sum = 0.0;
+  int start = int(entries.x);
+  int end = start + int(entries.y);
+  for (int run = start; run < end; run += 24) {
+    uint marked = 0u;
+    bool done = false;
+    int stop = min(run + 24, end);
+    for (int j = run; j < stop; ++j) {
+      vec4 e = texel(entry_texel + j);  // (largest x, smallest x, y of p0, y of p2)
+      if (e.x < left) {
+        done = true;
+        break;
+      }
+      if (max(e.z, e.w) < row_lo || min(e.z, e.w) > row_hi) continue;
+      if (e.y >= right) {
+        sum += width_integral(corner, (e.z - v_local.y) * scale.y, (e.w - v_local.y) * scale.y);
+      } else {
+        marked |= 1u << uint(j - run);
+      }
+    }
+    while (marked != 0u) {
+      uint lowest = marked & (~marked + 1u);
+      marked ^= lowest;
+      int j = run + int(round(log2(float(lowest))));
+      int piece = first + int(texel(ref_texel + (j >> 2))[j & 3]);
+      vec4 a = texel(piece);
+      vec4 b = texel(piece + 1);
+      sum += footprint_piece((a.xy - v_local) * scale, (a.zw - v_local) * scale, (b.xy - v_local) * scale, b.z, corner);
+    }
+    if (done) break;
+  }
+  return sum / abs(u.x * v.y - u.y * v.x);
+}
+#endif
+
+// The pixel's colour from its coverage.
+void shade(float sum) {
+  float coverage = clamp(sum, 0.0, 1.0);
+  if (coverage <= 0.0) discard;
+#if CURVETEXT_GAMMA
+  coverage = pow(coverage, u_coverage_exponent);
+#endif
+  curvetext_color = u_color * coverage;
+}
+
 void main() {
+#if CURVETEXT_FOOTPRINT
+  shade(footprint_coverage());
+  return;
+#endif
   int first = int(v_glyph.x);
   int levels = int(v_glyph.y);
   // The finest level whose band height H holds the box's rows (H >= the

@@ -17,8 +17,34 @@ out vec2 v_local;         // this point from the glyph's origin, outline units
 flat out vec4 v_rect;     // a_rect
 flat out vec2 v_glyph;    // (first texel, levels)
 
+#if CURVETEXT_FOOTPRINT
+// Under a map that turns the axes (bands.frag.glsl): u_half is half the
+// bounding box of a pixel's parallelogram footprint under an affine map;
+// under perspective it varies, and the glyph's box grows by its largest at
+// the box's corners and centre (first order, as the area is).
+uniform mat3 u_inverse;    // framebuffer pixels -> outline units
+uniform int u_projective;  // 1: the footprint varies per pixel
+flat out vec2 v_offset;    // a_place.xy
+
+vec2 reach_at(vec2 p) {
+  float w = dot(vec3(u_transform[0].z, u_transform[1].z, u_transform[2].z), vec3(p, 1.0));
+  vec2 u = w * (u_inverse[0].xy - p * u_inverse[0].z);
+  vec2 v = w * (u_inverse[1].xy - p * u_inverse[1].z);
+  return 0.5 * (abs(u) + abs(v));
+}
+#endif
+
 void main() {
-  vec2 local = mix(a_rect.xy - u_half, a_rect.zw + u_half, a_corner);
+  vec2 half_box = u_half;
+#if CURVETEXT_FOOTPRINT
+  v_offset = a_place.xy;
+  if (u_projective != 0) {
+    vec2 o = a_place.xy;
+    half_box = max(max(reach_at(o + a_rect.xy), reach_at(o + a_rect.zw)),
+                   max(max(reach_at(o + a_rect.xw), reach_at(o + a_rect.zy)), reach_at(o + 0.5 * (a_rect.xy + a_rect.zw))));
+  }
+#endif
+  vec2 local = mix(a_rect.xy - half_box, a_rect.zw + half_box, a_corner);
   v_local = local;
   v_rect = a_rect;
   v_glyph = a_place.zw;

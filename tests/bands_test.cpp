@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -264,6 +265,181 @@ void check_cells(const char* path, std::uint32_t step) {
 
 TEST(BandCells, InsideAndOutsideCellsOfDejaVuSans) { check_cells(test::kDejaVuSans, 7); }
 TEST(BandCells, InsideAndOutsideCellsOfInter) { check_cells(test::kInterVariable, 3); }
+
+// Under a map that turns the axes the pixel's footprint is a parallelogram
+// (gpu::Footprint): the same reference, clipped to its four edges.
+std::vector<Vec2> clip_half_plane(const std::vector<Vec2>& poly, Vec2 a, Vec2 d) {
+  const auto side = [&](Vec2 p) { return -cross(d, p - a); };  // <= 0: left of the edge, kept
+  std::vector<Vec2> out;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const Vec2 p = poly[(i + poly.size() - 1) % poly.size()], q = poly[i];
+    const double dp = side(p), dq = side(q);
+    if ((dp <= 0.0) != (dq <= 0.0)) out.push_back(p + (q - p) * (dp / (dp - dq)));
+    if (dq <= 0.0) out.push_back(q);
+  }
+  return out;
+}
+
+double reference_footprint(const std::vector<BandPiece>& pieces, const gpu::Footprint& f) {
+  std::vector<Vec2> poly = flatten(pieces);
+  const bool ccw = cross(f.u, f.v) >= 0.0;
+  const Vec2 u = ccw ? f.u : f.v, v = ccw ? f.v : f.u;
+  const Vec2 c[4] = {-0.5 * (u + v), 0.5 * (u - v), 0.5 * (u + v), 0.5 * (v - u)};
+  for (int e = 0; e < 4; ++e) poly = clip_half_plane(poly, c[e], c[(e + 1) % 4] - c[e]);
+  return polygon_area(poly);
+}
+
+struct NamedFootprint {
+  const char* name;
+  gpu::Footprint f;
+};
+
+// Rotations (a hair off the axes, 30 degrees, a quarter turn), skews both
+// ways, a flip, and shears so strong that two edges are all but level.
+std::vector<NamedFootprint> footprints() {
+  const auto rotation = [](double a, double s) {
+    return gpu::Footprint{{s * std::cos(a), s * std::sin(a)}, {-s * std::sin(a), s * std::cos(a)}};
+  };
+  return {{"box", {{1, 0}, {0, 1}}},
+          {"rotated 1e-4 rad", rotation(1e-4, 1.0)},
+          {"rotated 30 degrees", rotation(0.5235987755982988, 1.3)},
+          {"rotated 90 degrees", rotation(1.5707963267948966, 0.8)},
+          {"skewed in x", {{1, 0}, {0.7, 1}}},
+          {"skewed in y", {{1, -0.4}, {0, 1}}},
+          {"flipped and rotated", {{0.9, 0.3}, {0.3, -0.9}}},
+          {"near-level edges", {{1.6, 1e-5}, {0.3, 0.6}}},
+          {"thin and long", {{2.5, 1.9}, {-0.05, 0.07}}}};
+}
+
+void expect_footprint_exact(const Closed& r, const NamedFootprint& nf, const char* what, double tol = 1e-8) {
+  const double ref = reference_footprint(r.pieces, nf.f);
+  double general = 0.0, monotone = 0.0;
+  for (const BandPiece& p : r.pieces) general += gpu::piece_footprint_integral(p, nf.f);
+  std::vector<BandPiece> split;
+  for (const BandPiece& p : r.pieces) gpu::split_monotone(p, split);
+  for (const BandPiece& p : split) monotone += gpu::monotone_piece_footprint_integral(p, nf.f);
+  EXPECT_NEAR(general, ref, tol) << what << ", " << nf.name;
+  EXPECT_NEAR(monotone, ref, tol) << what << ", " << nf.name << " (monotone pieces)";
+}
+
+TEST(BandFootprint, LinesThroughCornersAlongEdgesAndAxes) {
+  for (const NamedFootprint& nf : footprints()) {
+    const std::array<Vec2, 4> c = {-0.5 * (nf.f.u + nf.f.v), 0.5 * (nf.f.u - nf.f.v), 0.5 * (nf.f.u + nf.f.v),
+                                   0.5 * (nf.f.v - nf.f.u)};
+    const double r = 3.0 * std::max(nf.f.half().x, nf.f.half().y);
+    expect_footprint_exact(polygon({{-r, -r}, {r, -r}, {r, r}, {-r, r}}), nf, "inside a square");
+    expect_footprint_exact(polygon({{-r, -r}, {r, -r}, {-r, r}}), nf, "a diagonal through the centre");
+    expect_footprint_exact(polygon({c[0], c[2], c[0] + 3.0 * (c[3] - c[0])}), nf, "an edge through two corners");
+    expect_footprint_exact(polygon({c[1] - 2.0 * (c[2] - c[1]), c[2] + 2.0 * (c[2] - c[1]), {-r, 0.0}}), nf,
+                           "an edge along a side");
+    expect_footprint_exact(polygon({{-r, 0.2 * r}, {r, 0.2 * r}, {0, r}}), nf, "a level edge");
+    expect_footprint_exact(polygon({{0.1 * r, -r}, {0.1 * r, r}, {-r, 0}}), nf, "an upright edge");
+    expect_footprint_exact(polygon({c[1], c[1] + Vec2{1e-7, 0}, c[1] + Vec2{0, 1e-7}}), nf, "1e-7 at a corner");
+    expect_footprint_exact(polygon({{0.01, 0.02}, {0.01 + 1e-7, 0.02}, {0.01, 0.02 + 1e-7}}), nf, "1e-7 inside");
+    expect_footprint_exact(polygon({{-r, -r}, {0.03, 0.03}, {0.03 + 1e-7, 0.03 + 2e-7}, {-r, r}}), nf,
+                           "an edge of 1e-7");
+  }
+}
+
+TEST(BandFootprint, ConicsOfAllWeights) {
+  std::mt19937 rng(3636);
+  std::uniform_real_distribution<double> u(-1.8, 1.8);
+  for (const NamedFootprint& nf : footprints())
+    for (double w : {0.01, 0.1, 0.7071067811865476, 1.0, 1.01, 3.0, 1000.0})
+      for (int i = 0; i < 8; ++i) {
+        const Vec2 p0{u(rng), u(rng)}, c{u(rng), u(rng)}, p2{u(rng), u(rng)};
+        if (std::abs(cross(p2 - p0, c - p0)) < 1e-3) continue;
+        char what[96];
+        std::snprintf(what, sizeof what, "w %g, case %d", w, i);
+        expect_footprint_exact(conic_region(p0, c, p2, w), nf, what);
+      }
+}
+
+TEST(BandFootprint, ConicsTangentToEdgesAndThroughCorners) {
+  for (const NamedFootprint& nf : footprints()) {
+    const Vec2 u = nf.f.u, v = nf.f.v;
+    const Vec2 c0 = -0.5 * (u + v), c1 = 0.5 * (u - v), c2 = 0.5 * (u + v);
+    // A parabola whose apex touches the edge c1 -> c2 (its control point
+    // beyond the edge's midpoint: the apex lies halfway to it).
+    const Vec2 m = 0.5 * (c1 + c2), out = 0.5 * u;
+    expect_footprint_exact(conic_region(m - 2.0 * v, m + out, m + 2.0 * v, 1.0), nf, "apex on an edge");
+    // A quarter circle's image and a heavy hyperbola through two corners.
+    expect_footprint_exact(conic_region(c0, c1, c2, std::sqrt(0.5)), nf, "ends on two corners");
+    expect_footprint_exact(conic_region(c0 - u, c1, c2 + v, 1000.0), nf, "w 1000 through a corner");
+    expect_footprint_exact(conic_region(c1, c1 + 5e-8 * (u + v), c1 + 1e-7 * u, 0.5), nf, "arc of 1e-7 at a corner");
+  }
+}
+
+// Glyphs under rotation and skew (pixel units from outline units: `map`,
+// affine): through the packed bands, each pixel's parallelogram, the pixels
+// add up to the glyph's area times |det map|, and at 20 px each pixel is
+// within the union sweep's bound of the exact coverage of the glyph drawn
+// under the map, and within float rounding of the general integral.
+void check_footprint_font(const char* path, double px_per_em, double angle, double skew, std::uint32_t glyphs,
+                          bool per_pixel) {
+  const Font font = Font::open(path);
+  const double s = px_per_em / font.metrics().units_per_em;
+  // map = scale * rotation * skew (x += skew y), y up in both.
+  const double ca = std::cos(angle), sa = std::sin(angle);
+  const double m00 = s * ca, m01 = s * (ca * skew - sa), m10 = s * sa, m11 = s * (sa * skew + ca);
+  const double det = m00 * m11 - m01 * m10;
+  const gpu::Footprint f{{m11 / det, -m10 / det}, {-m01 / det, m00 / det}};  // the inverse's columns
+  gpu::BandScratch scratch;
+  gpu::GlyphBands bands;
+  Mesh mesh;
+  std::vector<BandPiece> pieces;
+  double worst_area = 0.0, worst_pixel = 0.0, worst_general = 0.0;
+  for (std::uint32_t id = 0; id < std::min(font.glyph_count(), glyphs); ++id) {
+    const Outline outline = font.glyph_outline(id);
+    if (outline.empty() || outline.has_cubics()) continue;
+    build_mesh(outline, {}, mesh);
+    gpu::boundary_pieces(mesh, pieces);
+    gpu::build_bands(mesh, bands, scratch);
+    if (bands.empty()) continue;
+    // The pixels (image y down) over the map of the glyph's box, a pixel of margin.
+    const Box& b = bands.box;
+    Box image;
+    for (Vec2 c : {b.min, b.max, Vec2{b.min.x, b.max.y}, Vec2{b.max.x, b.min.y}})
+      image.add({m00 * c.x + m01 * c.y, m10 * c.x + m11 * c.y});
+    const double x0 = std::floor(image.min.x) - 1.0, y1 = std::ceil(image.max.y) + 1.0;
+    const int w = static_cast<int>(std::ceil(image.max.x) + 1.0 - x0),
+              h = static_cast<int>(y1 - std::floor(image.min.y) + 1.0);
+    Outline px = outline;
+    for (Contour& c : px.contours())
+      for (Segment& seg : c.segments)
+        for (Vec2& p : seg.p) p = Vec2{m00 * p.x + m01 * p.y - x0, y1 - (m10 * p.x + m11 * p.y)};
+    const test::Coverage exact = per_pixel ? test::union_coverage(px, w, h) : test::Coverage{};
+    double sum = 0.0;
+    for (int j = 0; j < h; ++j)
+      for (int i = 0; i < w; ++i) {
+        const Vec2 q{x0 + i + 0.5, y1 - j - 0.5};  // the pixel's centre, y up
+        const Vec2 centre{(m11 * q.x - m01 * q.y) / det, (m00 * q.y - m10 * q.x) / det};
+        const double c = gpu::band_footprint_coverage(bands, centre, f);
+        sum += c;
+        if (per_pixel) {
+          worst_pixel = std::max(worst_pixel, std::abs(c - exact.at(i, j)));
+          worst_general = std::max(worst_general, std::abs(c - gpu::footprint_coverage(pieces, centre, f)));
+        }
+      }
+    const double area = mesh_area(mesh);
+    worst_area = std::max(worst_area, std::abs(sum / std::abs(det) - area) / std::max(area, 1.0));
+  }
+  std::printf(
+      "%s at %g px, rotated %g rad, skew %g: worst relative area %.3g, pixel vs union sweep %.4f, vs double "
+      "%.3g\n",
+      path, px_per_em, angle, skew, worst_area, worst_pixel, worst_general);
+  EXPECT_LT(worst_area, 2e-5) << path;
+  if (per_pixel) {
+    EXPECT_LT(worst_pixel, 0.004) << path;   // the sweep's own bound is 0.003
+    EXPECT_LT(worst_general, 1e-4) << path;  // float texels against double pieces
+  }
+}
+
+TEST(BandFootprint, RotatedGlyphsOfDejaVuSans) { check_footprint_font(test::kDejaVuSans, 13.0, 0.4, 0.0, 600, false); }
+TEST(BandFootprint, SkewedGlyphsOfInter) { check_footprint_font(test::kInterVariable, 15.0, 0.0, 0.35, 300, false); }
+TEST(BandFootprint, RotatedSkewedPixelsAgainstUnionSweep) {
+  check_footprint_font(test::kDejaVuSans, 20.0, -1.1, 0.25, 120, true);
+}
 
 }  // namespace
 }  // namespace curvetext

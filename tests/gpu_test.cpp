@@ -24,6 +24,7 @@
 #include "curvetext/shaping.hpp"
 #include "curvetext/text_image.hpp"
 #include "gpu/bands.hpp"
+#include "gpu/paint.hpp"
 #include "gpu/batch_impl.hpp"
 #include "gpu/vertex_format.hpp"
 #include "support/coverage.hpp"
@@ -486,7 +487,9 @@ TEST(Bands, ConicProgramMatchesCpuReference) {
   }
   Renderer renderer;
   ImageTarget target;
-  for (double scale : {0.25, 1.3}) {
+  // Two scales, and one turned 35 degrees about the image's centre (the
+  // program with CURVETEXT_FOOTPRINT and CURVETEXT_CONICS).
+  for (const auto& [scale, degrees] : {std::pair{0.25, 0.0}, std::pair{1.3, 0.0}, std::pair{1.1, -35.0}}) {
     // The batch's mesh (the first shape, unmoved) is drawn only where the
     // bands are not: a pixel off the CPU's shows it.
     auto impl = gpu::upload(gpu::pack_mesh(meshes[0]));
@@ -494,7 +497,12 @@ TEST(Bands, ConicProgramMatchesCpuReference) {
     ASSERT_TRUE(impl->banded && impl->band_conics);
     const DrawBatch batch = DrawBatchAccess::make(std::move(impl));
     const int width = static_cast<int>(std::ceil(220 * scale)), height = static_cast<int>(std::ceil(120 * scale));
-    const Placement placement{scale, 0.31, 0.77 + 100 * scale};
+    const Transform turn = Transform::translation(width / 2.0, height / 2.0) * Transform::rotation(degrees) *
+                           Transform::translation(-width / 2.0, -height / 2.0);
+    const Placement placement{scale, 0.31, 0.77 + 100 * scale, turn};
+    const Transform inv = gpu::inverse(
+        turn * Transform{{scale, 0.0, placement.origin_x, 0.0, -scale, placement.origin_y, 0.0, 0.0, 1.0}});
+    const gpu::Footprint f{{inv.m[0], inv.m[3]}, {inv.m[1], inv.m[4]}};
     target.begin(width, height, Color{1, 1, 1, 1});
     renderer.draw(batch, placement, DrawOptions(Color{0, 0, 0, 1}, AntiAliasing::Full));
     const Image image = target.read_pixels();
@@ -503,15 +511,17 @@ TEST(Bands, ConicProgramMatchesCpuReference) {
       for (int i = 0; i < width; ++i) {
         double clear = 1.0;
         for (std::size_t g = 0; g < meshes.size(); ++g) {
-          const Vec2 centre{(i + 0.5 - placement.origin_x) / scale - offsets[g].x,
-                            (placement.origin_y - j - 0.5) / scale - offsets[g].y};
-          clear *= 1.0 - std::clamp(gpu::band_box_coverage(bands[g], centre, Vec2{0.5 / scale, 0.5 / scale}), 0.0, 1.0);
+          const Vec2 centre = inv.apply({i + 0.5, j + 0.5}) - offsets[g];
+          const double c = degrees == 0.0 ? gpu::band_box_coverage(bands[g], centre, Vec2{0.5 / scale, 0.5 / scale})
+                                          : gpu::band_footprint_coverage(bands[g], centre, f);
+          clear *= 1.0 - std::clamp(c, 0.0, 1.0);
         }
         const double got = 1.0 - image.rgba[4 * (static_cast<std::size_t>(j) * width + i)] / 255.0;
         worst = std::max(worst, std::abs(got - (1.0 - clear)));
         ink += 1.0 - clear;
       }
-    std::printf("conic bands at scale %.2f: largest difference to the CPU %.4f (ink %.1f px)\n", scale, worst, ink);
+    std::printf("conic bands at scale %.2f, turned %g degrees: largest difference to the CPU %.4f (ink %.1f px)\n",
+                scale, degrees, worst, ink);
     EXPECT_GT(ink, 10.0);
     EXPECT_LE(worst, 0.5 / 255.0 + 1e-3) << scale;
   }
@@ -523,7 +533,7 @@ TEST(Bands, ConicProgramMatchesCpuReference) {
 // the same computation (gpu::band_box_coverage over the same texels, the
 // glyphs' coverages composed as source-over blending composes them) within
 // the 8-bit image's rounding, at sizes from 9 to 120 px with fractional
-// origins. Under a rotation the block takes the mesh path (an offscreen pass).
+// origins.
 TEST(Bands, ShaderMatchesCpuReferenceInOnePass) {
   context();
   if (!gpu::context_instances()) GTEST_SKIP() << "GLES2: text blocks draw through their meshes";
@@ -573,12 +583,89 @@ TEST(Bands, ShaderMatchesCpuReferenceInOnePass) {
     EXPECT_GT(ink, 10.0);
     EXPECT_LE(worst, 0.5 / 255.0 + 1e-3) << ppem;
   }
-  const DrawBatch batch = DrawBatch::from_text(cache, font, line, 16.0);
-  target.begin(200, 60, Color{1, 1, 1, 1});
+}
+
+// The same under maps that turn the axes (rotations, skews, a flip): each
+// pixel's footprint is a parallelogram in outline units, and every pixel
+// matches gpu::band_footprint_coverage over the same texels, in one pass.
+TEST(Bands, RotatedAndSkewedShaderMatchesCpuReference) {
+  context();
+  if (!gpu::context_instances()) GTEST_SKIP() << "GLES2: text blocks draw through their meshes";
+  const Font font = Font::open(test::kDejaVuSans);
+  const ShapedLine line = shape_line(font, "Band@gq&%Wj");
+  GlyphCache cache;
+  Renderer renderer;
+  ImageTarget target;
+  const FontMetrics& fm = font.metrics();
+  std::vector<std::pair<gpu::GlyphBands, Vec2>> glyphs;
+  gpu::BandScratch scratch;
+  double pen = 0.0;
+  for (const ShapedGlyph& g : line.glyphs) {
+    gpu::GlyphBands bands;
+    gpu::build_bands(build_mesh(font.glyph_outline(g.glyph_id)), bands, scratch);
+    glyphs.push_back({std::move(bands), Vec2{pen + g.x_offset, g.y_offset}});
+    pen += g.x_advance;
+  }
+  const struct {
+    const char* name;
+    Transform map;
+    double ppem;
+  } cases[] = {{"rotated 30", Transform::rotation(30.0), 16.0},
+               {"rotated -72.5", Transform::rotation(-72.5), 9.0},
+               {"rotated 90", Transform::rotation(90.0), 33.3},
+               {"skewed -15, 5", Transform::skew(-15.0, 5.0), 20.0},
+               {"skewed 40, 0", Transform::skew(40.0, 0.0), 120.0},
+               {"flipped, rotated 3", Transform{{-1, 0.05, 0, 0.05, 1, 0, 0, 0, 1}}, 27.0}};
+  for (const auto& c : cases) {
+    const DrawBatch batch = DrawBatch::from_text(cache, font, line, c.ppem);
+    ASSERT_TRUE(DrawBatchAccess::impl(batch).banded) << c.name;
+    const double scale = c.ppem / fm.units_per_em;
+    // The block's box under the map, moved into the image with a margin.
+    Placement placement{scale, 0.0, 0.0, c.map};
+    const Transform local{{scale, 0.0, 0.0, 0.0, -scale, 0.0, 0.0, 0.0, 1.0}};
+    Box image;
+    for (double x : {0.0, line.advance})
+      for (double y : {static_cast<double>(fm.descender), static_cast<double>(fm.ascender)})
+        image.add((c.map * local).apply({x, y}));
+    // The origin moves the block by its image under the map.
+    const Vec2 origin = gpu::inverse(c.map).apply(Vec2{4.37 - image.min.x, 3.61 - image.min.y} + c.map.apply({0, 0}));
+    placement.origin_x = origin.x;
+    placement.origin_y = origin.y;
+    const Transform to_origin{{1.0, 0.0, placement.origin_x, 0.0, 1.0, placement.origin_y, 0.0, 0.0, 1.0}};
+    const Transform full = c.map * to_origin * local;
+    const Transform inv = gpu::inverse(full);
+    const int width = static_cast<int>(std::ceil(image.max.x - image.min.x + 9));
+    const int height = static_cast<int>(std::ceil(image.max.y - image.min.y + 8));
+    target.begin(width, height, Color{1, 1, 1, 1});
+    const std::size_t passes = renderer.offscreen_passes();
+    renderer.draw(batch, placement, DrawOptions(Color{0, 0, 0, 1}, AntiAliasing::Full));
+    EXPECT_EQ(renderer.offscreen_passes(), passes) << c.name;
+    const Image drawn = target.read_pixels();
+    // The inverse's linear part: the pixel's axes in outline units.
+    const gpu::Footprint f{{inv.m[0], inv.m[3]}, {inv.m[1], inv.m[4]}};
+    double worst = 0.0, ink = 0.0;
+    for (int j = 0; j < height; ++j)
+      for (int i = 0; i < width; ++i) {
+        const Vec2 centre = inv.apply({i + 0.5, j + 0.5});
+        double clear = 1.0;
+        for (const auto& [bands, at] : glyphs)
+          clear *= 1.0 - std::clamp(gpu::band_footprint_coverage(bands, centre - at, f), 0.0, 1.0);
+        const double got = 1.0 - drawn.rgba[4 * (static_cast<std::size_t>(j) * width + i)] / 255.0;
+        worst = std::max(worst, std::abs(got - (1.0 - clear)));
+        ink += 1.0 - clear;
+      }
+    std::printf("bands %s at %.1f px: largest difference to the CPU %.4f (ink %.1f px)\n", c.name, c.ppem, worst, ink);
+    EXPECT_GT(ink, 10.0) << c.name;
+    EXPECT_LE(worst, 0.5 / 255.0 + 1e-3) << c.name;
+  }
+  // Under perspective too (first order: tests/transform_test.cpp holds it
+  // against exact coverage).
+  const DrawBatch batch = DrawBatch::from_text(cache, font, line, 24.0);
+  target.begin(300, 80, Color{1, 1, 1, 1});
   const std::size_t passes = renderer.offscreen_passes();
-  renderer.draw(batch, Placement{16.0 / fm.units_per_em, 10, 30, Transform::rotation(10.0)},
+  renderer.draw(batch, Placement{24.0 / fm.units_per_em, 10, 50, Transform::perspective(50.0, 400.0)},
                 DrawOptions(Color{0, 0, 0, 1}, AntiAliasing::Full));
-  EXPECT_EQ(renderer.offscreen_passes(), passes + 1);
+  EXPECT_EQ(renderer.offscreen_passes(), passes);
 }
 
 // `auto` is full wherever the renderer draws a text block from its curve

@@ -137,6 +137,18 @@ TEST(Perspective, TiltedPlaneMatchesExactCoverage) {
   }
 }
 
+// Steeper: turned 80 degrees and seen from 120 px, the far half shrinks to a
+// sliver and a pixel's footprint changes across the pixel itself; full's one
+// pass takes the local affine map at each pixel (first order), measured here
+// against the exact coverage.
+TEST(Perspective, SteepTiltStaysCloseToExactCoverage) {
+  for (double size : {32.0, 96.0}) {
+    const Result r =
+        render(test::kDejaVuSans, "Hamburgefontsiv", size, Transform::perspective(80.0, 120.0), AntiAliasing::Full);
+    expect_close("perspective80_DejaVu_" + std::to_string(static_cast<int>(size)) + "px", r, 0.01, 0.02);
+  }
+}
+
 TEST(AffineMaps, NonUniformScaleAndSkew) {
   const Result scaled =
       render(test::kNotoSans, "Hamburgefontsiv", 24.0, Transform::scale(2.0, 0.75), AntiAliasing::Full);

@@ -534,4 +534,171 @@ double band_box_coverage(const GlyphBands& bands, Vec2 centre, Vec2 half) {
   return sum;
 }
 
+namespace {
+
+// The parallelogram's corners, counter-clockwise.
+std::array<Vec2, 4> corners(const Footprint& f) {
+  const Vec2 u = cross(f.u, f.v) >= 0.0 ? f.u : f.v, v = cross(f.u, f.v) >= 0.0 ? f.v : f.u;
+  return {-0.5 * (u + v), 0.5 * (u - v), 0.5 * (u + v), 0.5 * (v - u)};
+}
+
+// The edge from a to b (not level) as the line x = e(y): e at a height
+// within its rows, from the parameter along it (no division by the slope).
+double edge_x(Vec2 a, Vec2 d, double y) { return a.x + d.x * std::clamp((y - a.y) / d.y, 0.0, 1.0); }
+
+// The integral of x - e(y) dy along the arc between t0 and t1 (within the
+// edge's rows).
+double beyond_edge(const BandPiece& p, double t0, double t1, Vec2 a, Vec2 d) {
+  const double y0 = y_at(p, t0), y1 = y_at(p, t1);
+  return arc_x_dy(p, t0, t1) - (y1 - y0) * edge_x(a, d, 0.5 * (y0 + y1));
+}
+
+// Positive right of the line through a along d (d.y != 0), as x - e(y) is
+// (scaled by |d.y|).
+double right_of(Vec2 q, Vec2 a, Vec2 d) { return (d.y * (q.x - a.x) - d.x * (q.y - a.y)) * (d.y > 0.0 ? 1.0 : -1.0); }
+
+// Edge a -> b of the parallelogram (counter-clockwise): the integral of
+// max(0, x - e(y)) dy over the piece's part within the edge's rows and
+// within parameters [m0, m1], plus on
+// the left chain (a above b), minus on the right. The piece is monotone in y:
+// the rows are one parameter interval; its line crossings, two at most, cut
+// it into parts alternately right and left of the line.
+double edge_term(const BandPiece& p, Vec2 a, Vec2 b, double m0, double m1) {
+  const Vec2 d = b - a;
+  if (d.y == 0.0) return 0.0;
+  const double s0 = monotone_crossing(p.p0.y, p.c.y, p.p2.y, p.w, std::min(a.y, b.y));
+  const double s1 = monotone_crossing(p.p0.y, p.c.y, p.p2.y, p.w, std::max(a.y, b.y));
+  const double ta = std::max(std::min(s0, s1), m0), tb = std::min(std::max(s0, s1), m1);
+  if (!(tb > ta)) return 0.0;
+  double roots[2];
+  const int n = roots_in_unit(right_of(p.p0, a, d), p.w * right_of(p.c, a, d), right_of(p.p2, a, d), roots);
+  double r0 = n > 0 ? roots[0] : 2.0, r1 = n > 1 ? roots[1] : r0;
+  if (r0 > r1) std::swap(r0, r1);
+  if (n == 1) r1 = 2.0;
+  r0 = std::clamp(r0, ta, tb);
+  r1 = std::clamp(r1, ta, tb);
+  // The middle part [r0, r1] lies on one side, the outer parts on the
+  // other; the side is read at the middle of the longest part (a short
+  // part's may lie on the line within rounding).
+  const double outer = std::max(r0 - ta, tb - r1);
+  const double probe = r1 - r0 >= outer ? 0.5 * (r0 + r1) : r0 - ta >= tb - r1 ? 0.5 * (ta + r0) : 0.5 * (r1 + tb);
+  const bool middle_right = (right_of(at(p, probe).point(), a, d) > 0.0) == (r1 - r0 >= outer);
+  const double mid = r1 > r0 ? beyond_edge(p, r0, r1, a, d) : 0.0;
+  const double sum = middle_right ? mid : beyond_edge(p, ta, tb, a, d) - mid;
+  return a.y > b.y ? sum : -sum;
+}
+
+}  // namespace
+
+double monotone_piece_footprint_integral(const BandPiece& p, const Footprint& f) {
+  // The part right of the bounding box adds the width over its rows, the
+  // part left of it nothing; the edges' terms run over the part between
+  // (bounded terms: no cancelling of large ones in the shader's floats).
+  const std::array<Vec2, 4> v = corners(f);
+  const double hx = f.half().x;
+  const double tx0 = monotone_crossing(p.p0.x, p.c.x, p.p2.x, p.w, -hx);
+  const double tx1 = monotone_crossing(p.p0.x, p.c.x, p.p2.x, p.w, hx);
+  const bool increasing = p.p2.x > p.p0.x;
+  double sum = footprint_width_integral(f, y_at(p, increasing ? tx1 : 0.0), y_at(p, increasing ? 1.0 : tx1));
+  const double m0 = std::min(tx0, tx1), m1 = std::max(tx0, tx1);
+  for (int e = 0; e < 4; ++e) sum += edge_term(p, v[e], v[(e + 1) % 4], m0, m1);
+  return sum;
+}
+
+double footprint_width_integral(const Footprint& f, double y0, double y1) {
+  // The x of the two chains cancel: minus the integral of e(y) dy on the
+  // left chain, plus on the right, over each edge's rows.
+  const std::array<Vec2, 4> v = corners(f);
+  double sum = 0.0;
+  for (int e = 0; e < 4; ++e) {
+    const Vec2 a = v[e], d = v[(e + 1) % 4] - a;
+    if (d.y == 0.0) continue;
+    const double lo = std::min(a.y, a.y + d.y), hi = std::max(a.y, a.y + d.y);
+    const double c0 = std::clamp(y0, lo, hi), c1 = std::clamp(y1, lo, hi);
+    sum += (d.y > 0.0 ? 1.0 : -1.0) * (c1 - c0) * edge_x(a, d, 0.5 * (c0 + c1));
+  }
+  return sum;
+}
+
+double piece_footprint_integral(const BandPiece& p, const Footprint& f) {
+  const std::array<Vec2, 4> v = corners(f);
+  double ts[18] = {0.0, 1.0};
+  int n = 2;
+  for (int e = 0; e < 4; ++e) {
+    n += roots_in_unit(p.p0.y - v[e].y, p.w * (p.c.y - v[e].y), p.p2.y - v[e].y, ts + n);
+    const Vec2 a = v[e], d = v[(e + 1) % 4] - a;
+    const auto side = [&](Vec2 q) { return cross(d, q - a); };
+    n += roots_in_unit(side(p.p0), p.w * side(p.c), side(p.p2), ts + n);
+  }
+  std::sort(ts, ts + n);
+  const double y_lo = std::min({v[0].y, v[1].y, v[2].y, v[3].y}), y_hi = std::max({v[0].y, v[1].y, v[2].y, v[3].y});
+  double sum = 0.0;
+  for (int i = 0; i + 1 < n; ++i) {
+    const double t0 = ts[i], t1 = ts[i + 1];
+    if (!(t1 > t0)) continue;
+    const Vec2 m = at(p, 0.5 * (t0 + t1)).point();
+    if (!(m.y > y_lo && m.y < y_hi)) continue;
+    // The row at the midpoint's height: the edges of the left chain (going
+    // down) and of the right (going up) that span it; the part stays within
+    // their rows, where each is one line.
+    Vec2 la{0.0, 0.0}, ld{0.0, 1.0}, ra{0.0, 0.0}, rd{0.0, 1.0};
+    for (int e = 0; e < 4; ++e) {
+      const Vec2 a = v[e], d = v[(e + 1) % 4] - a;
+      if (d.y == 0.0 || m.y < std::min(a.y, a.y + d.y) || m.y > std::max(a.y, a.y + d.y)) continue;
+      (d.y < 0.0 ? la : ra) = a;
+      (d.y < 0.0 ? ld : rd) = d;
+    }
+    const auto line_x = [](Vec2 a, Vec2 d, double y) { return a.x + (y - a.y) * d.x / d.y; };
+    const double xl = line_x(la, ld, m.y), xr = line_x(ra, rd, m.y);
+    if (m.x <= xl) continue;
+    const double y0 = y_at(p, t0), y1 = y_at(p, t1), ym = 0.5 * (y0 + y1);
+    sum += m.x >= xr ? (y1 - y0) * (line_x(ra, rd, ym) - line_x(la, ld, ym))
+                     : arc_x_dy(p, t0, t1) - (y1 - y0) * line_x(la, ld, ym);
+  }
+  return sum;
+}
+
+double footprint_coverage(std::span<const BandPiece> pieces, Vec2 centre, const Footprint& f) {
+  double sum = 0.0;
+  for (const BandPiece& p : pieces)
+    sum += piece_footprint_integral({p.p0 - centre, p.c - centre, p.p2 - centre, p.w}, f);
+  return sum / f.area();
+}
+
+double band_footprint_coverage(const GlyphBands& bands, Vec2 centre, const Footprint& f) {
+  if (bands.empty()) return 0.0;
+  const Vec2 half = f.half();
+  if (const int state = grid_state(bands, centre, half); state != 2) return state;
+  const int level = band_level(bands, half.y);
+  const int n = 1 << level;
+  const double h = (bands.box.max.y - bands.box.min.y) / n;
+  const double row_lo = centre.y - half.y, row_hi = centre.y + half.y;
+  const double left = centre.x - half.x, right = centre.x + half.x;
+  const int k = std::clamp(static_cast<int>(std::floor((row_lo - bands.box.min.y) / h)), 0, n - 1);
+  const int band = n - 1 + k;
+  const auto texel = [&](std::size_t i) -> const std::array<float, 4>& { return bands.texels[i]; };
+  const auto entry_texel = static_cast<std::size_t>(texel(0)[0]), ref_texel = static_cast<std::size_t>(texel(0)[1]);
+  const std::array<float, 4>& header = texel(1 + static_cast<std::size_t>(band / 2));
+  const auto first = static_cast<std::size_t>(header[2 * (band % 2)]);
+  const auto count = static_cast<std::size_t>(header[2 * (band % 2) + 1]);
+  // Scaled so that the bounding box is [-1/2, 1/2]^2 (the shader's units).
+  const double kx = 0.5 / half.x, ky = 0.5 / half.y;
+  const Footprint g{{f.u.x * kx, f.u.y * ky}, {f.v.x * kx, f.v.y * ky}};
+  const auto px = [&](double x, double y) { return Vec2{(x - centre.x) * kx, (y - centre.y) * ky}; };
+  double sum = 0.0;
+  for (std::size_t j = first; j < first + count; ++j) {
+    const std::array<float, 4>& e = texel(entry_texel + j);
+    if (e[0] < left) break;
+    if (std::max(e[2], e[3]) < row_lo || std::min(e[2], e[3]) > row_hi) continue;
+    if (e[1] >= right) {
+      sum += footprint_width_integral(g, (e[2] - centre.y) * ky, (e[3] - centre.y) * ky);
+      continue;
+    }
+    const auto piece = static_cast<std::size_t>(texel(ref_texel + j / 4)[j % 4]);
+    const std::array<float, 4>&a = texel(piece), &b = texel(piece + 1);
+    sum += monotone_piece_footprint_integral({px(a[0], a[1]), px(a[2], a[3]), px(b[0], b[1]), b[2]}, g);
+  }
+  return sum / g.area();
+}
+
 }  // namespace curvetext::gpu

@@ -51,6 +51,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -141,5 +142,46 @@ int grid_state(const GlyphBands& bands, Vec2 centre, Vec2 half);
 // together (0 or 1 where all four are, else 2; cells beyond the grid are 0),
 // as packed.
 int block_state(const GlyphBands& bands, int g, int column, int row);
+
+// A pixel's footprint under a map that turns the axes (rotation, skew; the
+// local affine map under perspective): the parallelogram {s u + r v :
+// |s|, |r| <= 1/2} about the pixel's centre, u and v the images of the
+// pixel's axes under the inverse map (the inverse Jacobian's columns), in
+// the units of the pieces. Its area is |cross(u, v)|.
+//
+// The area of the region inside it is still integrated along the outline's
+// x, as for the box, so the bands (by the parallelogram's y extent) and their
+// culling (by its x extent) hold: the integrand is the width of its row left
+// of the piece, clamp(x, xl(y), xr(y)) - xl(y), which is max(0, x - xl(y)) -
+// max(0, x - xr(y)): a sum over its four edges of max(0, x - e(y)) over the
+// edge's rows, plus for the left chain, minus for the right (each from the
+// line's implicit form, no shear by the edge's slope). A piece wholly right of
+// its x extent adds the width over its rows, one wholly left nothing.
+struct Footprint {
+  Vec2 u, v;
+  // The half size of its bounding box.
+  Vec2 half() const { return {0.5 * (std::abs(u.x) + std::abs(v.x)), 0.5 * (std::abs(u.y) + std::abs(v.y))}; }
+  double area() const { return std::abs(cross(u, v)); }
+};
+
+// The integral of clamp(x, xl(y), xr(y)) - xl(y) dy over `piece` (units of
+// `f`, from the parallelogram's centre): any rational quadratic with
+// positive weights, cut at every height of a corner and every crossing of
+// an edge's line, each part's row of the parallelogram from its midpoint.
+double piece_footprint_integral(const BandPiece& piece, const Footprint& f);
+// The same for a piece monotone in x and y, as the shader computes it: edge
+// by edge, the parts of the piece right of the edge's line within its rows
+// (two crossings at most).
+double monotone_piece_footprint_integral(const BandPiece& piece, const Footprint& f);
+// The part of a piece wholly right of the parallelogram between heights y0
+// and y1 (from its centre): the integral of its row's width, per edge.
+double footprint_width_integral(const Footprint& f, double y0, double y1);
+// The fraction of the parallelogram about `centre` (outline units) inside
+// the region the pieces bound: through every piece, and through the packed
+// bands as the shader reads them (the band and the cells of its bounding
+// box, the early stop, the culling by its x extent; the pieces scaled so that
+// the bounding box is [-1/2, 1/2]^2, as the shader does).
+double footprint_coverage(std::span<const BandPiece> pieces, Vec2 centre, const Footprint& f);
+double band_footprint_coverage(const GlyphBands& bands, Vec2 centre, const Footprint& f);
 
 }  // namespace curvetext::gpu

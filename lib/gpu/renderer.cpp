@@ -200,9 +200,9 @@ struct Renderer::Impl {
   struct BandProgram {
     GLuint id = 0;
     ProgramUniforms view;
-    GLint half = -1, bands = -1;
+    GLint half = -1, bands = -1, inverse = -1, projective = -1;
   };
-  BandProgram band_program[2][2];  // [gamma][conics]
+  BandProgram band_program[2][2][2];  // [gamma][conics][footprint: a map that turns the axes]
   GLuint corner_vbo = 0;
   std::size_t band_draws = 0;
   // Colour bitmaps: textured quads (bitmap.vert/frag.glsl).
@@ -334,7 +334,7 @@ struct Renderer::Impl {
   // Each program compiled and linked on first use (Error(Gl) if it fails).
   void make_curve_program();
   void make_area_programs(bool gamma);  // area_program[gamma]
-  const BandProgram& make_band_program(bool gamma, bool conics);
+  const BandProgram& make_band_program(bool gamma, bool conics, bool footprint);
   const QuadProgram& composite_program(bool box, bool gamma);
   const QuadProgram& resolve_program();
   const QuadProgram& paint_program(bool box, bool gamma);
@@ -359,9 +359,12 @@ struct Renderer::Impl {
     for (GLuint p :
          {program, area_program[0][0], area_program[0][1], area_program[1][0], area_program[1][1], resolve.id,
           composite[0][0].id, composite[0][1].id, composite[1][0].id, composite[1][1].id, bitmap_program,
-          paint_composite[0][0].id, paint_composite[0][1].id, paint_composite[1][0].id, paint_composite[1][1].id,
-          band_program[0][0].id, band_program[0][1].id, band_program[1][0].id, band_program[1][1].id})
+          paint_composite[0][0].id, paint_composite[0][1].id, paint_composite[1][0].id, paint_composite[1][1].id})
       if (p != 0) glDeleteProgram(p);
+    for (const auto& by_gamma : band_program)
+      for (const auto& by_conics : by_gamma)
+        for (const BandProgram& p : by_conics)
+          if (p.id != 0) glDeleteProgram(p.id);
     if (quad_vbo != 0) glDeleteBuffers(1, &quad_vbo);
     if (corner_vbo != 0) glDeleteBuffers(1, &corner_vbo);
     if (vao != 0) glDeleteVertexArrays(1, &vao);
@@ -438,18 +441,21 @@ void Renderer::Impl::make_area_programs(bool gamma) {
   }
 }
 
-const Renderer::Impl::BandProgram& Renderer::Impl::make_band_program(bool gamma, bool conics) {
-  BandProgram& p = band_program[gamma ? 1 : 0][conics ? 1 : 0];
+const Renderer::Impl::BandProgram& Renderer::Impl::make_band_program(bool gamma, bool conics, bool footprint) {
+  BandProgram& p = band_program[gamma ? 1 : 0][conics ? 1 : 0][footprint ? 1 : 0];
   if (p.id != 0) return p;
   Shader vs(GL_VERTEX_SHADER), fs(GL_FRAGMENT_SHADER);
-  compile_glsl3(vs, GL_VERTEX_SHADER, shader_source::bands_vert_glsl, gles, "");
+  const std::string footprint_define = std::string("#define CURVETEXT_FOOTPRINT ") + (footprint ? "1" : "0") + "\n";
+  compile_glsl3(vs, GL_VERTEX_SHADER, shader_source::bands_vert_glsl, gles, footprint_define);
   compile_glsl3(fs, GL_FRAGMENT_SHADER, shader_source::bands_frag_glsl, gles,
                 std::string("#define CURVETEXT_GAMMA ") + (gamma ? "1" : "0") + "\n#define CURVETEXT_CONICS " +
-                    (conics ? "1" : "0") + "\n");
+                    (conics ? "1" : "0") + "\n" + footprint_define);
   p.id = link_program(vs, fs, {"a_corner", "a_rect", "a_place"}, "band program");
   p.view = ProgramUniforms::of(p.id);
   p.half = glGetUniformLocation(p.id, "u_half");
   p.bands = glGetUniformLocation(p.id, "u_bands");
+  p.inverse = glGetUniformLocation(p.id, "u_inverse");
+  p.projective = glGetUniformLocation(p.id, "u_projective");
   if (corner_vbo == 0) {
     const GLfloat corners[8] = {0, 0, 1, 0, 0, 1, 1, 1};
     glGenBuffers(1, &corner_vbo);
@@ -955,32 +961,77 @@ class SamplerScope {
 
 }  // namespace
 
+namespace {
+
+// How the band program sees a pixel's footprint in outline units under
+// `full`: a box (a map that keeps the axes: scale, flips, translation), a
+// parallelogram (affine), or one per pixel (perspective, where w stays
+// positive over the block's box); none where the map is degenerate or part
+// of the block lies behind the eye (the mesh path then). `half`: the half
+// size of the box, or of the parallelogram's bounding box.
+struct BandFootprint {
+  enum Kind { None, Box, Affine, Projective } kind = None;
+  Vec2 half{0.0, 0.0};
+};
+
+BandFootprint band_footprint(const Transform& full, const Box& bounds) {
+  const auto& m = full.m;
+  const auto finite_positive = [](Vec2 h) {
+    return h.x > 0.0 && h.y > 0.0 && std::isfinite(h.x) && std::isfinite(h.y);
+  };
+  if (m[6] == 0.0 && m[7] == 0.0) {
+    if (!(m[8] > 0.0)) return {};
+    if (m[1] == 0.0 && m[3] == 0.0) {
+      const Vec2 half{0.5 * std::abs(m[8] / m[0]), 0.5 * std::abs(m[8] / m[4])};
+      return finite_positive(half) ? BandFootprint{BandFootprint::Box, half} : BandFootprint{};
+    }
+    // The inverse's columns, m[8] A^-1 (A the linear part).
+    const double det = m[0] * m[4] - m[1] * m[3];
+    const Vec2 u{m[8] * m[4] / det, -m[8] * m[3] / det}, v{-m[8] * m[1] / det, m[8] * m[0] / det};
+    const Vec2 half{0.5 * (std::abs(u.x) + std::abs(v.x)), 0.5 * (std::abs(u.y) + std::abs(v.y))};
+    return finite_positive(half) ? BandFootprint{BandFootprint::Affine, half} : BandFootprint{};
+  }
+  if (bounds.empty()) return {};
+  for (Vec2 c : {bounds.min, Vec2{bounds.max.x, bounds.min.y}, Vec2{bounds.min.x, bounds.max.y}, bounds.max})
+    if (!(full.w(c) > 0.0)) return {};
+  for (double v : gpu::inverse(full).m)
+    if (!std::isfinite(v)) return {};
+  return {BandFootprint::Projective, {0.0, 0.0}};
+}
+
+}  // namespace
+
 // full for text blocks (docs/design.md section 9): one instanced quad per
 // placed glyph, each pixel's exact area from the glyph's curve bands
 // blended straight into the target (premultiplied source-over, its depth
-// test): no offscreen pass. Under a map that keeps the axes (scale, flips,
-// translation; false otherwise: the caller takes the mesh path), where a
-// pixel's footprint in outline units is a box of half-size u_half.
-// Where the application writes depth, the glyphs' quads overlap at one
-// depth: the colour pass leaves depth alone (a glyph would hide its
+// test): no offscreen pass. Under a map that keeps the axes a pixel's
+// footprint in outline units is a box of half-size u_half; under one that
+// turns them the program built with CURVETEXT_FOOTPRINT integrates over its
+// parallelogram (exact for affine maps; per pixel, first order, under
+// perspective). Only where bands_serve (band_footprint finds a footprint;
+// else the caller takes the mesh path). Where the application writes depth, the glyphs' quads overlap
+// at one depth: the colour pass leaves depth alone (a glyph would hide its
 // neighbour's fringe), and a second pass writes it where there is ink.
 bool Renderer::Impl::bands_serve(const gpu::BatchImpl& b, const Transform& full) const {
-  if (!b.banded) return false;
-  const auto& m = full.m;
-  if (m[1] != 0.0 || m[3] != 0.0 || m[6] != 0.0 || m[7] != 0.0 || !(m[8] > 0.0)) return false;
-  const double sx = std::abs(m[0] / m[8]), sy = std::abs(m[4] / m[8]);
-  return sx > 0.0 && sy > 0.0 && std::isfinite(sx) && std::isfinite(sy);
+  return b.banded && band_footprint(full, b.bounds).kind != BandFootprint::None;
 }
 
 void Renderer::Impl::draw_bands(const gpu::BatchImpl& b, const Transform& full, float vw, float vh,
                                 const DrawOptions& options) {
-  const auto& m = full.m;
-  const double sx = std::abs(m[0] / m[8]), sy = std::abs(m[4] / m[8]);
+  const BandFootprint footprint = band_footprint(full, b.bounds);
   const bool gamma = coverage_exponent(options.gamma) != 1.0f;
-  const BandProgram& p = make_band_program(gamma, b.band_conics);
+  const BandProgram& p = make_band_program(gamma, b.band_conics, footprint.kind != BandFootprint::Box);
   glUseProgram(p.id);
   set_view(p.view, full, vw, vh, pass_depth);
-  glUniform2f(p.half, static_cast<float>(0.5 / sx), static_cast<float>(0.5 / sy));
+  glUniform2f(p.half, static_cast<float>(footprint.half.x), static_cast<float>(footprint.half.y));
+  if (footprint.kind != BandFootprint::Box) {
+    const Transform inv = gpu::inverse(full);
+    GLfloat m[9];
+    for (int row = 0; row < 3; ++row)
+      for (int col = 0; col < 3; ++col) m[col * 3 + row] = static_cast<GLfloat>(inv.m[row * 3 + col]);
+    glUniformMatrix3fv(p.inverse, 1, GL_FALSE, m);
+    glUniform1i(p.projective, footprint.kind == BandFootprint::Projective ? 1 : 0);
+  }
   const std::array<float, 4> color = premultiplied(options.color, target_blending);
   glUniform4f(p.view.color, color[0], color[1], color[2], color[3]);
   glUniform1f(p.view.coverage_exponent, coverage_exponent(options.gamma));
