@@ -222,16 +222,16 @@ int levels_for(std::size_t pieces) {
 
 namespace {
 
-// The bands of `level` that piece i's heights [lo, hi] (from y0) reach, a
-// little generously (an extra piece is culled by the shader's height test).
-std::pair<std::size_t, std::size_t> band_range(double lo, double hi, double h, std::size_t n) {
-  // Band k holds [k h, (k + 2) h]; a margin of 1e-4 h covers the shader's
-  // rounding of the row's band.
-  const double k0 = std::floor(lo / h - 1e-4) - 2.0, k1 = std::floor(hi / h + 1e-4);
-  const auto clamp_k = [&](double k) {
-    return static_cast<std::size_t>(std::clamp(k, 0.0, static_cast<double>(n - 1)));
-  };
-  return {clamp_k(k0), clamp_k(k1)};
+// The bands a piece reaches on the finest of `levels` levels (n = 2^(levels
+// - 1) bands of height h = 1 / n), its heights [lo, hi] in units of the box's
+// height from its bottom: band k holds [k h, (k + 2) h], so k from lo n - 2
+// to hi n. On level L, k >> (levels - 1 - L) of these, since floor(x / 2^j)
+// = floor(floor(x) / 2^j). The margin, 1.6e-3 finest bands (at least 1e-4
+// of a band on every level), covers the shader's rounding of the row's band.
+std::pair<int, int> finest_bands(double lo, double hi, int levels) {
+  const double n = static_cast<double>(1 << (levels - 1));
+  constexpr double kMargin = 1.6e-3;
+  return {static_cast<int>(std::floor(lo * n - kMargin)), static_cast<int>(std::floor(hi * n + kMargin))};
 }
 
 // The entries of every band of every level (level L, band k: 2^L - 1 + k),
@@ -253,11 +253,12 @@ void add_entries(const std::vector<BandPiece>& pieces, std::size_t piece_texel, 
   next.assign(bands + 1, 0);
   const auto each_band = [&](std::size_t i, auto&& visit) {
     const BandPiece& p = pieces[i];
-    const double lo = std::min({p.p0.y, p.c.y, p.p2.y}) - y0, hi = std::max({p.p0.y, p.c.y, p.p2.y}) - y0;
+    const auto [f0, f1] = finest_bands((std::min({p.p0.y, p.c.y, p.p2.y}) - y0) / height,
+                                       (std::max({p.p0.y, p.c.y, p.p2.y}) - y0) / height, out.levels);
     for (int level = 0; level < out.levels; ++level) {
-      const std::size_t count = std::size_t{1} << level;
-      const auto [k0, k1] = band_range(lo, hi, height / static_cast<double>(count), count);
-      for (std::size_t k = k0; k <= k1; ++k) visit(count - 1 + k);
+      const int shift = out.levels - 1 - level, last = (1 << level) - 1;
+      const int k0 = std::clamp((f0 >> shift) - 1, 0, last), k1 = std::clamp(f1 >> shift, 0, last);
+      for (int k = k0; k <= k1; ++k) visit(static_cast<std::size_t>(last + k));
     }
   };
   for (std::size_t i = 0; i < n; ++i) each_band(i, [&](std::size_t band) { ++next[band + 1]; });
@@ -372,17 +373,65 @@ void mark_cells(const std::vector<BandPiece>& pieces, const Box& box, int n, Ban
   }
 }
 
-// Grid n / 2 from grid n: a cell is 0 or 1 where its four are, else 2.
-void halve_cells(std::vector<std::uint8_t>& cells, int n) {
-  const int h = n / 2;
-  for (int r = 0; r < h; ++r)
-    for (int c = 0; c < h; ++c) {
-      const auto at = [&](int rr, int cc) { return cells[static_cast<std::size_t>(rr * n + cc)]; };
-      const std::uint8_t a = at(2 * r, 2 * c), b = at(2 * r, 2 * c + 1), d = at(2 * r + 1, 2 * c),
-                         e = at(2 * r + 1, 2 * c + 1);
-      cells[static_cast<std::size_t>(r * h + c)] = a == b && a == d && a == e ? a : 2;
+// A grid's cells as bit rows: bit c of inside[r] (outside[r]) set where cell
+// (c, r) is wholly inside (outside); neither where a piece reaches it.
+struct CellRows {
+  std::array<std::uint32_t, 1 << kGridMaxLog2> inside{}, outside{};
+};
+
+CellRows cell_rows(const std::vector<std::uint8_t>& cells, int n) {
+  CellRows rows;
+  for (int r = 0; r < n; ++r)
+    for (int c = 0; c < n; ++c) {
+      const std::uint8_t v = cells[static_cast<std::size_t>(r * n + c)];
+      rows.inside[r] |= static_cast<std::uint32_t>(v == 1) << c;
+      rows.outside[r] |= static_cast<std::uint32_t>(v == 0) << c;
     }
-  cells.resize(static_cast<std::size_t>(h) * static_cast<std::size_t>(h));
+  return rows;
+}
+
+// Grid n / 2 from grid n: a cell is inside (outside) where its four are.
+CellRows halve_rows(const CellRows& fine, int n) {
+  CellRows coarse;
+  const auto halve = [n](std::uint32_t lower, std::uint32_t upper) {
+    const std::uint32_t both = lower & upper, pairs = both & (both >> 1);
+    std::uint32_t out = 0;
+    for (int c = 0; 2 * c < n; ++c) out |= ((pairs >> (2 * c)) & 1u) << c;
+    return out;
+  };
+  for (int r = 0; 2 * r < n; ++r) {
+    coarse.inside[r] = halve(fine.inside[2 * r], fine.inside[2 * r + 1]);
+    coarse.outside[r] = halve(fine.outside[2 * r], fine.outside[2 * r + 1]);
+  }
+  return coarse;
+}
+
+// Grid g's blocks packed 2 bits each (layout: bands.hpp): block (c, r),
+// c, r = 0 .. n, covers cells c - 1 .. c, r - 1 .. r, those beyond the grid
+// outside. Its code is 1 where all four are inside, 0 where all are outside,
+// else 2.
+void pack_blocks(const CellRows& rows, int n, std::array<float, 4>* texels) {
+  const std::uint32_t border = (std::uint32_t{1} << (n + 2)) - 1;  // padded columns 0 .. n + 1
+  const auto padded_row = [&](const std::array<std::uint32_t, 1 << kGridMaxLog2>& bits, int r, bool outside) {
+    if (r < 1 || r > n) return outside ? border : 0u;
+    return (bits[r - 1] << 1) | (outside ? 1u | (1u << (n + 1)) : 0u);
+  };
+  unsigned word = 0;  // blocks i - i % 8 .. i, 2 bits each
+  int i = 0;
+  for (int r = 0; r <= n; ++r) {
+    const std::uint32_t in = padded_row(rows.inside, r, false) & padded_row(rows.inside, r + 1, false);
+    const std::uint32_t out = padded_row(rows.outside, r, true) & padded_row(rows.outside, r + 1, true);
+    const std::uint32_t in_pairs = in & (in >> 1), out_pairs = out & (out >> 1);
+    for (int c = 0; c <= n; ++c, ++i) {
+      const unsigned code = 2u - ((in_pairs >> c) & 1u) - 2u * ((out_pairs >> c) & 1u);
+      word |= code << (2 * (i % 8));
+      if (i % 8 == 7) {
+        texels[i / 32][(i / 8) % 4] = static_cast<float>(word);
+        word = 0;
+      }
+    }
+  }
+  if (i % 8 != 0) texels[(i - 1) / 32][((i - 1) / 8) % 4] = static_cast<float>(word);
 }
 
 // The cell grids (layout: bands.hpp), appended to the texels: the finest
@@ -392,29 +441,10 @@ void add_grids(const std::vector<BandPiece>& pieces, GlyphBands& out, BandScratc
   const std::size_t first = out.texels.size();
   out.texels.resize(first + static_cast<std::size_t>(grid_offset(kGridMaxLog2 + 1)), {0.0f, 0.0f, 0.0f, 0.0f});
   mark_cells(pieces, out.box, 1 << kGridMaxLog2, scratch);
+  CellRows rows = cell_rows(scratch.cells, 1 << kGridMaxLog2);
   for (int g = kGridMaxLog2; g >= kGridMinLog2; --g) {
-    if (g < kGridMaxLog2) halve_cells(scratch.cells, 2 << g);
-    std::array<float, 4>* texels = out.texels.data() + first + grid_offset(g);
-    const int n = 1 << g;
-    // The cells with a border of outside cells, so that block (c, r) is
-    // the padded cells (c .. c + 1, r .. r + 1).
-    const int m = n + 2;
-    std::vector<std::uint8_t>& padded = scratch.padded;
-    padded.assign(static_cast<std::size_t>(m) * static_cast<std::size_t>(m), 0);
-    for (int r = 0; r < n; ++r) std::copy_n(scratch.cells.begin() + r * n, n, padded.begin() + (r + 1) * m + 1);
-    unsigned word = 0;  // blocks i - i % 8 .. i, 2 bits each
-    int i = 0;
-    for (int r = 0; r <= n; ++r)
-      for (int c = 0; c <= n; ++c, ++i) {
-        const std::uint8_t* q = padded.data() + r * m + c;
-        const int a = q[0], b = q[1], d = q[m], e = q[m + 1];
-        word |= (a == b && a == d && a == e ? static_cast<unsigned>(a) : 2u) << (2 * (i % 8));
-        if (i % 8 == 7) {
-          texels[i / 32][(i / 8) % 4] = static_cast<float>(word);
-          word = 0;
-        }
-      }
-    if (i % 8 != 0) texels[(i - 1) / 32][((i - 1) / 8) % 4] = static_cast<float>(word);
+    if (g < kGridMaxLog2) rows = halve_rows(rows, 2 << g);
+    pack_blocks(rows, 1 << g, out.texels.data() + first + grid_offset(g));
   }
   out.texels[0][2] = static_cast<float>(first);
 }

@@ -105,7 +105,7 @@ struct BandScratch {
   std::vector<BandPiece> pieces;
   std::vector<std::uint32_t> order, refs, next;
   std::vector<std::array<float, 4>> entries;
-  std::vector<std::uint8_t> cells, padded;
+  std::vector<std::uint8_t> cells;
   std::vector<int> delta;
 };
 
