@@ -108,7 +108,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (outline.signed_area() < -1e-9 * std::max(1.0, reach_out * reach_out)) fuzz::fail("negative stroke area");
   // Meshing: small outlines only (build_mesh has its own target, and its
   // self-check spends seconds under ASan on arcs lying on each other, which
-  // round caps and dots make: tests/fuzz/pending/stroke).
+  // round caps and dots make: corpus/stroke/*-meshed replay three).
   if (segments > kMaxMeshedSegments || !(mode & 16)) return 0;
   fuzz::mesh_and_check(outline, 0.25, false);
   return 0;
