@@ -109,88 +109,78 @@ class Parser {
     v.column = column();
     const char c = s_[pos_];
     if (c == '{') {
-      v.type = Value::Type::Object;
-      ++pos_;
-      skip_space();
-      if (pos_ < s_.size() && s_[pos_] == '}') {
-        ++pos_;
-        return v;
-      }
-      for (;;) {
-        skip_space();
-        if (pos_ >= s_.size() || s_[pos_] != '"') fail("expected a string key in an object");
-        const int key_line = line_, key_column = column();
-        std::string key = string();
-        if (v.find(key))
-          throw Error(ErrorCode::InvalidArgument, "JSON line " + std::to_string(key_line) + ", column " +
-                                                      std::to_string(key_column) + ": duplicate key \"" + key + "\"");
-        skip_space();
-        if (pos_ >= s_.size() || s_[pos_] != ':') fail("expected ':' after an object key");
-        ++pos_;
-        skip_space();
-        Value member = value(depth + 1);
-        v.object.emplace_back(std::move(key), std::move(member));
-        skip_space();
-        if (pos_ < s_.size() && s_[pos_] == ',') {
-          ++pos_;
-          continue;
-        }
-        if (pos_ < s_.size() && s_[pos_] == '}') {
-          ++pos_;
-          return v;
-        }
-        fail("expected ',' or '}' in an object");
-      }
+      object(v, depth);
+    } else if (c == '[') {
+      array(v, depth);
+    } else {
+      scalar(v, c);
     }
-    if (c == '[') {
-      v.type = Value::Type::Array;
-      ++pos_;
+    return v;
+  }
+
+  // Whether the next character (after spaces) is `c`; if so, past it.
+  bool take(char c) {
+    skip_space();
+    if (pos_ >= s_.size() || s_[pos_] != c) return false;
+    ++pos_;
+    return true;
+  }
+
+  void object(Value& v, int depth) {
+    v.type = Value::Type::Object;
+    ++pos_;
+    if (take('}')) return;
+    for (;;) {
       skip_space();
-      if (pos_ < s_.size() && s_[pos_] == ']') {
-        ++pos_;
-        return v;
-      }
-      for (;;) {
-        skip_space();
-        v.array.push_back(value(depth + 1));
-        skip_space();
-        if (pos_ < s_.size() && s_[pos_] == ',') {
-          ++pos_;
-          continue;
-        }
-        if (pos_ < s_.size() && s_[pos_] == ']') {
-          ++pos_;
-          return v;
-        }
-        fail("expected ',' or ']' in an array");
-      }
+      if (pos_ >= s_.size() || s_[pos_] != '"') fail("expected a string key in an object");
+      const int key_line = line_, key_column = column();
+      std::string key = string();
+      if (v.find(key))
+        throw Error(ErrorCode::InvalidArgument, "JSON line " + std::to_string(key_line) + ", column " +
+                                                    std::to_string(key_column) + ": duplicate key \"" + key + "\"");
+      if (!take(':')) fail("expected ':' after an object key");
+      skip_space();
+      Value member = value(depth + 1);
+      v.object.emplace_back(std::move(key), std::move(member));
+      if (take(',')) continue;
+      if (take('}')) return;
+      fail("expected ',' or '}' in an object");
     }
+  }
+
+  void array(Value& v, int depth) {
+    v.type = Value::Type::Array;
+    ++pos_;
+    if (take(']')) return;
+    for (;;) {
+      skip_space();
+      v.array.push_back(value(depth + 1));
+      if (take(',')) continue;
+      if (take(']')) return;
+      fail("expected ',' or ']' in an array");
+    }
+  }
+
+  // A string, true, false, null or a number starting with `c`.
+  void scalar(Value& v, char c) {
     if (c == '"') {
       v.type = Value::Type::String;
       v.string = string();
-      return v;
-    }
-    if (c == 't') {
+    } else if (c == 't') {
       expect_word("true");
       v.type = Value::Type::Bool;
       v.boolean = true;
-      return v;
-    }
-    if (c == 'f') {
+    } else if (c == 'f') {
       expect_word("false");
       v.type = Value::Type::Bool;
-      return v;
-    }
-    if (c == 'n') {
+    } else if (c == 'n') {
       expect_word("null");
-      return v;
-    }
-    if (c == '-' || (c >= '0' && c <= '9')) {
+    } else if (c == '-' || (c >= '0' && c <= '9')) {
       v.type = Value::Type::Number;
       v.number = number();
-      return v;
+    } else {
+      fail("unexpected '" + shown(c) + "' (a value was expected)");
     }
-    fail("unexpected '" + shown(c) + "' (a value was expected)");
   }
 
   static bool digit(char c) { return c >= '0' && c <= '9'; }
