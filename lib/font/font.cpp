@@ -256,6 +256,43 @@ int Font::face_count(const std::string& path) {
 
 namespace {
 
+// The HarfBuzz face and font over the impl's bytes. The blob holds its own
+// reference to the bytes (freed by the destroy callback), so HarfBuzz
+// objects that outlive the Font stay valid.
+void open_harfbuzz(FontAccess::Impl& impl) {
+  auto* blob_bytes = new FontBytes(impl.bytes);
+  impl.hb_blob_owner.reset(hb_blob_create(reinterpret_cast<const char*>(impl.bytes->data()),
+                                          static_cast<unsigned int>(impl.bytes->size()), HB_MEMORY_MODE_READONLY,
+                                          blob_bytes, [](void* user) { delete static_cast<FontBytes*>(user); }));
+  impl.hb_face_owner.reset(hb_face_create(impl.hb_blob_owner.get(), static_cast<unsigned int>(impl.face_index)));
+  impl.hb_font_owner.reset(hb_font_create(impl.hb_face_owner.get()));
+  impl.hb_font = impl.hb_font_owner.get();
+  // FreeType accepts formats HarfBuzz does not (WOFF, for one): HarfBuzz then
+  // sees an empty face with no glyphs.
+  if (hb_face_get_glyph_count(impl.hb_face_owner.get()) == 0)
+    throw Error(ErrorCode::FontInvalid,
+                "HarfBuzz cannot read face " + std::to_string(impl.face_index) + ": " + impl.path);
+}
+
+// The variation axes of a variable face, each at its default.
+void read_axes(FontAccess::Impl& impl) {
+  FT_MM_Var* mm = nullptr;
+  if (FT_Error error = FT_Get_MM_Var(impl.ft_face, &mm))
+    throw Error(ErrorCode::FontInvalid, "cannot read variation axes (" + ft_error_text(error) + "): " + impl.path);
+  for (FT_UInt i = 0; i < mm->num_axis; ++i) {
+    const FT_Var_Axis& a = mm->axis[i];
+    AxisInfo axis;
+    axis.hb_tag = static_cast<std::uint32_t>(a.tag);
+    axis.tag = tag_to_string(axis.hb_tag);
+    axis.minimum = a.minimum;
+    axis.default_value = a.def;
+    axis.maximum = a.maximum;
+    impl.axes.push_back(axis);
+    impl.coordinates.push_back(a.def);
+  }
+  FT_Done_MM_Var(impl.library_owner.get(), mm);
+}
+
 // The face `face_index` of `bytes`; `path` names it in messages and keys the
 // glyph cache with `bytes_hash` (0 for a file).
 std::unique_ptr<FontAccess::Impl> open_face(FontBytes bytes, const std::string& path, int face_index,
@@ -291,19 +328,7 @@ std::unique_ptr<FontAccess::Impl> open_face(FontBytes bytes, const std::string& 
   if (!FT_IS_SCALABLE(face) && !(FT_HAS_COLOR(face) && face->num_fixed_sizes > 0))
     throw Error(ErrorCode::FontInvalid, "font has no scalable outlines nor colour bitmaps: " + path);
 
-  // The blob holds its own reference to the bytes (freed by the destroy
-  // callback), so HarfBuzz objects that outlive this Font stay valid.
-  auto* blob_bytes = new FontBytes(impl->bytes);
-  impl->hb_blob_owner.reset(hb_blob_create(reinterpret_cast<const char*>(impl->bytes->data()),
-                                           static_cast<unsigned int>(impl->bytes->size()), HB_MEMORY_MODE_READONLY,
-                                           blob_bytes, [](void* user) { delete static_cast<FontBytes*>(user); }));
-  impl->hb_face_owner.reset(hb_face_create(impl->hb_blob_owner.get(), static_cast<unsigned int>(face_index)));
-  impl->hb_font_owner.reset(hb_font_create(impl->hb_face_owner.get()));
-  impl->hb_font = impl->hb_font_owner.get();
-  // FreeType accepts formats HarfBuzz does not (WOFF, for one): HarfBuzz then
-  // sees an empty face with no glyphs.
-  if (hb_face_get_glyph_count(impl->hb_face_owner.get()) == 0)
-    throw Error(ErrorCode::FontInvalid, "HarfBuzz cannot read face " + std::to_string(face_index) + ": " + path);
+  open_harfbuzz(*impl);
   // HarfBuzz's own OpenType implementation (the default for hb_font_create,
   // set explicitly so a build where FreeType is the default does not change
   // results), at a scale of one unit per font unit: positions come out in
@@ -323,24 +348,7 @@ std::unique_ptr<FontAccess::Impl> open_face(FontBytes bytes, const std::string& 
     if (hb_blob_get_length(blob.get()) > 0) impl->cff_outlines = true;
   }
 
-  if (FT_HAS_MULTIPLE_MASTERS(face)) {
-    FT_MM_Var* mm = nullptr;
-    if (FT_Error error = FT_Get_MM_Var(face, &mm))
-      throw Error(ErrorCode::FontInvalid, "cannot read variation axes (" + ft_error_text(error) + "): " + path);
-    for (FT_UInt i = 0; i < mm->num_axis; ++i) {
-      const FT_Var_Axis& a = mm->axis[i];
-      AxisInfo axis;
-      axis.hb_tag = static_cast<std::uint32_t>(a.tag);
-      axis.tag = tag_to_string(axis.hb_tag);
-      axis.minimum = a.minimum;
-      axis.default_value = a.def;
-      axis.maximum = a.maximum;
-      impl->axes.push_back(axis);
-      impl->coordinates.push_back(a.def);
-    }
-    FT_Done_MM_Var(impl->library_owner.get(), mm);
-  }
-
+  if (FT_HAS_MULTIPLE_MASTERS(face)) read_axes(*impl);
   if (FT_IS_SCALABLE(face)) set_unit_scale(*impl);
   update_cache_key(*impl);
   return impl;
