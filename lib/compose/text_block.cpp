@@ -21,6 +21,7 @@ struct TextBlock::Group {
   std::optional<DrawBatch> glyphs;
   std::optional<EffectBatch> effects;  // instead of `glyphs` when the style has effects
   std::optional<DrawBatch> bars;       // pixels, y up (placement scale 1)
+  std::optional<Gradient> gradient;    // a COLR layer's, instead of the colour
 };
 
 namespace {
@@ -120,6 +121,7 @@ TextBlock TextBlock::from_paragraph(GlyphCache& cache, const Paragraph& paragrap
     for (const detail::LayerPass& pass : layers) {
       Group& layer = block.groups_.emplace_back();
       layer.color = pass.color;
+      layer.gradient = pass.gradient;
       layer.size_px = group.size_px;
       layer.scale = group.size_px / group.font->metrics().units_per_em;
       layer.glyphs.emplace(DrawBatch::from_glyphs(cache, *group.font, pass.glyphs, ppem));
@@ -188,6 +190,7 @@ void TextBlock::draw_group(Renderer& renderer, const Group& g, const Placement& 
                            const Color& color) const {
   DrawOptions draw = options;
   draw.color = color;
+  if (g.gradient) draw.gradient = &*g.gradient;
   draw.antialiasing = resolve_antialiasing(options.antialiasing, g.size_px * on_screen_scale_);
   // The glyphs are in font units (y up), the bars and backgrounds in layout
   // pixels with y up, both from the layout box's top-left.
