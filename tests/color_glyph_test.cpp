@@ -663,6 +663,34 @@ TEST(ColorRender, ColrV1GradientsMatchCoverageTimesThePaint) {
   }
 }
 
+// BlockColors::FromOptions draws every COLR layer in the options' colour,
+// gradient layers too (a shadow of the glyphs): blue over white leaves the
+// blue channel white and red equal to green. The styles (the control) draw
+// the gradients.
+TEST(ColorRender, ColrV1GradientLayersTakeTheOptionsColourWhenAsked) {
+  test::Gpu& gpu = test::gpu();
+  FontCollection fonts;
+  const Paragraph p = Paragraph::layout(fonts, "GRQWXK", {}, style_with({kColrV1}, 32.0));
+  const TextBlock block = TextBlock::from_paragraph(gpu.cache, p);
+  for (BlockColors colors : {BlockColors::FromOptions, BlockColors::Styles}) {
+    gpu.target.begin(240, 60, Color{1, 1, 1, 1});
+    block.draw(gpu.renderer, Placement(1.0, 10.0, 10.0), DrawOptions(Color{0, 0, 1, 1}), colors);
+    const Image image = gpu.target.read_pixels();
+    int ink = 0, not_blue = 0;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) {
+        const std::uint8_t* px = image.pixel(x, y);
+        ink += px[0] < 200;
+        not_blue += px[2] != 255 || std::abs(px[0] - px[1]) > 1;
+      }
+    EXPECT_GT(ink, 1000);
+    if (colors == BlockColors::FromOptions)
+      EXPECT_EQ(not_blue, 0) << "pixels in another colour than the options' blue";
+    else
+      EXPECT_GT(not_blue, 1000) << "the gradients were not drawn";
+  }
+}
+
 // The shader's evaluation of the kinds COLR added, on a rectangle's inner
 // pixels (an SVG rectangle, its paint replaced; y down): a two-circle gradient whose
 // first circle is not inside the second (the cone, transparent outside it),

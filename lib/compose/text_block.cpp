@@ -159,13 +159,16 @@ TextBlock TextBlock::from_paragraph(GlyphCache& cache, const Paragraph& paragrap
 
 void TextBlock::draw(Renderer& renderer, const Placement& at, const DrawOptions& options, BlockColors colors) const {
   if (colors == BlockColors::Styles)
-    for (const Group& g : backgrounds_) draw_group(renderer, g, at, options, g.color);
+    for (const Group& g : backgrounds_) draw_group(renderer, g, at, options, g.color, options.gradient);
   // Every group's shadow, then every outline, under every fill; strokes over them.
   const bool effects = colors == BlockColors::Styles;
   if (effects) draw_effects(renderer, at, options, EffectLayer::Shadow);
   if (effects) draw_effects(renderer, at, options, EffectLayer::Outline);
-  for (const Group& g : groups_)
-    draw_group(renderer, g, at, options, colors == BlockColors::Styles ? g.color : options.color);
+  for (const Group& g : groups_) {
+    // A COLR gradient layer's own paint, unless the options' colour is asked for.
+    const Gradient* gradient = colors == BlockColors::Styles && g.gradient ? &*g.gradient : options.gradient;
+    draw_group(renderer, g, at, options, colors == BlockColors::Styles ? g.color : options.color, gradient);
+  }
   if (effects) draw_effects(renderer, at, options, EffectLayer::Stroke);
 }
 
@@ -187,10 +190,10 @@ void TextBlock::draw(Renderer& renderer, double x, double y, const DrawOptions& 
 }
 
 void TextBlock::draw_group(Renderer& renderer, const Group& g, const Placement& at, const DrawOptions& options,
-                           const Color& color) const {
+                           const Color& color, const Gradient* gradient) const {
   DrawOptions draw = options;
   draw.color = color;
-  if (g.gradient) draw.gradient = &*g.gradient;
+  draw.gradient = gradient;
   draw.antialiasing = resolve_antialiasing(options.antialiasing, g.size_px * on_screen_scale_);
   // The glyphs are in font units (y up), the bars and backgrounds in layout
   // pixels with y up, both from the layout box's top-left.
