@@ -23,34 +23,59 @@ varying vec2 v_pixel;  // framebuffer pixels, y down: the pixel's centre
 
 #if CURVETEXT_PAINT
 uniform mat3 u_paint;  // framebuffer pixel (x, y down, 1) -> gradient coordinates (homogeneous)
-uniform float u_kind;  // 0 linear, 1 radial
+uniform float u_kind;  // 0 linear, 1 radial, 2 sweep
 uniform float u_spread;  // 0 pad, 1 reflect, 2 repeat
-uniform vec2 u_a;  // linear: start; radial: focus
-uniform vec2 u_b;  // linear: end; radial: centre
-uniform float u_radius;
+uniform vec2 u_a;  // linear: start; radial: focus; sweep: centre
+uniform vec2 u_b;  // linear: end; radial: centre; sweep: start and end angles (radians)
+uniform float u_radius;        // radial: the circle's at t = 1
+uniform float u_focal_radius;  // radial: the focus's at t = 0
 uniform float u_count;
 uniform vec4 u_stop_color[16];  // straight alpha
 uniform float u_stop_offset[16];
 
-// t of the gradient at p; negative when a radial gradient has no circle there.
-float gradient_t(vec2 p) {
+// The gradient's t at p in .x; .y is 0 where no circle of a radial
+// gradient passes through p (the pixel is then transparent).
+vec2 gradient_t(vec2 p) {
   if (u_kind < 0.5) {
     vec2 d = u_b - u_a;
-    return dot(p - u_a, d) / dot(d, d);
+    return vec2(dot(p - u_a, d) / dot(d, d), 1.0);
   }
-  // The largest t with |p - f - t (c - f)| = t r (circles from the focus f).
+  if (u_kind > 1.5) {
+    // Angles in [0, 2 pi) from +x towards +y.
+    vec2 q = p - u_a;
+    float angle = atan(q.y, q.x);
+    if (angle < 0.0) angle += 6.283185307179586;
+    return vec2((angle - u_b.x) / (u_b.y - u_b.x), 1.0);
+  }
+  // Circles c(t) = f + t (c - f), r(t) = r0 + t (r1 - r0): the largest t
+  // with |p - c(t)| = r(t) and r(t) >= 0, a root of A t^2 - 2 B t + C = 0.
   vec2 cd = u_b - u_a;
   vec2 pd = p - u_a;
-  float a = dot(cd, cd) - u_radius * u_radius;  // < 0: the focus is inside
-  float b = dot(pd, cd);
-  float c = dot(pd, pd);
-  float disc = max(b * b - a * c, 0.0);
-  return (b - sqrt(disc)) / a;
+  float dr = u_radius - u_focal_radius;
+  float a = dot(cd, cd) - dr * dr;
+  float b = dot(pd, cd) + u_focal_radius * dr;
+  float c = dot(pd, pd) - u_focal_radius * u_focal_radius;
+  if (abs(a) < 1e-6 * (dot(cd, cd) + dr * dr)) {
+    // The circles touch the cone's apex at infinity: one root.
+    if (b == 0.0) return vec2(0.0, 0.0);
+    float t = c / (2.0 * b);
+    return vec2(t, step(0.0, u_focal_radius + t * dr));
+  }
+  float disc = b * b - a * c;
+  if (disc < 0.0) return vec2(0.0, 0.0);
+  float s = sqrt(disc);
+  float t0 = (b + s) / a, t1 = (b - s) / a;
+  float hi = max(t0, t1), lo = min(t0, t1);
+  if (u_focal_radius + hi * dr >= 0.0) return vec2(hi, 1.0);
+  if (u_focal_radius + lo * dr >= 0.0) return vec2(lo, 1.0);
+  return vec2(0.0, 0.0);
 }
 
 vec4 paint(vec2 pixel) {
   vec3 h = u_paint * vec3(pixel, 1.0);
-  float t = gradient_t(h.xy / h.z);
+  vec2 tv = gradient_t(h.xy / h.z);
+  if (tv.y == 0.0) return vec4(0.0);
+  float t = tv.x;
   if (u_spread > 1.5) {
     t = fract(t);
   } else if (u_spread > 0.5) {

@@ -3,6 +3,7 @@
 // by name; and shapes drawn against exact coverage.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -538,6 +539,39 @@ TEST(SvgRender, GradientsArePaintedPerPixel) {
   for (int i = 0; i < 20; ++i)
     many += "<stop offset='" + std::to_string(i / 20.0) + "' stop-color='#" + (i % 2 ? "f00" : "00f") + "'/>";
   expect_refused(many + "</linearGradient><rect width='9' height='9' fill='url(#m)'/></svg>", "20 stops");
+}
+
+// SVG 2's fr: t = 0 on the focal circle (fx, fy, fr), pad inside it; one
+// reaching outside the circle is refused by name.
+TEST(SvgRender, FocalRadiusStartsTheGradientOnACircle) {
+  const ShapeDocument doc = parse_svg(
+      "<svg width='80' height='60' viewBox='0 0 80 60'><radialGradient id='r' gradientUnits='userSpaceOnUse' "
+      "cx='40' cy='30' r='25' fx='36' fy='28' fr='8'><stop offset='0' stop-color='#f00'/>"
+      "<stop offset='1' stop-color='#00f'/></radialGradient><rect width='80' height='60' fill='url(#r)'/></svg>");
+  ASSERT_TRUE(doc.shapes.at(0).gradient.has_value());
+  EXPECT_EQ(doc.shapes[0].gradient->focal_radius, 8.0);
+  // The largest t with |p - f - t (c - f)| = 8 + 17 t.
+  auto t_at = [](double x, double y) {
+    const double cdx = 4, cdy = 2, pdx = x - 36, pdy = y - 28, dr = 17;
+    const double a = cdx * cdx + cdy * cdy - dr * dr, b = pdx * cdx + pdy * cdy + 8 * dr,
+                 c = pdx * pdx + pdy * pdy - 64;
+    return std::clamp((b - std::sqrt(b * b - a * c)) / a, 0.0, 1.0);
+  };
+  ShapeImageOptions options;
+  const Image image = render_shape_image(test::gpu().renderer, doc, layout_shape_image(doc, options), options);
+  double worst = 0.0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const double t = t_at(x + 0.5, y + 0.5);
+      worst = std::max(
+          {worst, std::abs(image.pixel(x, y)[0] / 255.0 - (1 - t)), std::abs(image.pixel(x, y)[2] / 255.0 - t)});
+    }
+  std::printf("fr: largest difference %.4f\n", worst);
+  EXPECT_LE(worst, 2.5 / 255);
+  expect_refused(
+      "<svg><radialGradient id='r' fr='.4' fx='.3'><stop/><stop offset='1' stop-color='red'/></radialGradient>"
+      "<rect width='9' height='9' fill='url(#r)'/></svg>",
+      "focal circle (fr) reaches outside");
 }
 
 // Opacity on a group of overlapping shapes, and on a shape with both fill

@@ -8,6 +8,21 @@ namespace {
 
 bool same(const Color& a, const Color& b) { return a.r == b.r && a.g == b.g && a.b == b.b && a.a == b.a; }
 
+Color with_text(const Color& text, float alpha) { return Color{text.r, text.g, text.b, text.a * alpha}; }
+
+// A gradient layer of the glyph at `at` (font units): its gradient moved
+// there, foreground stops in the text's colour.
+LayerPass gradient_pass(const ColorLayer& layer, const PlacedGlyph& at, const Color& text) {
+  LayerPass pass{text, {PlacedGlyph{layer.glyph_id, at.x, at.y}}, layer.gradient};
+  pass.gradient->from_outline = layer.gradient->from_outline * Transform::translation(-at.x, -at.y);
+  for (std::size_t k = 0; k < pass.gradient->stops.size(); ++k)
+    if (layer.foreground_stops >> k & 1u) {
+      Color& c = pass.gradient->stops[k].color;
+      c = with_text(text, c.a);
+    }
+  return pass;
+}
+
 }  // namespace
 
 std::vector<LayerPass> split_color_layers(const Font& font, const Color& text, std::vector<PlacedGlyph>& glyphs) {
@@ -25,12 +40,16 @@ std::vector<LayerPass> split_color_layers(const Font& font, const Color& text, s
     if (by_index.size() < it->second.size()) by_index.resize(it->second.size());
     for (std::size_t k = 0; k < it->second.size(); ++k) {
       const ColorLayer& layer = it->second[k];
-      Color c = layer.foreground ? Color{text.r, text.g, text.b, text.a * layer.color.a} : layer.color;
       std::vector<LayerPass>& passes = by_index[k];
+      if (layer.gradient) {
+        passes.push_back(gradient_pass(layer, g, text));
+        continue;
+      }
+      Color c = layer.foreground ? with_text(text, layer.color.a) : layer.color;
       LayerPass* pass = nullptr;
       for (LayerPass& p : passes)
-        if (same(p.color, c)) pass = &p;
-      if (pass == nullptr) pass = &passes.emplace_back(LayerPass{c, {}});
+        if (!p.gradient && same(p.color, c)) pass = &p;
+      if (pass == nullptr) pass = &passes.emplace_back(LayerPass{c, {}, std::nullopt});
       pass->glyphs.push_back(PlacedGlyph{layer.glyph_id, g.x, g.y});
     }
   }
@@ -59,6 +78,7 @@ void draw_color_line(Renderer& renderer, GlyphCache& cache, const Font& font, co
   for (const LayerPass& pass : passes) {
     DrawOptions layer = options;
     layer.color = pass.color;
+    layer.gradient = pass.gradient ? &*pass.gradient : nullptr;
     renderer.draw(DrawBatch::from_glyphs(cache, font, pass.glyphs, pixels_per_em), placement, layer);
   }
 }

@@ -21,6 +21,7 @@ struct TextBlock::Group {
   std::optional<DrawBatch> glyphs;
   std::optional<EffectBatch> effects;  // instead of `glyphs` when the style has effects
   std::optional<DrawBatch> bars;       // pixels, y up (placement scale 1)
+  std::optional<Gradient> gradient;    // a COLR layer's, instead of the colour
 };
 
 namespace {
@@ -120,6 +121,7 @@ TextBlock TextBlock::from_paragraph(GlyphCache& cache, const Paragraph& paragrap
     for (const detail::LayerPass& pass : layers) {
       Group& layer = block.groups_.emplace_back();
       layer.color = pass.color;
+      layer.gradient = pass.gradient;
       layer.size_px = group.size_px;
       layer.scale = group.size_px / group.font->metrics().units_per_em;
       layer.glyphs.emplace(DrawBatch::from_glyphs(cache, *group.font, pass.glyphs, ppem));
@@ -157,13 +159,16 @@ TextBlock TextBlock::from_paragraph(GlyphCache& cache, const Paragraph& paragrap
 
 void TextBlock::draw(Renderer& renderer, const Placement& at, const DrawOptions& options, BlockColors colors) const {
   if (colors == BlockColors::Styles)
-    for (const Group& g : backgrounds_) draw_group(renderer, g, at, options, g.color);
+    for (const Group& g : backgrounds_) draw_group(renderer, g, at, options, g.color, options.gradient);
   // Every group's shadow, then every outline, under every fill; strokes over them.
   const bool effects = colors == BlockColors::Styles;
   if (effects) draw_effects(renderer, at, options, EffectLayer::Shadow);
   if (effects) draw_effects(renderer, at, options, EffectLayer::Outline);
-  for (const Group& g : groups_)
-    draw_group(renderer, g, at, options, colors == BlockColors::Styles ? g.color : options.color);
+  for (const Group& g : groups_) {
+    // A COLR gradient layer's own paint, unless the options' colour is asked for.
+    const Gradient* gradient = colors == BlockColors::Styles && g.gradient ? &*g.gradient : options.gradient;
+    draw_group(renderer, g, at, options, colors == BlockColors::Styles ? g.color : options.color, gradient);
+  }
   if (effects) draw_effects(renderer, at, options, EffectLayer::Stroke);
 }
 
@@ -185,16 +190,24 @@ void TextBlock::draw(Renderer& renderer, double x, double y, const DrawOptions& 
 }
 
 void TextBlock::draw_group(Renderer& renderer, const Group& g, const Placement& at, const DrawOptions& options,
-                           const Color& color) const {
+                           const Color& color, const Gradient* gradient) const {
   // The glyphs are in font units (y up), the bars and backgrounds in layout
   // pixels with y up, both from the layout box's top-left.
   Placement p = at;
   p.scale = at.scale * g.scale;
   DrawOptions draw = options;
   draw.color = color;
+  draw.gradient = gradient;
   const double on_screen_px = g.size_px * on_screen_scale_;
   draw.antialiasing = g.glyphs ? resolve_antialiasing(options.antialiasing, on_screen_px, renderer, *g.glyphs, p)
                                : resolve_antialiasing(options.antialiasing, on_screen_px);
+  // A colour glyph's own gradient is painted per pixel in the coverage
+  // passes: modes without one draw its layers with full (the options' own
+  // gradient is refused in them by the renderer, as for any batch).
+  if (gradient && gradient != options.gradient &&
+      (draw.antialiasing == AntiAliasing::None || draw.antialiasing == AntiAliasing::Curves ||
+       (draw.antialiasing == AntiAliasing::Vbaa && draw.vbaa_ring > 0.0f)))
+    draw.antialiasing = AntiAliasing::Full;
   if (g.glyphs) renderer.draw(*g.glyphs, p, draw);
   if (g.effects) g.effects->draw_layer(renderer, p, draw, EffectLayer::Fill);
   p.scale = at.scale;

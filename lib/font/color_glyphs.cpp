@@ -1,5 +1,6 @@
 // Colour glyphs (color_glyph.hpp): COLR v0 layers and CBDT/sbix bitmaps read
-// by FreeType, and the solid-colour subset of COLR v1 paint graphs read here.
+// by FreeType, and COLR v1 paint graphs (solid fills, gradients and their
+// transforms inside a glyph) read here.
 
 #include <ft2build.h>
 #include FT_FREETYPE_H
@@ -10,8 +11,12 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "curvetext/error.hpp"
+#include "curvetext/paint.hpp"
+#include "curvetext/transform.hpp"
 #include "curvetext/tolerances.hpp"
 #include "font/font_impl.hpp"
 
@@ -34,19 +39,40 @@ void check_glyph_id(std::uint32_t glyph_id, const Impl& im) {
 // COLR v1 paint formats (OpenType 1.9, COLR table) by name, for refusals.
 std::string paint_name(unsigned format) {
   if (format == 3) return "a variable solid fill (PaintVarSolid)";
-  if (format == 4 || format == 5) return "a linear gradient (PaintLinearGradient)";
-  if (format == 6 || format == 7) return "a radial gradient (PaintRadialGradient)";
-  if (format == 8 || format == 9) return "a sweep gradient (PaintSweepGradient)";
-  if (format >= 12 && format <= 31) return "a transformed paint (PaintTransform, Translate, Scale, Rotate or Skew)";
+  if (format == 5) return "a variable linear gradient (PaintVarLinearGradient)";
+  if (format == 7) return "a variable radial gradient (PaintVarRadialGradient)";
+  if (format == 9) return "a variable sweep gradient (PaintVarSweepGradient)";
+  if (format >= 12 && format <= 31 && format % 2 == 1)
+    return "a variable transform (PaintVarTransform, Translate, Scale, Rotate or Skew)";
   if (format == 32) return "a composite (PaintComposite)";
+  if (format == 1) return "a layer list (PaintColrLayers)";
+  if (format == 10) return "a glyph (PaintGlyph)";
+  if (format == 11) return "a colour glyph (PaintColrGlyph)";
   return "paint format " + std::to_string(format) + ", which OpenType does not define";
 }
+
+// A 2 x 3 affine map of font units (COLR's Affine2x3): x' = xx x + xy y + dx,
+// y' = yx x + yy y + dy.
+struct Affine {
+  double xx = 1, yx = 0, xy = 0, yy = 1, dx = 0, dy = 0;
+  Affine operator*(const Affine& o) const {  // this after o
+    return {xx * o.xx + xy * o.yx, yx * o.xx + yy * o.yx,      xx * o.xy + xy * o.yy,
+            yx * o.xy + yy * o.yy, xx * o.dx + xy * o.dy + dx, yx * o.dx + yy * o.dy + dy};
+  }
+  static Affine around(const Affine& m, double cx, double cy) {
+    return Affine{1, 0, 0, 1, cx, cy} * m * Affine{1, 0, 0, 1, -cx, -cy};
+  }
+  Vec2 apply(Vec2 p) const { return {xx * p.x + xy * p.y + dx, yx * p.x + yy * p.y + dy}; }
+};
+
+constexpr double kPi = 3.14159265358979323846;
 
 // Reads the COLR table's v1 paint graphs itself: Debian 12's FreeType is
 // built with its COLR v1 API disabled (it returns no paint for any glyph),
 // and HarfBuzz 6 has none. Every read is bounds-checked against the table.
-// Supported: layer lists, glyphs filled with a solid colour, references to
-// other colour glyphs; anything else is refused by name.
+// Supported: layer lists, glyphs filled with a solid colour or a linear,
+// radial or sweep gradient under static transforms, references to other
+// colour glyphs; anything else is refused by name.
 struct PaintWalker {
   const Impl& im;
   std::uint32_t root_glyph;
@@ -107,6 +133,134 @@ struct PaintWalker {
     return 0;
   }
 
+  double f2dot14(std::size_t at) const { return static_cast<std::int16_t>(read(at, 2)) / 16384.0; }
+  double fword(std::size_t at) const { return static_cast<std::int16_t>(read(at, 2)); }
+  double fixed(std::size_t at) const { return static_cast<std::int32_t>(read(at, 4)) / 65536.0; }
+
+  // A static transform paint's map (its child's space -> its own), and its child.
+  Affine transform_of(std::size_t paint, unsigned format, std::size_t& child) const {
+    child = paint + read(paint + 1, 3);
+    const std::size_t p = paint + 4;
+    if (format == 12) {  // PaintTransform: Offset24 to an Affine2x3 of Fixed
+      const std::size_t t = paint + read(p, 3);
+      return {fixed(t), fixed(t + 4), fixed(t + 8), fixed(t + 12), fixed(t + 16), fixed(t + 20)};
+    }
+    if (format == 14) return {1, 0, 0, 1, fword(p), fword(p + 2)};
+    if (format == 16 || format == 18) {
+      const Affine k{f2dot14(p), 0, 0, f2dot14(p + 2), 0, 0};
+      return format == 16 ? k : Affine::around(k, fword(p + 4), fword(p + 6));
+    }
+    if (format == 20 || format == 22) {
+      const Affine k{f2dot14(p), 0, 0, f2dot14(p), 0, 0};
+      return format == 20 ? k : Affine::around(k, fword(p + 2), fword(p + 4));
+    }
+    if (format == 24 || format == 26) {  // counter-clockwise, 180 degrees per 1.0
+      const double a = f2dot14(p) * kPi;
+      const Affine r{std::cos(a), std::sin(a), -std::sin(a), std::cos(a), 0, 0};
+      return format == 24 ? r : Affine::around(r, fword(p + 2), fword(p + 4));
+    }
+    // PaintSkew(AroundCenter): a positive x angle turns the y axis counter-clockwise.
+    const Affine k{1, std::tan(f2dot14(p + 2) * kPi), std::tan(-f2dot14(p) * kPi), 1, 0, 0};
+    return format == 28 ? k : Affine::around(k, fword(p + 4), fword(p + 6));
+  }
+
+  // The layer a PaintGlyph's fill paint gives: a solid colour, or a gradient
+  // under the transforms `m` met on the way (paint space -> glyph space).
+  ColorLayer fill(std::size_t paint, const Affine& m, int depth) {
+    if (++visited > tolerance::kMaxColorPaints)
+      refuse("more than " + std::to_string(tolerance::kMaxColorPaints) + " paints");
+    if (depth > tolerance::kMaxColorPaintDepth)
+      refuse("paints nested deeper than " + std::to_string(tolerance::kMaxColorPaintDepth) + " (a cycle?)");
+    const unsigned format = read(paint, 1);
+    if (format == 2) return solid(0, read(paint + 1, 2), f2dot14(paint + 3));
+    if (format == 4 || format == 6 || format == 8) return gradient(paint, format, m);
+    if (format >= 12 && format <= 30 && format % 2 == 0) {
+      std::size_t child = 0;
+      const Affine t = transform_of(paint, format, child);
+      return fill(child, m * t, depth + 1);
+    }
+    refuse(paint_name(format) + " inside a glyph is not supported yet");
+  }
+
+  // A ColorLine's stops sorted by offset (stably) into g, with their offsets
+  // mapped from [first, last] to [0, 1]; returns first and last.
+  std::pair<double, double> color_line(std::size_t line, Gradient& g, ColorLayer& layer) const {
+    const unsigned extend = read(line, 1);
+    g.spread = extend == 1 ? Gradient::Spread::Repeat : extend == 2 ? Gradient::Spread::Reflect : Gradient::Spread::Pad;
+    const std::size_t count = read(line + 1, 2);
+    if (count == 0) refuse("a gradient's colour line has no stops");
+    if (count > static_cast<std::size_t>(kMaxGradientStops))
+      refuse("a gradient's colour line has " + std::to_string(count) + " stops; at most " +
+             std::to_string(kMaxGradientStops) + " are drawn");
+    struct Stop {
+      double offset;
+      Color color;
+      bool foreground;
+    };
+    std::vector<Stop> stops;
+    for (std::size_t k = 0; k < count; ++k) {
+      const std::size_t at = line + 3 + 6 * k;
+      const ColorLayer c = solid(0, read(at + 2, 2), f2dot14(at + 4));
+      stops.push_back(Stop{f2dot14(at), c.color, c.foreground});
+    }
+    std::stable_sort(stops.begin(), stops.end(), [](const Stop& a, const Stop& b) { return a.offset < b.offset; });
+    const double first = stops.front().offset, last = stops.back().offset;
+    const double span = last > first ? last - first : 1.0;  // one offset: a hard step there
+    float previous = 0.0f;
+    for (std::size_t k = 0; k < stops.size(); ++k) {
+      const float offset = std::clamp(static_cast<float>((stops[k].offset - first) / span), previous, 1.0f);
+      g.stops.push_back(GradientStop{offset, stops[k].color});
+      if (stops[k].foreground) layer.foreground_stops |= 1u << k;
+      previous = offset;
+    }
+    return {first, first + span};
+  }
+
+  ColorLayer gradient(std::size_t paint, unsigned format, const Affine& m) const {
+    ColorLayer layer;
+    Gradient& g = layer.gradient.emplace();
+    const auto [s0, s1] = color_line(paint + read(paint + 1, 3), g, layer);
+    const std::size_t p = paint + 4;
+    auto at = [](Vec2 a, Vec2 b, double t) { return a + (b - a) * t; };
+    if (format == 4) {  // PaintLinearGradient: p0, p1, p2
+      const Vec2 p0{fword(p), fword(p + 2)}, p1{fword(p + 4), fword(p + 6)}, p2{fword(p + 8), fword(p + 10)};
+      // Colour is constant along lines parallel to p0 -> p2: p1 projected
+      // onto that line's normal through p0 gives the two-point form.
+      const Vec2 d = p2 - p0, n{-d.y, d.x};
+      if (!(dot(n, n) > 0.0)) refuse("a linear gradient's p0 and p2 are one point");
+      const Vec2 q = p0 + n * (dot(p1 - p0, n) / dot(n, n));
+      if (q == p0) refuse("a linear gradient's p1 lies on the line through p0 and p2");
+      g.kind = Gradient::Kind::Linear;
+      g.start = at(p0, q, s0);
+      g.end = at(p0, q, s1);
+    } else if (format == 6) {  // PaintRadialGradient: c0, r0, c1, r1
+      const Vec2 c0{fword(p), fword(p + 2)}, c1{fword(p + 6), fword(p + 8)};
+      const double r0 = read(p + 4, 2), r1 = read(p + 10, 2);
+      g.kind = Gradient::Kind::Radial;
+      g.focus = at(c0, c1, s0);
+      g.centre = at(c0, c1, s1);
+      g.focal_radius = r0 + (r1 - r0) * s0;
+      g.radius = r0 + (r1 - r0) * s1;
+    } else {  // PaintSweepGradient: centre, start and end angles (180 degrees per 1.0)
+      const double a0 = f2dot14(p + 4) * 180.0, a1 = f2dot14(p + 6) * 180.0;
+      g.kind = Gradient::Kind::Sweep;
+      g.centre = {fword(p), fword(p + 2)};
+      g.start_angle = a0 + (a1 - a0) * s0;
+      g.end_angle = a0 + (a1 - a0) * s1;
+    }
+    const double det = m.xx * m.yy - m.xy * m.yx;
+    if (!std::isfinite(det) || det == 0.0) refuse("a gradient's transform is singular");
+    const double ixx = m.yy / det, ixy = -m.xy / det, iyx = -m.yx / det, iyy = m.xx / det;
+    g.from_outline =
+        Transform{{ixx, ixy, -(ixx * m.dx + ixy * m.dy), iyx, iyy, -(iyx * m.dx + iyy * m.dy), 0.0, 0.0, 1.0}};
+    try {
+      validate_gradient(g);
+    } catch (const Error& e) {
+      refuse(e.what());
+    }
+    return layer;
+  }
+
   std::size_t visited = 0;
 
   void walk(std::size_t paint, int depth) {
@@ -122,20 +276,22 @@ struct PaintWalker {
       if (list == 0 || first + count > read(list, 4)) refuse("PaintColrLayers reaches past the LayerList");
       for (std::size_t k = first; k < first + count; ++k) walk(list + read(list + 4 + 4 * k, 4), depth + 1);
     } else if (format == 10) {  // PaintGlyph: paint Offset24 (from here), glyphID u16
-      const std::size_t fill = paint + read(paint + 1, 3);
-      const unsigned fill_format = read(fill, 1);
-      if (fill_format != 2) refuse(paint_name(fill_format) + " is not supported yet (solid fills are)");
-      const std::int16_t alpha = static_cast<std::int16_t>(read(fill + 3, 2));  // F2DOT14
-      add(solid(read(paint + 4, 2), read(fill + 1, 2), alpha / 16384.0));
+      ColorLayer layer = fill(paint + read(paint + 1, 3), Affine{}, depth + 1);
+      layer.glyph_id = read(paint + 4, 2);
+      add(layer);
     } else if (format == 11) {  // PaintColrGlyph: glyphID u16
       const std::uint32_t glyph = read(paint + 1, 2);
       const std::size_t inner = glyph_paint(glyph);
       if (inner == 0) refuse("PaintColrGlyph names glyph " + std::to_string(glyph) + ", which has no paint");
       walk(inner, depth + 1);
-    } else if (format == 2) {
-      refuse("a solid paint outside a glyph (filling the whole clip box) is not supported yet");
+    } else if (format == 2 || (format >= 4 && format <= 8 && format % 2 == 0)) {
+      refuse("a fill outside a glyph (filling the whole clip box) is not supported yet");
+    } else if (format >= 12 && format <= 30 && format % 2 == 0) {
+      refuse(
+          "a transform around a glyph (PaintTransform, Translate, Scale, Rotate or Skew above PaintGlyph) is not "
+          "supported yet (under PaintGlyph it is)");
     } else {
-      refuse(paint_name(format) + " is not supported yet (solid fills are)");
+      refuse(paint_name(format) + " is not supported yet");
     }
   }
 };

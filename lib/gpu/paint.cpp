@@ -29,13 +29,16 @@ void validate_gradient(const Gradient& g) {
     for (float c : {s.color.r, s.color.g, s.color.b, s.color.a})
       if (!std::isfinite(c)) fail("a stop colour is not finite");
   }
-  if (!finite(g.start) || !finite(g.end) || !finite(g.centre) || !finite(g.focus) || !std::isfinite(g.radius))
+  if (!finite(g.start) || !finite(g.end) || !finite(g.centre) || !finite(g.focus) || !std::isfinite(g.radius) ||
+      !std::isfinite(g.focal_radius) || !std::isfinite(g.start_angle) || !std::isfinite(g.end_angle))
     fail("a coordinate is not finite");
   if (g.kind == Gradient::Kind::Linear && g.start == g.end) fail("a linear gradient needs start != end");
   if (g.kind == Gradient::Kind::Radial) {
-    if (!(g.radius > 0.0)) fail("a radial gradient needs a positive radius");
-    if (!(length(g.focus - g.centre) < g.radius)) fail("the focus must lie inside the circle");
+    if (!(g.radius > 0.0 || g.focal_radius > 0.0)) fail("a radial gradient needs a circle of positive radius");
+    if (g.focus == g.centre && g.radius == g.focal_radius) fail("a radial gradient's two circles are the same");
   }
+  if (g.kind == Gradient::Kind::Sweep && !(g.start_angle != g.end_angle))
+    fail("a sweep gradient needs start_angle != end_angle");
   // Any invertible projective map: Transform::validate's scale limits are
   // for pixel maps, and a gradient's unit box may be far smaller or larger.
   const auto& m = g.from_outline.m;
@@ -66,6 +69,7 @@ PaintUniforms PaintUniforms::of(GLuint program) {
   u.a = glGetUniformLocation(program, "u_a");
   u.b = glGetUniformLocation(program, "u_b");
   u.radius = glGetUniformLocation(program, "u_radius");
+  u.focal_radius = glGetUniformLocation(program, "u_focal_radius");
   u.count = glGetUniformLocation(program, "u_count");
   u.stop_color = glGetUniformLocation(program, "u_stop_color");
   u.stop_offset = glGetUniformLocation(program, "u_stop_offset");
@@ -79,13 +83,21 @@ void PaintUniforms::set(const Gradient& g, const Transform& full, Blending blend
   for (int row = 0; row < 3; ++row)
     for (int col = 0; col < 3; ++col) m[col * 3 + row] = static_cast<GLfloat>(to_paint.m[row * 3 + col]);
   glUniformMatrix3fv(paint, 1, GL_FALSE, m);
-  const bool radial = g.kind == Gradient::Kind::Radial;
-  glUniform1f(kind, radial ? 1.0f : 0.0f);
+  glUniform1f(kind, static_cast<float>(static_cast<int>(g.kind)));
   glUniform1f(spread, static_cast<float>(static_cast<int>(g.spread)));
-  const Vec2 pa = radial ? g.focus : g.start, pb = radial ? g.centre : g.end;
+  Vec2 pa = g.start, pb = g.end;
+  if (g.kind == Gradient::Kind::Radial) {
+    pa = g.focus;
+    pb = g.centre;
+  } else if (g.kind == Gradient::Kind::Sweep) {
+    const double radians = 3.14159265358979323846 / 180.0;
+    pa = g.centre;
+    pb = Vec2{g.start_angle * radians, g.end_angle * radians};
+  }
   glUniform2f(a, static_cast<float>(pa.x), static_cast<float>(pa.y));
   glUniform2f(b, static_cast<float>(pb.x), static_cast<float>(pb.y));
   glUniform1f(radius, static_cast<float>(g.radius));
+  glUniform1f(focal_radius, static_cast<float>(g.focal_radius));
   glUniform1f(count, static_cast<float>(g.stops.size()));
   GLfloat colors[4 * kMaxGradientStops] = {}, offsets[kMaxGradientStops] = {};
   for (std::size_t i = 0; i < g.stops.size(); ++i) {

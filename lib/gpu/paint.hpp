@@ -11,7 +11,8 @@
 namespace curvetext::gpu {
 
 struct PaintUniforms {
-  GLint paint = -1, kind = -1, spread = -1, a = -1, b = -1, radius = -1, count = -1, stop_color = -1, stop_offset = -1;
+  GLint paint = -1, kind = -1, spread = -1, a = -1, b = -1, radius = -1, focal_radius = -1, count = -1, stop_color = -1,
+        stop_offset = -1;
   static PaintUniforms of(GLuint program);
   // Sets the gradient for a pass whose outline units reach the framebuffer
   // through `full` (outline units -> pixels), with colours premultiplied in

@@ -163,11 +163,14 @@ std::optional<Gradient> make_gradient(const GradientSource& s, std::size_t g, co
     const std::string* fy = attribute(s, g, "fy");
     out.focus = {fx ? number_in(e, *fx, Axis::X, unit_vp) : out.centre.x,
                  fy ? number_in(e, *fy, Axis::Y, unit_vp) : out.centre.y};
-    if (const std::string* fr = attribute(s, g, "fr"); fr && number_in(e, *fr, Axis::Other, unit_vp) != 0.0)
-      fail(at, "the radialGradient's fr is not supported");
+    // SVG 2's focal radius: t = 0 on the circle (fx, fy, fr).
+    if (const std::string* fr = attribute(s, g, "fr")) out.focal_radius = number_in(e, *fr, Axis::Other, unit_vp);
+    if (!(out.focal_radius >= 0.0)) fail(at, "the radialGradient's fr is negative");
     collapsed = !(out.radius > 0.0);
     if (!collapsed && !(length(out.focus - out.centre) < out.radius))
       fail(at, "the radialGradient's focal point lies outside its circle, which is not supported");
+    if (!collapsed && !(length(out.focus - out.centre) + out.focal_radius < out.radius))
+      fail(at, "the radialGradient's focal circle (fr) reaches outside its circle, which is not supported");
   }
   if (collapsed) {  // SVG: the area is painted with the last stop
     out = Gradient{};

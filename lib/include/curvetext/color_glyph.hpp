@@ -1,15 +1,17 @@
 // Colour glyphs: what a colour font draws for a glyph in place of its
 // outline. COLR fonts give layers, each a glyph outline filled with one colour
-// (COLR v0, and the solid-colour part of COLR v1); bitmap colour fonts (CBDT
+// or (COLR v1) a gradient; bitmap colour fonts (CBDT
 // like Noto Color Emoji, sbix) give an RGBA bitmap drawn for one size (a
 // strike) that is scaled to the size drawn. Font (font.hpp) reads them;
 // TextBlock (text_block.hpp) draws them.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "curvetext/color.hpp"
+#include "curvetext/paint.hpp"
 
 namespace curvetext {
 
@@ -17,7 +19,7 @@ namespace curvetext {
 // even if it also has bitmaps: layers scale exactly.
 enum class ColorFormat {
   None,    // outlines only
-  Layers,  // COLR (v0, or v1 with solid fills): layers of outlines, each in a colour
+  Layers,  // COLR (v0, or v1): layers of outlines, each in a colour or a gradient
   Bitmap,  // CBDT/CBLC or sbix: RGBA bitmaps at fixed strike sizes
 };
 
@@ -28,6 +30,14 @@ struct ColorLayer {
   // Palette entry 0xFFFF: the text's own colour, its alpha times color.a
   // (color.r/g/b are then unused).
   bool foreground = false;
+  // A COLR v1 gradient that fills the layer instead of `color`. Its
+  // coordinates are the glyph's font units from its origin, y up (so a
+  // sweep turns counter-clockwise); from_outline carries the paint's
+  // transforms. Stops come from the palette times their alpha.
+  std::optional<Gradient> gradient;
+  // Bit k set: the gradient's stop k is the text's colour, its alpha times
+  // the stop's color.a (palette entry 0xFFFF).
+  std::uint32_t foreground_stops = 0;
 };
 
 // One glyph's bitmap from a bitmap colour font, at the strike chosen for the

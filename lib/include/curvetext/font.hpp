@@ -145,8 +145,10 @@ class CURVETEXT_API Font {
   // A COLR glyph's layers in drawing order, from the first palette; empty
   // for a glyph without a colour record (draw its outline in the text's
   // colour) and in faces without COLR. COLR v1 paint graphs are followed
-  // through layer lists, glyphs filled with a solid colour and references to
-  // other colour glyphs; gradients, transforms and composites are not drawn:
+  // through layer lists, glyphs filled with a solid colour or a linear,
+  // radial or sweep gradient (under static transforms inside the glyph) and
+  // references to other colour glyphs; variable paints, composites and
+  // transforms around a glyph are not drawn:
   // Error(FontInvalid) names the paint and the glyph, as it does a glyph id
   // out of range, a graph nested deeper than tolerance::kMaxColorPaintDepth,
   // one visiting more than kMaxColorPaints paints or one with more than

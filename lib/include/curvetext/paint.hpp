@@ -1,4 +1,4 @@
-// Gradient paint: linear and radial gradients (SVG's and COLR's), evaluated
+// Gradient paint: linear, radial and sweep gradients (SVG's and COLR's), evaluated
 // per pixel in the composite pass of full, vbaa and msaa antialiasing and
 // multiplied by the pixel's exact coverage. A DrawOptions with a gradient
 // draws it instead of its colour.
@@ -19,7 +19,7 @@ struct GradientStop {
 };
 
 struct Gradient {
-  enum class Kind { Linear, Radial };
+  enum class Kind { Linear, Radial, Sweep };
   // Beyond [0, 1]: the end colours (pad), mirrored (reflect) or repeated.
   enum class Spread { Pad, Reflect, Repeat };
   Kind kind = Kind::Linear;
@@ -27,11 +27,21 @@ struct Gradient {
   std::vector<GradientStop> stops;  // 1 to kMaxGradientStops
   // Linear: t is 0 at `start` and 1 at `end`, constant across the line.
   Vec2 start{0, 0}, end{1, 0};
-  // Radial: t is 1 on the circle (centre, radius) and 0 at `focus`, on the
-  // circles between the focus (radius 0) and that one (SVG 1.1's gradient);
-  // the focus must lie inside the circle.
+  // Radial: t is 0 on the circle (focus, focal_radius) and 1 on the circle
+  // (centre, radius); centre and radius move linearly with t, and a pixel
+  // takes the largest t whose circle passes through it with a radius >= 0
+  // (the two-point conical gradient of canvas and COLR). A pixel on no such
+  // circle is transparent: where neither circle holds the other, outside
+  // the cone they span. SVG 1.1's gradient is focal_radius 0 with the focus
+  // inside the circle. Radii may be negative (a COLR colour line normalised
+  // to [0, 1]): those circles are simply never drawn.
   Vec2 centre{0, 0}, focus{0, 0};
-  double radius = 1.0;
+  double radius = 1.0, focal_radius = 0.0;
+  // Sweep: around `centre`, t is 0 at start_angle and 1 at end_angle
+  // (degrees from the +x axis towards +y of the gradient's coordinates:
+  // counter-clockwise where y points up, as in font units), angles taken
+  // in [0, 360).
+  double start_angle = 0.0, end_angle = 360.0;
   // Outline units (the coordinates of the DrawBatch drawn) to the
   // gradient's coordinates. Projective maps are allowed.
   Transform from_outline;
@@ -43,8 +53,9 @@ inline constexpr int kMaxGradientStops = 16;
 
 // Throws Error(InvalidArgument) naming the problem: no stops or more than
 // kMaxGradientStops, an offset out of [0, 1] or below the previous one, a
-// non-finite value, start == end, a radius that is not positive, a focus
-// not strictly inside the circle, or a transform that is singular or not finite.
+// non-finite value, start == end, a radial gradient whose two circles are
+// one or whose radii are both below or at 0, a sweep with start_angle ==
+// end_angle, or a transform that is singular or not finite.
 CURVETEXT_API void validate_gradient(const Gradient& gradient);
 
 }  // namespace curvetext

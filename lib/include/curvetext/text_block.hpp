@@ -74,7 +74,7 @@ class CURVETEXT_API TextBlock {
   struct Group;
   TextBlock();
   void draw_group(Renderer& renderer, const Group& g, const Placement& at, const DrawOptions& options,
-                  const Color& color) const;
+                  const Color& color, const Gradient* gradient) const;
   void draw_effects(Renderer& renderer, const Placement& at, const DrawOptions& options, EffectLayer layer) const;
   std::vector<Group> backgrounds_;  // drawn first, under every group
   std::vector<Group> groups_;
