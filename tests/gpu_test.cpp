@@ -12,8 +12,11 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
+#include "core/tolerances.hpp"
 #include "curvetext/color.hpp"
 #include "curvetext/error.hpp"
 #include "curvetext/headless.hpp"
@@ -22,6 +25,7 @@
 #include "curvetext/font.hpp"
 #include "curvetext/shaping.hpp"
 #include "gpu/bands.hpp"
+#include "gpu/bands_es2.hpp"
 #include "gpu/batch_impl.hpp"
 #include "gpu/vertex_format.hpp"
 #include "support/coverage.hpp"
@@ -443,6 +447,14 @@ TEST(Context, TextBlocksTakeThePathOfTheContext) {
   if (test::expects_gles2()) {
     EXPECT_EQ(version.rfind("OpenGL ES 2.0", 0), 0u) << version;
     EXPECT_FALSE(batch.instanced());
+    // llvmpipe's GLES 2 fragment shaders have 24-bit highp floats and it has
+    // OES_texture_float: its text takes the GLES 2 band path.
+    const std::string renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    std::printf("%s: GLES 2 band path %s\n", renderer.c_str(), gpu::es2_band_context() ? "yes" : "no");
+    if (renderer.find("llvmpipe") != std::string::npos) {
+      EXPECT_TRUE(gpu::es2_band_context());
+      EXPECT_TRUE(DrawBatchAccess::impl(batch).banded && DrawBatchAccess::impl(batch).band_quads);
+    }
   } else {
     EXPECT_EQ(batch.instanced(), gpu::context_instances());
   }
@@ -455,7 +467,7 @@ TEST(Context, TextBlocksTakeThePathOfTheContext) {
 // sizes whose pixels read the cell grids and the band loop.
 TEST(Bands, ConicProgramMatchesCpuReference) {
   context();
-  if (!gpu::context_instances()) GTEST_SKIP() << "GLES2: no band program";
+  if (!gpu::context_instances() && !gpu::es2_band_context()) GTEST_SKIP() << "GLES2 without highp: no band program";
   std::vector<Mesh> meshes;
   {
     Outline circle;
@@ -524,7 +536,8 @@ TEST(Bands, ConicProgramMatchesCpuReference) {
 // origins. Under a rotation the block takes the mesh path (an offscreen pass).
 TEST(Bands, ShaderMatchesCpuReferenceInOnePass) {
   context();
-  if (!gpu::context_instances()) GTEST_SKIP() << "GLES2: text blocks draw through their meshes";
+  if (!gpu::context_instances() && !gpu::es2_band_context())
+    GTEST_SKIP() << "GLES2 without highp: text blocks draw through their meshes";
   const Font font = Font::open(test::kDejaVuSans);
   const ShapedLine line = shape_line(font, "Band@gq&%Wj");
   GlyphCache cache;
@@ -577,6 +590,85 @@ TEST(Bands, ShaderMatchesCpuReferenceInOnePass) {
   renderer.draw(batch, Placement{16.0 / fm.units_per_em, 10, 30, Transform::rotation(10.0)},
                 DrawOptions(Color{0, 0, 0, 1}, AntiAliasing::Full));
   EXPECT_EQ(renderer.offscreen_passes(), passes + 1);
+}
+
+// Turns the GLES 2 band path off for one scope.
+struct Es2BandsOff {
+  Es2BandsOff() { gpu::set_es2_bands_allowed(false); }
+  ~Es2BandsOff() { gpu::set_es2_bands_allowed(true); }
+  Es2BandsOff(const Es2BandsOff&) = delete;
+  Es2BandsOff& operator=(const Es2BandsOff&) = delete;
+};
+
+// Draws `batch` black on white in full and returns 1 - red / 255 per pixel,
+// and how many offscreen passes the draw took.
+std::pair<Coverage, std::size_t> draw_full(Renderer& renderer, const DrawBatch& batch, const Placement& placement) {
+  ImageTarget target;
+  target.begin(kW * 4, kH, Color{1, 1, 1, 1});
+  const std::size_t before = renderer.offscreen_passes();
+  renderer.draw(batch, placement, DrawOptions(Color{0, 0, 0, 1}, AntiAliasing::Full));
+  const Image image = target.read_pixels();
+  Coverage cov(static_cast<std::size_t>(kW) * 4 * kH);
+  for (std::size_t i = 0; i < cov.size(); ++i) cov[i] = 1.0 - image.rgba[4 * i] / 255.0;
+  return {cov, renderer.offscreen_passes() - before};
+}
+
+// On a GLES 2 context whose fragment shaders have highp floats (and float
+// textures), full text draws through the GLES 2 band program in one pass;
+// switched off, or with a glyph whose bands exceed the program's loop bound
+// (tolerance::kEs2BandEntryCap), the block takes the mesh path and its
+// offscreen pass, and draws the same coverage (both exact; they differ only
+// where two glyphs share a pixel: source-over against a sum).
+TEST(Bands, Es2TextBlockDrawsInOnePassOrFallsBack) {
+  context();
+  if (gpu::context_instances() || !gpu::es2_band_context())
+    GTEST_SKIP() << "not a GLES 2 context with highp fragment shaders";
+  const Font font = Font::open(test::kDejaVuSans);
+  const ShapedLine line = shape_line(font, "Band@gq&%Wj");
+  GlyphCache cache;
+  Renderer renderer;
+  const double ppem = 20.0, scale = ppem / font.metrics().units_per_em;
+  const Placement placement{scale, 2.37, 4.61 + font.metrics().ascender * scale};
+  const DrawBatch banded = DrawBatch::from_text(cache, font, line, ppem);
+  ASSERT_TRUE(DrawBatchAccess::impl(banded).banded && DrawBatchAccess::impl(banded).band_quads);
+  const auto [one_pass, passes] = draw_full(renderer, banded, placement);
+  EXPECT_EQ(passes, 0u);
+  Coverage mesh;
+  {
+    const Es2BandsOff off;
+    const DrawBatch fallback = DrawBatch::from_text(cache, font, line, ppem);
+    EXPECT_FALSE(DrawBatchAccess::impl(fallback).banded);
+    std::size_t mesh_passes = 0;
+    std::tie(mesh, mesh_passes) = draw_full(renderer, fallback, placement);
+    EXPECT_EQ(mesh_passes, 1u);
+  }
+  double worst = 0.0, sum = 0.0, ink = 0.0;
+  for (std::size_t i = 0; i < mesh.size(); ++i) {
+    worst = std::max(worst, std::abs(one_pass[i] - mesh[i]));
+    sum += std::abs(one_pass[i] - mesh[i]);
+    ink += mesh[i];
+  }
+  std::printf("GLES 2 bands against the mesh path: largest difference %.4f, mean %.5f (ink %.1f px)\n", worst,
+              sum / static_cast<double>(mesh.size()), ink);
+  EXPECT_GT(ink, 50.0);
+  EXPECT_LE(worst, 0.1);
+  EXPECT_LE(sum / static_cast<double>(mesh.size()), 0.002);
+
+  // A glyph whose bands list more pieces than the loop reaches.
+  gpu::BandScratch scratch;
+  gpu::GlyphBands bands;
+  std::uint32_t long_glyph = 0;
+  for (std::uint32_t g = 1; g < font.glyph_count() && long_glyph == 0; ++g) {
+    const Outline outline = font.glyph_outline(g);
+    if (outline.empty()) continue;
+    gpu::build_bands(build_mesh(outline), bands, scratch);
+    if (!bands.empty() && gpu::most_band_entries(bands) > tolerance::kEs2BandEntryCap) long_glyph = g;
+  }
+  ASSERT_NE(long_glyph, 0u);
+  std::vector<PlacedGlyph> placed{{line.glyphs[0].glyph_id, 0.0, 0.0}, {long_glyph, 1500.0, 0.0}};
+  const DrawBatch capped = DrawBatch::from_glyphs(cache, font, placed, ppem);
+  EXPECT_FALSE(DrawBatchAccess::impl(capped).banded) << long_glyph;
+  EXPECT_EQ(draw_full(renderer, capped, placement).second, 1u);
 }
 
 // A block of N placed glyphs uploads bytes in proportion to N: instanced, 40
