@@ -7,7 +7,7 @@
 // NEAREST-sampled float texture. The loop over a band's entries has the
 // constant bound CURVETEXT_ES2_ENTRY_CAP (GLSL ES 1.00 Appendix A): glyphs
 // with longer bands take the mesh path (lib/gpu/batch.cpp). It runs the exact
-// area for each piece across the box as it meets it (no bit set to mark them).
+// area over the pieces across the box that a cheaper pass marked, as there.
 
 uniform float u_rows;  // the page's rows (its width is CURVETEXT_BAND_WIDTH)
 
@@ -16,6 +16,7 @@ varying vec4 v_rect;
 varying vec2 v_glyph;
 
 const float kWidth = float(CURVETEXT_BAND_WIDTH);
+const int kRun = 16;  // entries a run (CURVETEXT_ES2_ENTRY_CAP is a multiple)
 
 // Texel i of the page, i an integer: row and column exactly (the width is a
 // power of two), sampled at the texel's centre.
@@ -97,22 +98,54 @@ void main() {
     sum = state;
     count = 0.0;
   }
-  for (int i = 0; i < CURVETEXT_ES2_ENTRY_CAP; ++i) {
-    float j = start + float(i);
-    if (float(i) >= count) break;
-    vec4 e = texel_at(entry_texel + j);  // (largest x, smallest x, y of p0, y of p2)
-    if (e.x < left) break;
-    if (max(e.z, e.w) < row_lo || min(e.z, e.w) > row_hi) continue;
-    if (e.y >= right) {
-      // Wholly right of the box: its height within the rows (monotone in y).
-      sum += clamp((e.w - v_local.y) * scale.y, -0.5, 0.5) - clamp((e.z - v_local.y) * scale.y, -0.5, 0.5);
-    } else {
+  // As bands.frag.glsl's loop: runs of entries, a cheap pass that sums the
+  // pieces wholly right of the box and marks those across it (a bit set in
+  // a float: integers below 2^24 are exact), then the exact area over the
+  // marked ones, highest bit first.
+  for (int r = 0; r < CURVETEXT_ES2_ENTRY_CAP / kRun; ++r) {
+    float run = float(r * kRun);
+    if (run >= count) break;
+    float marked = 0.0;
+    float bit = 1.0;
+    bool done = false;
+    for (int i = 0; i < kRun; ++i) {
+      float value = bit;
+      bit *= 2.0;
+      if (run + float(i) >= count) break;
+      vec4 e = texel_at(entry_texel + start + run + float(i));  // (largest x, smallest x, y of p0, y of p2)
+      if (e.x < left) {
+        done = true;
+        break;
+      }
+      if (max(e.z, e.w) < row_lo || min(e.z, e.w) > row_hi) continue;
+      if (e.y >= right) {
+        // Wholly right of the box: its height within the rows (monotone in y).
+        sum += clamp((e.w - v_local.y) * scale.y, -0.5, 0.5) - clamp((e.z - v_local.y) * scale.y, -0.5, 0.5);
+      } else {
+        marked += value;
+      }
+    }
+    for (int m = 0; m < kRun; ++m) {
+      if (marked == 0.0) break;
+      // The highest bit, log2 corrected where it rounds across a power of two.
+      float b = floor(log2(marked));
+      float p = power_of_two(b);
+      if (p > marked) {
+        b -= 1.0;
+        p *= 0.5;
+      } else if (2.0 * p <= marked) {
+        b += 1.0;
+        p *= 2.0;
+      }
+      marked -= p;
+      float j = start + run + b;
       float quad = floor(j / 4.0);
       float piece = first + component(texel_at(ref_texel + quad), j - 4.0 * quad);
       vec4 a = texel_at(piece);
-      vec4 b = texel_at(piece + 1.0);
-      sum += piece_area((a.xy - v_local) * scale, (a.zw - v_local) * scale, (b.xy - v_local) * scale, b.z);
+      vec4 c = texel_at(piece + 1.0);
+      sum += piece_area((a.xy - v_local) * scale, (a.zw - v_local) * scale, (c.xy - v_local) * scale, c.z);
     }
+    if (done) break;
   }
   float coverage = clamp(sum, 0.0, 1.0);
   if (coverage <= 0.0) discard;

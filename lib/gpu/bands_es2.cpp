@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstring>
 
+#include "core/tolerances.hpp"
 #include "curvetext/error.hpp"
 #include "gpu/batch_impl.hpp"
 #include "gpu/gl_state.hpp"
@@ -18,6 +19,8 @@ namespace curvetext::gpu {
 // (i + 0.5) / width must stay exact too.
 static_assert(static_cast<long long>(kMaxBandPageRows) * kBandTextureWidth <= (1ll << 24),
               "band pages must stay within the GLES 2 program's exact float indices");
+// shaders/bands_es2.frag.glsl reads the entries in runs of 16.
+static_assert(tolerance::kEs2BandEntryCap % 16 == 0, "the GLES 2 loop bound is a whole number of runs");
 static_assert(kBandQuadsPerDraw * 4 <= 65536, "band quads are drawn with 16-bit indices");
 
 namespace {

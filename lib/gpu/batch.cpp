@@ -495,16 +495,16 @@ std::size_t DrawBatch::vertex_count() const {
 }
 std::size_t DrawBatch::gpu_bytes() const {
   if (!impl_) return 0;
-  if (impl_->instanced()) {
-    std::size_t banded = 0;
-    for (const Impl::BandRun& run : impl_->band_runs) banded += static_cast<std::size_t>(run.count);
-    return impl_->placements * 2 * sizeof(float) + banded * 8 * sizeof(float);
-  }
+  std::size_t banded = 0;
+  for (const Impl::BandRun& run : impl_->band_runs) banded += static_cast<std::size_t>(run.count);
+  if (impl_->instanced()) return impl_->placements * 2 * sizeof(float) + banded * 8 * sizeof(float);
   if (impl_->bitmaps()) return impl_->vertex_count * 4 * sizeof(float);
   const std::size_t index_bytes = impl_->index_type == GL_UNSIGNED_SHORT ? 2
                                   : impl_->index_type == GL_UNSIGNED_INT ? 4
                                                                          : 0;
-  return impl_->vertex_count * sizeof(gpu::Vertex) + impl_->index_count * index_bytes;
+  // GLES 2's band quads: 4 vertices a glyph (their indices are the renderer's).
+  const std::size_t quads = impl_->band_quads ? banded * 4 * gpu::kBandQuadVertexFloats * sizeof(float) : 0;
+  return impl_->vertex_count * sizeof(gpu::Vertex) + impl_->index_count * index_bytes + quads;
 }
 bool DrawBatch::instanced() const { return impl_ && impl_->instanced(); }
 
