@@ -671,6 +671,47 @@ TEST(Bands, Es2TextBlockDrawsInOnePassOrFallsBack) {
   EXPECT_EQ(draw_full(renderer, capped, placement).second, 1u);
 }
 
+// A GLES 2 block past one draw's 16-bit indices (gpu::kBandQuadsPerDraw
+// glyphs) is drawn in several: every glyph shows, as the mesh path draws it.
+TEST(Bands, Es2BlockPastOneDrawsIndicesDrawsEveryGlyph) {
+  context();
+  if (gpu::context_instances() || !gpu::es2_band_context())
+    GTEST_SKIP() << "not a GLES 2 context with highp fragment shaders";
+  const Font font = Font::open(test::kDejaVuSans);
+  const std::uint32_t stem = shape_line(font, "l").glyphs[0].glyph_id;
+  const double ppem = 6.0, scale = ppem / font.metrics().units_per_em;
+  constexpr int kColumns = 160, kRows = 110;  // 17,600 glyphs, apart by 2 px and by 6 (no pixel shared)
+  static_assert(kColumns * kRows > gpu::kBandQuadsPerDraw);
+  std::vector<PlacedGlyph> placed;
+  for (int j = 0; j < kRows; ++j)
+    for (int i = 0; i < kColumns; ++i) placed.push_back({stem, 2.0 * i / scale, -6.0 * j / scale});
+  GlyphCache cache;
+  Renderer renderer;
+  const auto draw = [&](const DrawBatch& batch) {
+    ImageTarget target;
+    target.begin(2 * kColumns + 4, 6 * kRows + 4, Color{1, 1, 1, 1});
+    renderer.draw(batch, Placement{scale, 1.3, 7.4}, DrawOptions(Color{0, 0, 0, 1}, AntiAliasing::Full));
+    return target.read_pixels();
+  };
+  const DrawBatch banded = DrawBatch::from_glyphs(cache, font, placed, ppem);
+  ASSERT_TRUE(DrawBatchAccess::impl(banded).band_quads);
+  const Image one_pass = draw(banded);
+  const Es2BandsOff off;
+  const Image mesh = draw(DrawBatch::from_glyphs(cache, font, placed, ppem));
+  // The last row: past the first draw.
+  double last_row_ink = 0.0, worst = 0.0;
+  for (int y = 0; y < one_pass.height; ++y)
+    for (int x = 0; x < one_pass.width; ++x) {
+      const double a = 1.0 - one_pass.pixel(x, y)[0] / 255.0, b = 1.0 - mesh.pixel(x, y)[0] / 255.0;
+      worst = std::max(worst, std::abs(a - b));
+      if (y >= one_pass.height - 8) last_row_ink += a;
+    }
+  std::printf("%zu glyphs: largest difference to the mesh path %.4f, last row's ink %.1f px\n", placed.size(), worst,
+              last_row_ink);
+  EXPECT_GT(last_row_ink, 0.5 * kColumns * 0.2);
+  EXPECT_LE(worst, 0.02);
+}
+
 // A block of N placed glyphs uploads bytes in proportion to N: instanced, 40
 // per placed glyph (the meshes are uploaded once, into the cache); expanded
 // (the GLES2 path), each placement's mesh. The same text repeated k times
