@@ -81,7 +81,8 @@ void compile(const Shader& shader, GLenum type, const char* source, bool gles, c
 
 // The band shaders (bands.vert/frag.glsl) are GLSL ES 3.00 / desktop 3.30
 // (texelFetch, integer operations, flat varyings); the preamble is only the
-// #version line, the band texture's width and the cell grids' sizes.
+// #version line and these: the band texture's width, the cell grids' sizes,
+// and whether the GLES 2 program's part of bands.frag.glsl is wanted.
 std::string band_defines(bool es2) {
   char width[256];
   std::snprintf(width, sizeof width,
@@ -963,7 +964,7 @@ class SamplerScope {
 }  // namespace
 
 // full for text blocks (docs/design.md section 9): one instanced quad per
-// placed glyph, each pixel's exact area from the glyph's curve bands
+// placed glyph (on GLES 2, 4 vertices per glyph: bands_es2.hpp), each pixel's exact area from the glyph's curve bands
 // blended straight into the target (premultiplied source-over, its depth
 // test): no offscreen pass. Under a map that keeps the axes (scale, flips,
 // translation; false otherwise: the caller takes the mesh path), where a
