@@ -20,6 +20,9 @@ uniform vec2 u_half;        // half a pixel's footprint along x and y, outline u
 uniform vec4 u_color;       // premultiplied
 uniform float u_coverage_exponent;  // 1 / gamma, in the program compiled with CURVETEXT_GAMMA 1
 
+// GLSL ES 1.00 (CURVETEXT_ES2 1) shares the area functions below and reads
+// the texels its own way (bands_es2.frag.glsl, appended).
+#if !CURVETEXT_ES2
 in vec2 v_local;
 flat in vec4 v_rect;
 flat in vec2 v_glyph;
@@ -29,6 +32,7 @@ out vec4 curvetext_color;
 vec4 texel(int i) {
   return texelFetch(u_bands, ivec2(i & (CURVETEXT_BAND_WIDTH - 1), i >> CURVETEXT_BAND_WIDTH_LOG2), 0);
 }
+#endif
 
 // The conic (p0, c, p2) with weights 1, w, 1 at t, homogeneous (x w, y w, w).
 // Where a block's pieces are all parabolas (w = 1: every TrueType and CFF
@@ -142,6 +146,7 @@ float piece_area(vec2 p0, vec2 c, vec2 p2, float w) {
   return sum;
 }
 
+#if !CURVETEXT_ES2
 // The cells column - 1 .. column, row - 1 .. row of the n x n grid whose
 // blocks start at texel `base`: 0 all wholly outside, 1 all wholly inside, 2
 // otherwise (layout: lib/gpu/bands.hpp).
@@ -464,3 +469,4 @@ void main() {
 #endif
   curvetext_color = u_color * coverage;
 }
+#endif  // !CURVETEXT_ES2

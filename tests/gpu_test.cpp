@@ -12,8 +12,11 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
+#include "core/tolerances.hpp"
 #include "curvetext/color.hpp"
 #include "curvetext/error.hpp"
 #include "curvetext/headless.hpp"
@@ -24,6 +27,7 @@
 #include "curvetext/shaping.hpp"
 #include "curvetext/text_image.hpp"
 #include "gpu/bands.hpp"
+#include "gpu/bands_es2.hpp"
 #include "gpu/paint.hpp"
 #include "gpu/batch_impl.hpp"
 #include "gpu/vertex_format.hpp"
@@ -446,6 +450,14 @@ TEST(Context, TextBlocksTakeThePathOfTheContext) {
   if (test::expects_gles2()) {
     EXPECT_EQ(version.rfind("OpenGL ES 2.0", 0), 0u) << version;
     EXPECT_FALSE(batch.instanced());
+    // llvmpipe's GLES 2 fragment shaders have 24-bit highp floats and it has
+    // OES_texture_float: its text takes the GLES 2 band path.
+    const std::string renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    std::printf("%s: GLES 2 band path %s\n", renderer.c_str(), gpu::es2_band_context() ? "yes" : "no");
+    if (renderer.find("llvmpipe") != std::string::npos) {
+      EXPECT_TRUE(gpu::es2_band_context());
+      EXPECT_TRUE(DrawBatchAccess::impl(batch).banded && DrawBatchAccess::impl(batch).band_quads);
+    }
   } else {
     EXPECT_EQ(batch.instanced(), gpu::context_instances());
   }
@@ -458,7 +470,7 @@ TEST(Context, TextBlocksTakeThePathOfTheContext) {
 // sizes whose pixels read the cell grids and the band loop.
 TEST(Bands, ConicProgramMatchesCpuReference) {
   context();
-  if (!gpu::context_instances()) GTEST_SKIP() << "GLES2: no band program";
+  if (!gpu::context_instances() && !gpu::es2_band_context()) GTEST_SKIP() << "GLES2 without highp: no band program";
   std::vector<Mesh> meshes;
   {
     Outline circle;
@@ -490,6 +502,8 @@ TEST(Bands, ConicProgramMatchesCpuReference) {
   // Two scales, and one turned 35 degrees about the image's centre (the
   // program with CURVETEXT_FOOTPRINT and CURVETEXT_CONICS).
   for (const auto& [scale, degrees] : {std::pair{0.25, 0.0}, std::pair{1.3, 0.0}, std::pair{1.1, -35.0}}) {
+    // GLES 2's band program serves maps that keep the axes only.
+    if (degrees != 0.0 && !gpu::context_instances()) continue;
     // The batch's mesh (the first shape, unmoved) is drawn only where the
     // bands are not: a pixel off the CPU's shows it.
     auto impl = gpu::upload(gpu::pack_mesh(meshes[0]));
@@ -536,7 +550,8 @@ TEST(Bands, ConicProgramMatchesCpuReference) {
 // origins.
 TEST(Bands, ShaderMatchesCpuReferenceInOnePass) {
   context();
-  if (!gpu::context_instances()) GTEST_SKIP() << "GLES2: text blocks draw through their meshes";
+  if (!gpu::context_instances() && !gpu::es2_band_context())
+    GTEST_SKIP() << "GLES2 without highp: text blocks draw through their meshes";
   const Font font = Font::open(test::kDejaVuSans);
   const ShapedLine line = shape_line(font, "Band@gq&%Wj");
   GlyphCache cache;
@@ -687,7 +702,8 @@ TEST(Bands, AutoIsFullWhereBandsDraw) {
               bands ? AntiAliasing::Full : AntiAliasing::Vbaa);
     EXPECT_EQ(resolve_antialiasing(AntiAliasing::Curves, 14.0, renderer, batch, placement), AntiAliasing::Curves);
   }
-  EXPECT_EQ(renderer.draws_from_bands(batch, Placement{scale, 2.0, 14.0}), gpu::context_instances());
+  const bool banded = gpu::context_instances() || gpu::es2_band_context();
+  EXPECT_EQ(renderer.draws_from_bands(batch, Placement{scale, 2.0, 14.0}), banded);
 
   TextImageOptions options;
   options.size_px = 14.0;
@@ -701,12 +717,132 @@ TEST(Bands, AutoIsFullWhereBandsDraw) {
   const std::size_t passes = renderer.offscreen_passes();
   const Image automatic = render_text_image(renderer, cache, font, layout, options);
   ASSERT_NE(full.rgba, vbaa.rgba);  // else the comparison below could not tell them apart
-  if (gpu::context_instances()) {
+  if (banded) {
     EXPECT_EQ(automatic.rgba, full.rgba);
     EXPECT_EQ(renderer.offscreen_passes(), passes);
   } else {
     EXPECT_EQ(automatic.rgba, vbaa.rgba);
   }
+}
+
+// Turns the GLES 2 band path off for one scope.
+struct Es2BandsOff {
+  Es2BandsOff() { gpu::set_es2_bands_allowed(false); }
+  ~Es2BandsOff() { gpu::set_es2_bands_allowed(true); }
+  Es2BandsOff(const Es2BandsOff&) = delete;
+  Es2BandsOff& operator=(const Es2BandsOff&) = delete;
+};
+
+// Draws `batch` black on white in full and returns 1 - red / 255 per pixel,
+// and how many offscreen passes the draw took.
+std::pair<Coverage, std::size_t> draw_full(Renderer& renderer, const DrawBatch& batch, const Placement& placement) {
+  ImageTarget target;
+  target.begin(kW * 4, kH, Color{1, 1, 1, 1});
+  const std::size_t before = renderer.offscreen_passes();
+  renderer.draw(batch, placement, DrawOptions(Color{0, 0, 0, 1}, AntiAliasing::Full));
+  const Image image = target.read_pixels();
+  Coverage cov(static_cast<std::size_t>(kW) * 4 * kH);
+  for (std::size_t i = 0; i < cov.size(); ++i) cov[i] = 1.0 - image.rgba[4 * i] / 255.0;
+  return {cov, renderer.offscreen_passes() - before};
+}
+
+// On a GLES 2 context whose fragment shaders have highp floats (and float
+// textures), full text draws through the GLES 2 band program in one pass;
+// switched off, or with a glyph whose bands exceed the program's loop bound
+// (tolerance::kEs2BandEntryCap), the block takes the mesh path and its
+// offscreen pass, and draws the same coverage (both exact; they differ only
+// where two glyphs share a pixel: source-over against a sum).
+TEST(Bands, Es2TextBlockDrawsInOnePassOrFallsBack) {
+  context();
+  if (gpu::context_instances() || !gpu::es2_band_context())
+    GTEST_SKIP() << "not a GLES 2 context with highp fragment shaders";
+  const Font font = Font::open(test::kDejaVuSans);
+  const ShapedLine line = shape_line(font, "Band@gq&%Wj");
+  GlyphCache cache;
+  Renderer renderer;
+  const double ppem = 20.0, scale = ppem / font.metrics().units_per_em;
+  const Placement placement{scale, 2.37, 4.61 + font.metrics().ascender * scale};
+  const DrawBatch banded = DrawBatch::from_text(cache, font, line, ppem);
+  ASSERT_TRUE(DrawBatchAccess::impl(banded).banded && DrawBatchAccess::impl(banded).band_quads);
+  const auto [one_pass, passes] = draw_full(renderer, banded, placement);
+  EXPECT_EQ(passes, 0u);
+  Coverage mesh;
+  {
+    const Es2BandsOff off;
+    const DrawBatch fallback = DrawBatch::from_text(cache, font, line, ppem);
+    EXPECT_FALSE(DrawBatchAccess::impl(fallback).banded);
+    std::size_t mesh_passes = 0;
+    std::tie(mesh, mesh_passes) = draw_full(renderer, fallback, placement);
+    EXPECT_EQ(mesh_passes, 1u);
+  }
+  double worst = 0.0, sum = 0.0, ink = 0.0;
+  for (std::size_t i = 0; i < mesh.size(); ++i) {
+    worst = std::max(worst, std::abs(one_pass[i] - mesh[i]));
+    sum += std::abs(one_pass[i] - mesh[i]);
+    ink += mesh[i];
+  }
+  std::printf("GLES 2 bands against the mesh path: largest difference %.4f, mean %.5f (ink %.1f px)\n", worst,
+              sum / static_cast<double>(mesh.size()), ink);
+  EXPECT_GT(ink, 50.0);
+  EXPECT_LE(worst, 0.1);
+  EXPECT_LE(sum / static_cast<double>(mesh.size()), 0.002);
+
+  // A glyph whose bands list more pieces than the loop reaches.
+  gpu::BandScratch scratch;
+  gpu::GlyphBands bands;
+  std::uint32_t long_glyph = 0;
+  for (std::uint32_t g = 1; g < font.glyph_count() && long_glyph == 0; ++g) {
+    const Outline outline = font.glyph_outline(g);
+    if (outline.empty()) continue;
+    gpu::build_bands(build_mesh(outline), bands, scratch);
+    if (!bands.empty() && gpu::most_band_entries(bands) > tolerance::kEs2BandEntryCap) long_glyph = g;
+  }
+  ASSERT_NE(long_glyph, 0u);
+  std::vector<PlacedGlyph> placed{{line.glyphs[0].glyph_id, 0.0, 0.0}, {long_glyph, 1500.0, 0.0}};
+  const DrawBatch capped = DrawBatch::from_glyphs(cache, font, placed, ppem);
+  EXPECT_FALSE(DrawBatchAccess::impl(capped).banded) << long_glyph;
+  EXPECT_EQ(draw_full(renderer, capped, placement).second, 1u);
+}
+
+// A GLES 2 block past one draw's 16-bit indices (gpu::kBandQuadsPerDraw
+// glyphs) is drawn in several: every glyph shows, as the mesh path draws it.
+TEST(Bands, Es2BlockPastOneDrawsIndicesDrawsEveryGlyph) {
+  context();
+  if (gpu::context_instances() || !gpu::es2_band_context())
+    GTEST_SKIP() << "not a GLES 2 context with highp fragment shaders";
+  const Font font = Font::open(test::kDejaVuSans);
+  const std::uint32_t stem = shape_line(font, "l").glyphs[0].glyph_id;
+  const double ppem = 6.0, scale = ppem / font.metrics().units_per_em;
+  constexpr int kColumns = 160, kRows = 110;  // 17,600 glyphs, apart by 2 px and by 6 (no pixel shared)
+  static_assert(kColumns * kRows > gpu::kBandQuadsPerDraw);
+  std::vector<PlacedGlyph> placed;
+  for (int j = 0; j < kRows; ++j)
+    for (int i = 0; i < kColumns; ++i) placed.push_back({stem, 2.0 * i / scale, -6.0 * j / scale});
+  GlyphCache cache;
+  Renderer renderer;
+  const auto draw = [&](const DrawBatch& batch) {
+    ImageTarget target;
+    target.begin(2 * kColumns + 4, 6 * kRows + 4, Color{1, 1, 1, 1});
+    renderer.draw(batch, Placement{scale, 1.3, 7.4}, DrawOptions(Color{0, 0, 0, 1}, AntiAliasing::Full));
+    return target.read_pixels();
+  };
+  const DrawBatch banded = DrawBatch::from_glyphs(cache, font, placed, ppem);
+  ASSERT_TRUE(DrawBatchAccess::impl(banded).band_quads);
+  const Image one_pass = draw(banded);
+  const Es2BandsOff off;
+  const Image mesh = draw(DrawBatch::from_glyphs(cache, font, placed, ppem));
+  // The last row: past the first draw.
+  double last_row_ink = 0.0, worst = 0.0;
+  for (int y = 0; y < one_pass.height; ++y)
+    for (int x = 0; x < one_pass.width; ++x) {
+      const double a = 1.0 - one_pass.pixel(x, y)[0] / 255.0, b = 1.0 - mesh.pixel(x, y)[0] / 255.0;
+      worst = std::max(worst, std::abs(a - b));
+      if (y >= one_pass.height - 8) last_row_ink += a;
+    }
+  std::printf("%zu glyphs: largest difference to the mesh path %.4f, last row's ink %.1f px\n", placed.size(), worst,
+              last_row_ink);
+  EXPECT_GT(last_row_ink, 0.5 * kColumns * 0.2);
+  EXPECT_LE(worst, 0.02);
 }
 
 // A block of N placed glyphs uploads bytes in proportion to N: instanced, 40
@@ -740,9 +876,9 @@ TEST(Text, BlockUploadsBytesInProportionToItsGlyphs) {
     }
     const DrawBatch instanced = DrawBatchAccess::make(
         gpu::text_block(GlyphCacheAccess::impl(cache), font, placed, 16.0, gpu::BlockPath::Instanced));
-    cache_gpu_bytes.push_back(cache.stats().gpu_bytes);
     const DrawBatch expanded = DrawBatchAccess::make(
         gpu::text_block(GlyphCacheAccess::impl(cache), font, placed, 16.0, gpu::BlockPath::Expanded));
+    cache_gpu_bytes.push_back(cache.stats().gpu_bytes);  // on GLES 2 with highp, the bands' texels too
     ASSERT_TRUE(instanced.instanced());
     ASSERT_FALSE(expanded.instanced());
     instanced_bytes.push_back(instanced.gpu_bytes());
@@ -752,7 +888,9 @@ TEST(Text, BlockUploadsBytesInProportionToItsGlyphs) {
     const std::size_t per_glyph = DrawBatchAccess::impl(instanced).banded ? 40u : 8u;
     EXPECT_EQ(instanced_bytes.back(), per_glyph * inked * n) << copies << " copies";
     const std::size_t index_bytes = n * vertices <= gpu::kMaxShortIndexedVertices ? 2 : 4;
-    EXPECT_EQ(expanded_bytes.back(), n * (vertices * sizeof(gpu::Vertex) + indices * index_bytes))
+    // Where the GLES 2 band path draws it, each glyph's quad: 4 vertices of 10 floats.
+    const std::size_t quad_bytes = DrawBatchAccess::impl(expanded).band_quads ? 160u : 0u;
+    EXPECT_EQ(expanded_bytes.back(), n * (vertices * sizeof(gpu::Vertex) + indices * index_bytes + quad_bytes * inked))
         << copies << " copies";
   }
   for (std::size_t i = 1; i < cache_gpu_bytes.size(); ++i)

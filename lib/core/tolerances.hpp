@@ -144,4 +144,13 @@ inline constexpr std::size_t kCoverageSlots = 8;
 inline constexpr std::size_t kCoverageBudgetBytes = std::size_t{48} << 20;
 inline constexpr int kMsaaTileTexels = 1024;
 
+// The GLES 2 band program (shaders/bands_es2.frag.glsl) reads a band's
+// entries in a loop of constant bound (GLSL ES 1.00 has no other): a glyph
+// any of whose bands lists more entries than this (band 0 lists every piece
+// of its boundary) takes the mesh path, and so does its whole block, on GLES 2
+// only. In entries (boundary pieces); 35 of DejaVu Sans's 6,190 inked glyphs
+// and none of Inter's exceed it; the loop stops early, so the bound costs
+// only the glyphs that need it.
+inline constexpr int kEs2BandEntryCap = 128;
+
 }  // namespace curvetext::tolerance

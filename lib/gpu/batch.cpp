@@ -8,7 +8,9 @@
 #include <string>
 
 #include "curvetext/error.hpp"
+#include "core/tolerances.hpp"
 #include "curvetext/lod.hpp"
+#include "gpu/bands_es2.hpp"
 #include "gpu/batch_impl.hpp"
 #include "gpu/effects.hpp"
 #include "gpu/gl_state.hpp"
@@ -32,7 +34,7 @@ Box bounds_of(const gpu::PackedMesh& packed) {
 }  // namespace
 
 GlyphCache::Impl::Packed GlyphCache::Impl::get(const Font& font, std::uint32_t glyph_id, double pixels_per_em,
-                                               bool upload, std::uint32_t effect) {
+                                               bool upload, std::uint32_t effect, bool es2_bands) {
   const int upem = font.metrics().units_per_em;
   if (!(pixels_per_em > 0) || !std::isfinite(pixels_per_em) || upem <= 0) {
     throw Error(ErrorCode::InvalidArgument, "glyph size must be a positive number of pixels per em");
@@ -86,8 +88,8 @@ GlyphCache::Impl::Packed GlyphCache::Impl::get(const Font& font, std::uint32_t g
     stats.bytes += glyph.buffers->bytes;
     stats.gpu_bytes += glyph.buffers->bytes;
   }
-  // Bands need float textures and texelFetch (GLES 3, GL 3.3).
-  if (upload && !glyph.bands.tried && !glyph.packed.empty() && gpu::ContextInfo::current().gl3()) {
+  // Bands need float textures and texelFetch (GLES 3, GL 3.3), or GLES 2 with highp (bands_es2.hpp).
+  if ((es2_bands || (upload && gpu::ContextInfo::current().gl3())) && !glyph.bands.tried && !glyph.packed.empty()) {
     if (!mesh_fresh) {
       // Packed without bands before (a GLES2 block): the mesh again.
       font.glyph_outline(glyph_id, scratch.outline);
@@ -265,15 +267,32 @@ std::unique_ptr<BatchImpl> expanded_block(std::span<const CacheImpl::Packed> gly
   return upload(std::move(packed));
 }
 
+// The band instances (8 floats each) as the context draws them: as they
+// are where it instances, else each expanded into its quad's 4 vertices
+// (GLES 2, bands_es2.hpp).
+void upload_band_instances(BatchImpl& impl, const std::vector<float>& instances, bool quads) {
+  if (instances.empty()) return;
+  impl.band_quads = quads;
+  upload_buffer(GL_ARRAY_BUFFER, impl.bands_vbo, quads ? expand_band_quads(instances) : instances);
+}
+
+// Whether a glyph's bands can be drawn: built, and on GLES 2 (`quads`)
+// within the program's loop bound.
+bool drawable(const GlyphBandRef& bands, bool quads) {
+  return bands.page && (!quads || bands.most_entries <= tolerance::kEs2BandEntryCap);
+}
+
 // One pass exact area: per inked placement its glyph's box and (offset,
 // first texel, levels), grouped by band page (shaders/bands.vert.glsl). Left
-// out (the block drawn through its meshes) when a glyph has no bands.
-void band_instances(std::span<const CacheImpl::Packed> glyphs, std::span<const PlacedGlyph> placed, BatchImpl& impl) {
+// out (the block drawn through its meshes) when a glyph has no bands, or on
+// GLES 2 (`quads`) one whose bands exceed the program's loop bound.
+void band_instances(std::span<const CacheImpl::Packed> glyphs, std::span<const PlacedGlyph> placed, BatchImpl& impl,
+                    bool quads) {
   std::vector<std::pair<std::shared_ptr<const BandPage>, std::vector<float>>> pages;
   for (std::size_t i = 0; i < placed.size(); ++i) {
     const CachedGlyph& g = *glyphs[i];
     if (g.packed.empty()) continue;
-    if (!g.bands.page) return;
+    if (!drawable(g.bands, quads)) return;
     auto it = std::find_if(pages.begin(), pages.end(), [&](const auto& p) { return p.first == g.bands.page; });
     if (it == pages.end()) it = pages.insert(pages.end(), {g.bands.page, {}});
     const Box& box = g.bands.box;
@@ -290,7 +309,7 @@ void band_instances(std::span<const CacheImpl::Packed> glyphs, std::span<const P
     impl.band_runs.push_back({page, first, static_cast<GLsizei>(floats.size() / 8)});
     all.insert(all.end(), floats.begin(), floats.end());
   }
-  if (!all.empty()) upload_buffer(GL_ARRAY_BUFFER, impl.bands_vbo, all);
+  upload_band_instances(impl, all, quads);
 }
 
 // Instancing: one offset per placement, grouped by glyph (a counting sort:
@@ -329,7 +348,7 @@ std::unique_ptr<BatchImpl> instanced_block(std::span<const CacheImpl::Packed> gl
     offsets[2 * slot + 1] = static_cast<float>(placed[i].y);
   }
   upload_buffer(GL_ARRAY_BUFFER, impl->offsets_vbo, offsets);
-  band_instances(glyphs, placed, *impl);
+  band_instances(glyphs, placed, *impl, false);
   if (GLenum err = glGetError(); err != GL_NO_ERROR)
     throw Error(ErrorCode::Gl, "text block upload failed (GL error 0x" + gl_error_text(err) + ")");
   return impl;
@@ -358,7 +377,9 @@ bool append_bands(const GlyphBands& bands, std::shared_ptr<BandPage>& page_slot,
     const TextureUploadScope bound(page.texture);
     if (grow) {
       // Re-specified whole: blocks drawing from the page keep its texture name.
-      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, static_cast<GLsizei>(kWidth), page.rows, 0, GL_RGBA, GL_FLOAT,
+      // GLES 2 (OES_texture_float) takes the unsized format.
+      const GLint format = ContextInfo::current().gl3() ? GL_RGBA32F : GL_RGBA;
+      glTexImage2D(GL_TEXTURE_2D, 0, format, static_cast<GLsizei>(kWidth), page.rows, 0, GL_RGBA, GL_FLOAT,
                    page.texels.data());
       glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
       glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -378,10 +399,13 @@ bool append_bands(const GlyphBands& bands, std::shared_ptr<BandPage>& page_slot,
   out.conics = bands.conics;
   out.box = bands.box;
   out.bytes = bands.bytes();
+  out.most_entries = most_band_entries(bands);
   return true;
 }
 
 void add_mesh_bands(BatchImpl& impl, std::span<const Mesh* const> meshes, std::span<const Vec2> offsets) {
+  const bool quads = !context_instances();
+  if (quads && !es2_band_context()) return;
   std::shared_ptr<BandPage> page;
   BandScratch scratch;
   GlyphBands bands;
@@ -392,7 +416,8 @@ void add_mesh_bands(BatchImpl& impl, std::span<const Mesh* const> meshes, std::s
     if (bands.empty()) continue;
     GlyphBandRef ref;
     const BandPage* before = page.get();
-    if (!append_bands(bands, page, ref)) return;  // too large for a page: the mesh path only
+    // Too large for a page (or, on GLES 2, for the program's loop): the mesh path only.
+    if (!append_bands(bands, page, ref) || !drawable(ref, quads)) return;
     if (runs.empty() || page.get() != before) runs.push_back({page, static_cast<GLint>(instances.size() / 8), 0});
     ++runs.back().count;
     impl.band_conics = impl.band_conics || ref.conics;
@@ -402,7 +427,7 @@ void add_mesh_bands(BatchImpl& impl, std::span<const Mesh* const> meshes, std::s
                       static_cast<float>(box.max.y), static_cast<float>(offsets[i].x), static_cast<float>(offsets[i].y),
                       static_cast<float>(ref.first), static_cast<float>(ref.levels)});
   }
-  if (!instances.empty()) upload_buffer(GL_ARRAY_BUFFER, impl.bands_vbo, instances);
+  upload_band_instances(impl, instances, quads);
   impl.band_runs = std::move(runs);
   impl.banded = true;
 }
@@ -415,11 +440,17 @@ std::unique_ptr<BatchImpl> text_block(CacheImpl& cache, const Font& font, std::s
   check_no_pending_error("DrawBatch::from_glyphs");
   if (path == BlockPath::Auto) path = context_instances() ? BlockPath::Instanced : BlockPath::Expanded;
   const bool instanced = path == BlockPath::Instanced;
+  // The GLES 2 band path (bands_es2.hpp): the expanded meshes and the bands' quads.
+  const bool es2_bands = !instanced && !context_instances() && es2_band_context();
   // Held here: the cache may drop a glyph of this block while fetching a later one.
   std::vector<CacheImpl::Packed> meshes;
   meshes.reserve(glyphs.size());
-  for (const PlacedGlyph& g : glyphs) meshes.push_back(cache.get(font, g.glyph_id, pixels_per_em, instanced, effect));
-  return instanced ? instanced_block(meshes, glyphs) : expanded_block(meshes, glyphs);
+  for (const PlacedGlyph& g : glyphs)
+    meshes.push_back(cache.get(font, g.glyph_id, pixels_per_em, instanced, effect, es2_bands));
+  if (instanced) return instanced_block(meshes, glyphs);
+  auto block = expanded_block(meshes, glyphs);
+  if (es2_bands) band_instances(meshes, glyphs, *block, true);
+  return block;
 }
 
 }  // namespace gpu
@@ -464,16 +495,16 @@ std::size_t DrawBatch::vertex_count() const {
 }
 std::size_t DrawBatch::gpu_bytes() const {
   if (!impl_) return 0;
-  if (impl_->instanced()) {
-    std::size_t banded = 0;
-    for (const Impl::BandRun& run : impl_->band_runs) banded += static_cast<std::size_t>(run.count);
-    return impl_->placements * 2 * sizeof(float) + banded * 8 * sizeof(float);
-  }
+  std::size_t banded = 0;
+  for (const Impl::BandRun& run : impl_->band_runs) banded += static_cast<std::size_t>(run.count);
+  if (impl_->instanced()) return impl_->placements * 2 * sizeof(float) + banded * 8 * sizeof(float);
   if (impl_->bitmaps()) return impl_->vertex_count * 4 * sizeof(float);
   const std::size_t index_bytes = impl_->index_type == GL_UNSIGNED_SHORT ? 2
                                   : impl_->index_type == GL_UNSIGNED_INT ? 4
                                                                          : 0;
-  return impl_->vertex_count * sizeof(gpu::Vertex) + impl_->index_count * index_bytes;
+  // GLES 2's band quads: 4 vertices a glyph (their indices are the renderer's).
+  const std::size_t quads = impl_->band_quads ? banded * 4 * gpu::kBandQuadVertexFloats * sizeof(float) : 0;
+  return impl_->vertex_count * sizeof(gpu::Vertex) + impl_->index_count * index_bytes + quads;
 }
 bool DrawBatch::instanced() const { return impl_ && impl_->instanced(); }
 

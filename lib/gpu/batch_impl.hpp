@@ -70,6 +70,7 @@ struct GlyphBandRef {
   Box box;
   std::size_t bytes = 0;  // its texels
   bool tried = false;     // built (or found too large) already
+  int most_entries = 0;   // in any one band (the GLES 2 program's bound, bands_es2.hpp)
 };
 
 // A glyph cache entry: the packed mesh, the box of its base positions
@@ -143,6 +144,7 @@ struct DrawBatch::Impl {
   GLuint bands_vbo = 0;
   std::vector<BandRun> band_runs;
   bool banded = false;
+  bool band_quads = false;   // GLES 2: 4 vertices per placement, not one instance (bands_es2.hpp)
   bool band_conics = false;  // a placed glyph's bands have conics (GlyphBands::conics)
 
   // Colour bitmaps: textured quads (6 vertices of x, y, u, v each, outline
@@ -206,8 +208,10 @@ struct GlyphCache::Impl {
   // a miss, and uploads its GPU buffers when `upload` is set and it has none.
   // The returned pointer stays valid even if the entry is evicted. `effect`:
   // the mesh of that effect of the glyph instead (gpu/effects.hpp).
+  // `es2_bands`: builds its bands without uploading buffers (a GLES 2 block
+  // of the band path, bands_es2.hpp).
   Packed get(const Font& font, std::uint32_t glyph_id, double pixels_per_em, bool upload = false,
-             std::uint32_t effect = 0);
+             std::uint32_t effect = 0, bool es2_bands = false);
 
   std::size_t budget_bytes;
   // A miss's outline, mesh and packing room: their storage serves every miss.

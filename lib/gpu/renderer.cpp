@@ -18,6 +18,7 @@
 #include "curvetext/error.hpp"
 #include "core/tolerances.hpp"
 #include "gpu/bands.hpp"
+#include "gpu/bands_es2.hpp"
 #include "gpu/batch_impl.hpp"
 #include "gpu/effects.hpp"
 #include "gpu/gl_state.hpp"
@@ -80,15 +81,33 @@ void compile(const Shader& shader, GLenum type, const char* source, bool gles, c
 
 // The band shaders (bands.vert/frag.glsl) are GLSL ES 3.00 / desktop 3.30
 // (texelFetch, integer operations, flat varyings); the preamble is only the
-// #version line, the band texture's width and the cell grids' sizes.
-void compile_glsl3(const Shader& shader, GLenum type, const char* source, bool gles, const std::string& defines) {
-  char width[192];
+// #version line and these: the band texture's width, the cell grids' sizes,
+// and whether the GLES 2 program's part of bands.frag.glsl is wanted.
+std::string band_defines(bool es2) {
+  char width[256];
   std::snprintf(width, sizeof width,
                 "#define CURVETEXT_BAND_WIDTH %d\n#define CURVETEXT_BAND_WIDTH_LOG2 %d\n"
-                "#define CURVETEXT_GRID_MIN_LOG2 %d\n#define CURVETEXT_GRID_MAX_LOG2 %d\n",
-                gpu::kBandTextureWidth, gpu::kBandTextureWidthLog2, gpu::kGridMinLog2, gpu::kGridMaxLog2);
-  compile_text(shader, type,
-               std::string(gles ? "#version 300 es\n" : "#version 330 core\n") + width + defines + source);
+                "#define CURVETEXT_GRID_MIN_LOG2 %d\n#define CURVETEXT_GRID_MAX_LOG2 %d\n"
+                "#define CURVETEXT_ES2 %d\n#define CURVETEXT_ES2_ENTRY_CAP %d\n",
+                gpu::kBandTextureWidth, gpu::kBandTextureWidthLog2, gpu::kGridMinLog2, gpu::kGridMaxLog2, es2 ? 1 : 0,
+                tolerance::kEs2BandEntryCap);
+  return width;
+}
+
+void compile_glsl3(const Shader& shader, GLenum type, const char* source, bool gles, const std::string& defines) {
+  compile_text(
+      shader, type,
+      std::string(gles ? "#version 300 es\n" : "#version 330 core\n") + band_defines(false) + defines + source);
+}
+
+// The GLES 2 band program (lib/gpu/bands_es2.hpp) is GLSL ES 1.00: its
+// fragment stage is bands.frag.glsl's area functions (CURVETEXT_ES2 1)
+// followed by bands_es2.frag.glsl.
+void compile_es2_bands(const Shader& vs, const Shader& fs, const std::string& defines) {
+  const std::string preamble = "#version 100\n" + band_defines(true);
+  compile_text(vs, GL_VERTEX_SHADER, preamble + shader_source::bands_es2_vert_glsl);
+  compile_text(fs, GL_FRAGMENT_SHADER,
+               preamble + defines + shader_source::bands_frag_glsl + shader_source::bands_es2_frag_glsl);
 }
 
 void compile_text(const Shader& shader, GLenum type, const std::string& text) {
@@ -200,10 +219,13 @@ struct Renderer::Impl {
   struct BandProgram {
     GLuint id = 0;
     ProgramUniforms view;
-    GLint half = -1, bands = -1, inverse = -1, projective = -1;
+    GLint half = -1, bands = -1, rows = -1, inverse = -1, projective = -1;
   };
+  // GLSL ES 3.00 / 3.30, or ES 1.00 in a GLES 2 context (bands_es2.hpp,
+  // boxes only).
   BandProgram band_program[2][2][2];  // [gamma][conics][footprint: a map that turns the axes]
   GLuint corner_vbo = 0;
+  GLuint quad_indices = 0;  // GLES 2: each glyph's quad as 4 vertices, 6 indices
   std::size_t band_draws = 0;
   // Colour bitmaps: textured quads (bitmap.vert/frag.glsl).
   GLuint bitmap_program = 0;
@@ -367,6 +389,7 @@ struct Renderer::Impl {
           if (p.id != 0) glDeleteProgram(p.id);
     if (quad_vbo != 0) glDeleteBuffers(1, &quad_vbo);
     if (corner_vbo != 0) glDeleteBuffers(1, &corner_vbo);
+    if (quad_indices != 0) glDeleteBuffers(1, &quad_indices);
     if (vao != 0) glDeleteVertexArrays(1, &vao);
     for (Slot& s : slots) {
       if (s.fbo != 0) glDeleteFramebuffers(1, &s.fbo);
@@ -446,17 +469,24 @@ const Renderer::Impl::BandProgram& Renderer::Impl::make_band_program(bool gamma,
   if (p.id != 0) return p;
   Shader vs(GL_VERTEX_SHADER), fs(GL_FRAGMENT_SHADER);
   const std::string footprint_define = std::string("#define CURVETEXT_FOOTPRINT ") + (footprint ? "1" : "0") + "\n";
-  compile_glsl3(vs, GL_VERTEX_SHADER, shader_source::bands_vert_glsl, gles, footprint_define);
-  compile_glsl3(fs, GL_FRAGMENT_SHADER, shader_source::bands_frag_glsl, gles,
-                std::string("#define CURVETEXT_GAMMA ") + (gamma ? "1" : "0") + "\n#define CURVETEXT_CONICS " +
-                    (conics ? "1" : "0") + "\n" + footprint_define);
+  const std::string defines = std::string("#define CURVETEXT_GAMMA ") + (gamma ? "1" : "0") +
+                              "\n#define CURVETEXT_CONICS " + (conics ? "1" : "0") + "\n" + footprint_define;
+  if (!info.gl3()) {
+    compile_es2_bands(vs, fs, defines);
+  } else {
+    compile_glsl3(vs, GL_VERTEX_SHADER, shader_source::bands_vert_glsl, gles, footprint_define);
+    compile_glsl3(fs, GL_FRAGMENT_SHADER, shader_source::bands_frag_glsl, gles, defines);
+  }
   p.id = link_program(vs, fs, {"a_corner", "a_rect", "a_place"}, "band program");
   p.view = ProgramUniforms::of(p.id);
   p.half = glGetUniformLocation(p.id, "u_half");
   p.bands = glGetUniformLocation(p.id, "u_bands");
   p.inverse = glGetUniformLocation(p.id, "u_inverse");
   p.projective = glGetUniformLocation(p.id, "u_projective");
-  if (corner_vbo == 0) {
+  p.rows = glGetUniformLocation(p.id, "u_rows");
+  if (!info.gl3()) {
+    if (quad_indices == 0) quad_indices = gpu::make_band_quad_indices();
+  } else if (corner_vbo == 0) {
     const GLfloat corners[8] = {0, 0, 1, 0, 0, 1, 1, 1};
     glGenBuffers(1, &corner_vbo);
     const gpu::BufferBindingScope bound(GL_ARRAY_BUFFER, corner_vbo);
@@ -1002,18 +1032,20 @@ BandFootprint band_footprint(const Transform& full, const Box& bounds) {
 }  // namespace
 
 // full for text blocks (docs/design.md section 9): one instanced quad per
-// placed glyph, each pixel's exact area from the glyph's curve bands
+// placed glyph (on GLES 2, 4 vertices per glyph: bands_es2.hpp), each pixel's exact area from the glyph's curve bands
 // blended straight into the target (premultiplied source-over, its depth
 // test): no offscreen pass. Under a map that keeps the axes a pixel's
 // footprint in outline units is a box of half-size u_half; under one that
 // turns them the program built with CURVETEXT_FOOTPRINT integrates over its
 // parallelogram (exact for affine maps; per pixel, first order, under
-// perspective). Only where bands_serve (band_footprint finds a footprint;
-// else the caller takes the mesh path). Where the application writes depth, the glyphs' quads overlap
-// at one depth: the colour pass leaves depth alone (a glyph would hide its
+// perspective; GLES 3 / GL 3.3 only). Only where bands_serve (else the
+// caller takes the mesh path). Where the application writes depth, the
+// glyphs' quads overlap at one depth: the colour pass leaves depth alone (a glyph would hide its
 // neighbour's fringe), and a second pass writes it where there is ink.
 bool Renderer::Impl::bands_serve(const gpu::BatchImpl& b, const Transform& full) const {
-  return b.banded && band_footprint(full, b.bounds).kind != BandFootprint::None;
+  if (!b.banded) return false;
+  const BandFootprint::Kind kind = band_footprint(full, b.bounds).kind;
+  return kind == BandFootprint::Box || (kind != BandFootprint::None && info.gl3());
 }
 
 void Renderer::Impl::draw_bands(const gpu::BatchImpl& b, const Transform& full, float vw, float vh,
@@ -1039,15 +1071,21 @@ void Renderer::Impl::draw_bands(const gpu::BatchImpl& b, const Transform& full, 
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   glActiveTexture(GL_TEXTURE0);
-  const SamplerScope sampler(true);
-  glBindBuffer(GL_ARRAY_BUFFER, corner_vbo);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
-  glBindBuffer(GL_ARRAY_BUFFER, b.bands_vbo);
-  for (GLuint a = 1; a <= 2; ++a) {
-    glEnableVertexAttribArray(a);
-    glVertexAttribDivisor(a, 1);
+  const SamplerScope sampler(info.gl3());
+  const bool quads = b.band_quads;  // GLES 2: 4 vertices per glyph (bands_es2.hpp)
+  if (quads) {
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, quad_indices);  // restored with the application's state
+    for (GLuint a = 0; a <= 2; ++a) glEnableVertexAttribArray(a);
+  } else {
+    glBindBuffer(GL_ARRAY_BUFFER, corner_vbo);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+    for (GLuint a = 1; a <= 2; ++a) {
+      glEnableVertexAttribArray(a);
+      glVertexAttribDivisor(a, 1);
+    }
   }
+  glBindBuffer(GL_ARRAY_BUFFER, b.bands_vbo);
   GLboolean depth_writes = GL_FALSE;
   glGetBooleanv(GL_DEPTH_WRITEMASK, &depth_writes);
   const bool depth_pass = depth_writes == GL_TRUE && glIsEnabled(GL_DEPTH_TEST) == GL_TRUE;
@@ -1059,6 +1097,11 @@ void Renderer::Impl::draw_bands(const gpu::BatchImpl& b, const Transform& full, 
     }
     for (const gpu::BatchImpl::BandRun& run : b.band_runs) {
       glBindTexture(GL_TEXTURE_2D, run.page->texture);
+      if (quads) {
+        glUniform1f(p.rows, static_cast<GLfloat>(run.page->rows));
+        gpu::draw_band_quads(run.first, run.count);
+        continue;
+      }
       const auto at = [&](std::size_t offset) {
         return reinterpret_cast<const void*>(static_cast<std::uintptr_t>(run.first) * 32u + offset);
       };
@@ -1068,7 +1111,7 @@ void Renderer::Impl::draw_bands(const gpu::BatchImpl& b, const Transform& full, 
     }
   }
   for (GLuint a = 0; a <= 2; ++a) {
-    glVertexAttribDivisor(a, 0);
+    if (!quads) glVertexAttribDivisor(a, 0);
     glDisableVertexAttribArray(a);
   }
   glBindBuffer(GL_ARRAY_BUFFER, 0);

@@ -13,6 +13,8 @@ extern const char* const bitmap_vert_glsl;
 extern const char* const bitmap_frag_glsl;
 extern const char* const bands_vert_glsl;
 extern const char* const bands_frag_glsl;
+extern const char* const bands_es2_vert_glsl;
+extern const char* const bands_es2_frag_glsl;
 extern const char* const shadow_vert_glsl;
 extern const char* const shadow_frag_glsl;
 extern const char* const layer_vert_glsl;

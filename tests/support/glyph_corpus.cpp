@@ -9,6 +9,7 @@
 #include "curvetext/curves.hpp"
 #include "curvetext/error.hpp"
 #include "curvetext/lod.hpp"
+#include "gpu/bands_es2.hpp"
 #include "gpu/batch_impl.hpp"
 #include "support/coverage.hpp"
 #include "support/union_coverage.hpp"
@@ -308,8 +309,9 @@ class Checker {
       const Mesh merged = merge_page(page, options_.drop_a_triangle);
       auto impl = gpu::upload(gpu::pack_mesh(merged));
       // full in one pass from each glyph's curve bands where the context
-      // instances (as text blocks draw); the broken mesh through its triangles.
-      if (!options_.drop_a_triangle && gpu::context_instances()) {
+      // has the band program (as text blocks draw: GLES 3, GL 3.3, GLES 2
+      // with highp); the broken mesh through its triangles.
+      if (!options_.drop_a_triangle && (gpu::context_instances() || gpu::es2_band_context())) {
         std::vector<const Mesh*> meshes;
         std::vector<Vec2> offsets;
         for (const Prepared& g : page.glyphs) {

@@ -38,7 +38,9 @@ struct PlacedGlyph {
 // once, into buffers of the cache's entry, and the block uploads 8 bytes per
 // placed glyph (its offset); it is drawn with one instanced call per distinct
 // glyph. On GLES2 the block's buffer holds a copy of each placed glyph's mesh
-// (one draw call). Building is linear in the number of glyphs either way.
+// (one draw call), and where the context's fragment shaders have highp
+// floats and float textures, each glyph's band quad (4 vertices, 160 bytes)
+// that full draws. Building is linear in the number of glyphs either way.
 //
 // Lifetime and threads: owns its GL buffers, and shares the glyph meshes it
 // uses with the cache (they outlive their eviction while the block lives);
