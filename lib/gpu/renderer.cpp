@@ -363,6 +363,8 @@ struct Renderer::Impl {
 
   // The passes of Renderer::draw (below).
   void draw_curves(const gpu::BatchImpl& b, const Transform& full, float vw, float vh, const DrawOptions& options);
+  void render_coverage(const gpu::BatchImpl& b, const Transform& full, const OffscreenKey& key, Slot& slot,
+                       const DrawOptions& options);
   bool draw_offscreen(const gpu::BatchImpl& b, const Transform& full, float vw, float vh,
                       const gpu::GlStateBackup& target, const DrawOptions& options);
   void draw_area(const gpu::BatchImpl& b, const Transform& full, float vw, float vh, const std::array<float, 4>& color,
@@ -841,6 +843,52 @@ void composite_tile(RendererImpl& r, const RendererImpl::Slot& slot, int tx, int
 
 }  // namespace
 
+// Renders the coverage of `b` under `full` into `slot` for the tile `key`
+// (its texels, the apron included, key.factor per pixel): the areas summed
+// (full, vbaa) or an in/out pass resolved (msaa).
+void Renderer::Impl::render_coverage(const gpu::BatchImpl& b, const Transform& full, const OffscreenKey& key,
+                                     Slot& slot, const DrawOptions& options) {
+  if (key.msaa) ensure_multisample(key.w, key.h);
+  glBindFramebuffer(GL_FRAMEBUFFER, key.msaa ? ms_fbo : slot.fbo);
+  glViewport(0, 0, key.w, key.h);
+  glDisable(GL_SCISSOR_TEST);  // the application's scissor and depth test are for its target
+  glDisable(GL_DEPTH_TEST);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  const std::array<float, 3> target_depth = pass_depth;
+  pass_depth = {0.0f, 0.0f, 0.0f};
+  // A slot grown for a larger tile is cleared within this one only. (A
+  // scissored clear is a drawn quad on some drivers: Mesa compiles a
+  // shader for its first one, so a slot made for this tile is cleared whole.)
+  const bool larger = slot.w > Impl::round_up(key.w) || slot.h > Impl::round_up(key.h);
+  if (larger) {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, 0, key.w, key.h);
+  }
+  glClearColor(0, 0, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT);
+  if (larger) glDisable(GL_SCISSOR_TEST);
+  const Transform to_texture =
+      Transform::scale(key.factor, key.factor) * Transform::translation(-key.x0, -key.y0) * full;
+  const float kw = static_cast<float>(key.w), kh = static_cast<float>(key.h);
+  if (key.msaa) {
+    DrawOptions pass = options;
+    pass.color = Color{1, 1, 1, 1};
+    pass.antialiasing = AntiAliasing::None;
+    pass.gamma = 1.0f;  // applied by the composite
+    const Blending drawn_blending = target_blending;
+    target_blending = Blending::Srgb;  // the coverage texture is plain RGBA
+    draw_curves(b, to_texture, kw, kh, pass);
+    target_blending = drawn_blending;
+    resolve_multisample(slot, key.w, key.h);
+  } else {
+    draw_area(b, to_texture, kw, kh, {1.0f, 1.0f, 1.0f, 1.0f}, 1.0f, options.curve_mode, true);
+  }
+  pass_depth = target_depth;
+  slot.key = key;
+  slot.valid = true;
+  ++offscreen_passes;
+}
+
 // full, vbaa and msaa: the block's projected bounding box (plus a border) is
 // drawn into offscreen coverage textures: for full, the sum of its
 // triangles' exact areas per pixel; for vbaa (paper section 5) the same r
@@ -896,46 +944,7 @@ bool Renderer::Impl::draw_offscreen(const gpu::BatchImpl& b, const Transform& fu
                                    (h + 2) * factor, factor, msaa,   paper};
       bool hit = false;
       Impl::Slot& slot = r.slot_for(key, key.w, key.h, hit);
-      if (!hit) {
-        if (msaa) r.ensure_multisample(key.w, key.h);
-        glBindFramebuffer(GL_FRAMEBUFFER, msaa ? r.ms_fbo : slot.fbo);
-        glViewport(0, 0, key.w, key.h);
-        glDisable(GL_SCISSOR_TEST);  // the application's scissor and depth test are for its target
-        glDisable(GL_DEPTH_TEST);
-        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        const std::array<float, 3> target_depth = r.pass_depth;
-        r.pass_depth = {0.0f, 0.0f, 0.0f};
-        // A slot grown for a larger tile is cleared within this one only. (A
-        // scissored clear is a drawn quad on some drivers: Mesa compiles a
-        // shader for its first one, so a slot made for this tile is cleared whole.)
-        const bool larger = slot.w > Impl::round_up(key.w) || slot.h > Impl::round_up(key.h);
-        if (larger) {
-          glEnable(GL_SCISSOR_TEST);
-          glScissor(0, 0, key.w, key.h);
-        }
-        glClearColor(0, 0, 0, 0);
-        glClear(GL_COLOR_BUFFER_BIT);
-        if (larger) glDisable(GL_SCISSOR_TEST);
-        const Transform to_texture = Transform::scale(factor, factor) * Transform::translation(-key.x0, -key.y0) * full;
-        const float kw = static_cast<float>(key.w), kh = static_cast<float>(key.h);
-        if (msaa) {
-          DrawOptions pass = options;
-          pass.color = Color{1, 1, 1, 1};
-          pass.antialiasing = AntiAliasing::None;
-          pass.gamma = 1.0f;  // applied by the composite
-          const Blending drawn_blending = r.target_blending;
-          r.target_blending = Blending::Srgb;  // the coverage texture is plain RGBA
-          draw_curves(b, to_texture, kw, kh, pass);
-          r.target_blending = drawn_blending;
-          r.resolve_multisample(slot, key.w, key.h);
-        } else {
-          draw_area(b, to_texture, kw, kh, {1.0f, 1.0f, 1.0f, 1.0f}, 1.0f, options.curve_mode, true);
-        }
-        r.pass_depth = target_depth;
-        slot.key = key;
-        slot.valid = true;
-        ++r.offscreen_passes;
-      }
+      if (!hit) render_coverage(b, full, key, slot, options);
       r.apply_target(target);
       composite_tile(r, slot, tx, ty, w, h, vw, vh, options, vbaa && factor > 1, full);
     }
