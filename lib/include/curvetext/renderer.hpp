@@ -24,11 +24,12 @@ struct Gradient;  // paint.hpp
 enum class AntiAliasing {
   None,    // in/out test only
   Curves,  // the paper's single pass: curved edges antialiased, straight edges aliased
-  Full,    // the exact area of each pixel inside the shape (default): text blocks on GLES 3 /
-           // GL 3.3 (or GLES 2 with highp fragment floats and OES_texture_float) under maps
-           // that keep the axes in one pass, a quad per glyph over its curve bands
-           // (shaders/bands.frag.glsl); otherwise every triangle's exact area
-           // summed into a coverage buffer, then blended over the target (area.frag.glsl)
+  Full,    // the exact area of each pixel inside the shape (default): text blocks in one
+           // pass, a quad per glyph over its curve bands (shaders/bands.frag.glsl), on
+           // GLES 3 / GL 3.3 under any affine map or a perspective in front of the eye, and
+           // on GLES 2 with highp fragment floats and OES_texture_float under maps that keep
+           // the axes; otherwise every triangle's exact area summed into a coverage buffer,
+           // then blended over the target (area.frag.glsl)
   Vbaa,    // the paper's view based AA: `full` drawn r times larger into a texture over the
            // block's projected bounding box, filtered down (falls back to full when the
            // texture would exceed the GL maximum)
