@@ -98,10 +98,14 @@ float segment_ratio(float w) {
 #endif
 }
 
-// The integral of x dy along the arc between t0 and t1: the chord's, plus
-// the area between the sub-arc (its control point the blossom at (t0, t1))
-// and its chord.
-float arc_x_dy(vec2 p0, vec2 c, vec2 p2, float w, float t0, float t1) {
+// The sub-arc between t0 and t1: its ends a, b, its control point (the
+// blossom at (t0, t1)) less a, and its middle weight.
+struct SubArc {
+  vec2 a, b, m;
+  float w;
+};
+
+SubArc sub_arc(vec2 p0, vec2 c, vec2 p2, float w, float t0, float t1) {
   vec3 h0 = conic_at(p0, c, p2, w, t0);
   vec3 h2 = conic_at(p0, c, p2, w, t1);
   float k0 = (1.0 - t0) * (1.0 - t1);
@@ -110,17 +114,22 @@ float arc_x_dy(vec2 p0, vec2 c, vec2 p2, float w, float t0, float t1) {
   vec3 h1 = vec3(k0 * p0 + k1 * c + k2 * p2, k0 + k1 + k2);
 #if CURVETEXT_CONICS
   vec2 a = h0.xy / h0.z;
-  vec2 b = h2.xy / h2.z;
-  vec2 m = h1.xy / h1.z - a;
-  float ws = h1.z / sqrt(h0.z * h2.z);
+  return SubArc(a, h2.xy / h2.z, h1.xy / h1.z - a, h1.z / sqrt(h0.z * h2.z));
 #else
-  vec2 a = h0.xy;
-  vec2 b = h2.xy;
-  vec2 m = h1.xy - a;
-  float ws = 1.0;
+  return SubArc(h0.xy, h2.xy, h1.xy - h0.xy, 1.0);
 #endif
-  vec2 ab = b - a;
-  return 0.5 * (a.x + b.x) * ab.y + segment_ratio(ws) * 0.5 * (m.x * ab.y - m.y * ab.x);
+}
+
+// The integral of x dy along a sub-arc: its chord's, plus the area between
+// it and its chord.
+float chord_and_segment(SubArc s) {
+  vec2 ab = s.b - s.a;
+  return 0.5 * (s.a.x + s.b.x) * ab.y + segment_ratio(s.w) * 0.5 * (s.m.x * ab.y - s.m.y * ab.x);
+}
+
+// The integral of x dy along the arc between t0 and t1.
+float arc_x_dy(vec2 p0, vec2 c, vec2 p2, float w, float t0, float t1) {
+  return chord_and_segment(sub_arc(p0, c, p2, w, t0, t1));
 }
 
 // One piece monotone in x and y (pixel units from the box's centre): its
@@ -204,29 +213,11 @@ float right_of(vec2 q, vec2 a, vec2 d) { return (d.y * (q.x - a.x) - d.x * (q.y 
 // (a near-level edge is not sheared by its slope).
 float edge_x(vec2 a, vec2 d, float y) { return a.x + d.x * clamp((y - a.y) / d.y, 0.0, 1.0); }
 
-// The integral of x - e(y) dy along the arc between t0 and t1: arc_x_dy's
-// chord and segment, less the edge's chord over the same rows.
+// The integral of x - e(y) dy along the arc between t0 and t1: arc_x_dy
+// less the edge's chord over the same rows.
 float beyond_edge(vec2 p0, vec2 c, vec2 p2, float w, float t0, float t1, vec2 a, vec2 d) {
-  vec3 h0 = conic_at(p0, c, p2, w, t0);
-  vec3 h2 = conic_at(p0, c, p2, w, t1);
-  float k0 = (1.0 - t0) * (1.0 - t1);
-  float k1 = ((1.0 - t0) * t1 + t0 * (1.0 - t1)) * w;
-  float k2 = t0 * t1;
-  vec3 h1 = vec3(k0 * p0 + k1 * c + k2 * p2, k0 + k1 + k2);
-#if CURVETEXT_CONICS
-  vec2 q0 = h0.xy / h0.z;
-  vec2 q2 = h2.xy / h2.z;
-  vec2 m = h1.xy / h1.z - q0;
-  float ws = h1.z / sqrt(h0.z * h2.z);
-#else
-  vec2 q0 = h0.xy;
-  vec2 q2 = h2.xy;
-  vec2 m = h1.xy - q0;
-  float ws = 1.0;
-#endif
-  vec2 chord = q2 - q0;
-  float e = edge_x(a, d, 0.5 * (q0.y + q2.y));
-  return (0.5 * (q0.x + q2.x) - e) * chord.y + segment_ratio(ws) * 0.5 * (m.x * chord.y - m.y * chord.x);
+  SubArc s = sub_arc(p0, c, p2, w, t0, t1);
+  return chord_and_segment(s) - edge_x(a, d, 0.5 * (s.a.y + s.b.y)) * (s.b.y - s.a.y);
 }
 
 // Both roots of the Bernstein quadratic (b0, b1, b2), ascending; 2 for one

@@ -531,16 +531,19 @@ int grid_state(const GlyphBands& bands, Vec2 centre, Vec2 half) {
   return block_state(bands, g, c0 + 1, r0 + 1);  // the cells c0 .. c0 + 1, r0 .. r0 + 1
 }
 
-double band_box_coverage(const GlyphBands& bands, Vec2 centre, Vec2 half) {
-  if (bands.empty()) return 0.0;
-  if (const int state = grid_state(bands, centre, half); state != 2) return state;
-  const int level = band_level(bands, half.y);
-  const int n = 1 << level;
+namespace {
+
+// The band of the rows [centre.y - half.y, centre.y + half.y] walked as the
+// shader walks it: the early stop at the first entry wholly left of the box,
+// entries outside its rows skipped. `right(y0, y1)` takes an entry wholly
+// right of the box (its end heights in box units, the box being
+// [-1/2, 1/2]^2), `across(piece)` the others' pieces in box units; their sum.
+template <class Right, class Across>
+double walk_band(const GlyphBands& bands, Vec2 centre, Vec2 half, Right&& right, Across&& across) {
+  const int n = 1 << band_level(bands, half.y);
   const double h = (bands.box.max.y - bands.box.min.y) / n;
   const double row_lo = centre.y - half.y, row_hi = centre.y + half.y;
-  const double left = centre.x - half.x, right = centre.x + half.x;
-  const int k = std::clamp(static_cast<int>(std::floor((row_lo - bands.box.min.y) / h)), 0, n - 1);
-  const int band = n - 1 + k;
+  const int band = n - 1 + std::clamp(static_cast<int>(std::floor((row_lo - bands.box.min.y) / h)), 0, n - 1);
   const auto texel = [&](std::size_t i) -> const std::array<float, 4>& { return bands.texels[i]; };
   const auto entry_texel = static_cast<std::size_t>(texel(0)[0]), ref_texel = static_cast<std::size_t>(texel(0)[1]);
   const std::array<float, 4>& header = texel(1 + static_cast<std::size_t>(band / 2));
@@ -551,17 +554,27 @@ double band_box_coverage(const GlyphBands& bands, Vec2 centre, Vec2 half) {
   double sum = 0.0;
   for (std::size_t j = first; j < first + count; ++j) {
     const std::array<float, 4>& e = texel(entry_texel + j);  // (largest x, smallest x, y first, y last)
-    if (e[0] < left) break;
+    if (e[0] < centre.x - half.x) break;
     if (std::max(e[2], e[3]) < row_lo || std::min(e[2], e[3]) > row_hi) continue;
-    if (e[1] >= right) {  // wholly right: its height within the rows
-      sum += std::clamp((e[3] - centre.y) * ky, -0.5, 0.5) - std::clamp((e[2] - centre.y) * ky, -0.5, 0.5);
+    if (e[1] >= centre.x + half.x) {
+      sum += right((e[2] - centre.y) * ky, (e[3] - centre.y) * ky);
       continue;
     }
     const auto piece = static_cast<std::size_t>(texel(ref_texel + j / 4)[j % 4]);
     const std::array<float, 4>&a = texel(piece), &b = texel(piece + 1);
-    sum += monotone_piece_box_integral({px(a[0], a[1]), px(a[2], a[3]), px(b[0], b[1]), b[2]});
+    sum += across(BandPiece{px(a[0], a[1]), px(a[2], a[3]), px(b[0], b[1]), b[2]});
   }
   return sum;
+}
+
+}  // namespace
+
+double band_box_coverage(const GlyphBands& bands, Vec2 centre, Vec2 half) {
+  if (bands.empty()) return 0.0;
+  if (const int state = grid_state(bands, centre, half); state != 2) return state;
+  // A piece wholly right adds its height within the rows.
+  const auto right = [](double y0, double y1) { return std::clamp(y1, -0.5, 0.5) - std::clamp(y0, -0.5, 0.5); };
+  return walk_band(bands, centre, half, right, [](const BandPiece& p) { return monotone_piece_box_integral(p); });
 }
 
 namespace {
@@ -699,35 +712,12 @@ double band_footprint_coverage(const GlyphBands& bands, Vec2 centre, const Footp
   if (bands.empty()) return 0.0;
   const Vec2 half = f.half();
   if (const int state = grid_state(bands, centre, half); state != 2) return state;
-  const int level = band_level(bands, half.y);
-  const int n = 1 << level;
-  const double h = (bands.box.max.y - bands.box.min.y) / n;
-  const double row_lo = centre.y - half.y, row_hi = centre.y + half.y;
-  const double left = centre.x - half.x, right = centre.x + half.x;
-  const int k = std::clamp(static_cast<int>(std::floor((row_lo - bands.box.min.y) / h)), 0, n - 1);
-  const int band = n - 1 + k;
-  const auto texel = [&](std::size_t i) -> const std::array<float, 4>& { return bands.texels[i]; };
-  const auto entry_texel = static_cast<std::size_t>(texel(0)[0]), ref_texel = static_cast<std::size_t>(texel(0)[1]);
-  const std::array<float, 4>& header = texel(1 + static_cast<std::size_t>(band / 2));
-  const auto first = static_cast<std::size_t>(header[2 * (band % 2)]);
-  const auto count = static_cast<std::size_t>(header[2 * (band % 2) + 1]);
-  // Scaled so that the bounding box is [-1/2, 1/2]^2 (the shader's units).
+  // In the units where the bounding box is [-1/2, 1/2]^2 (the shader's).
   const double kx = 0.5 / half.x, ky = 0.5 / half.y;
   const Footprint g{{f.u.x * kx, f.u.y * ky}, {f.v.x * kx, f.v.y * ky}};
-  const auto px = [&](double x, double y) { return Vec2{(x - centre.x) * kx, (y - centre.y) * ky}; };
-  double sum = 0.0;
-  for (std::size_t j = first; j < first + count; ++j) {
-    const std::array<float, 4>& e = texel(entry_texel + j);
-    if (e[0] < left) break;
-    if (std::max(e[2], e[3]) < row_lo || std::min(e[2], e[3]) > row_hi) continue;
-    if (e[1] >= right) {
-      sum += footprint_width_integral(g, (e[2] - centre.y) * ky, (e[3] - centre.y) * ky);
-      continue;
-    }
-    const auto piece = static_cast<std::size_t>(texel(ref_texel + j / 4)[j % 4]);
-    const std::array<float, 4>&a = texel(piece), &b = texel(piece + 1);
-    sum += monotone_piece_footprint_integral({px(a[0], a[1]), px(a[2], a[3]), px(b[0], b[1]), b[2]}, g);
-  }
+  const double sum = walk_band(
+      bands, centre, half, [&](double y0, double y1) { return footprint_width_integral(g, y0, y1); },
+      [&](const BandPiece& p) { return monotone_piece_footprint_integral(p, g); });
   return sum / g.area();
 }
 
