@@ -541,6 +541,21 @@ TEST(Bands, ConicProgramMatchesCpuReference) {
   }
 }
 
+// The CPU side of a shaped line: each glyph's bands built as the cache
+// builds them, with its pen position (font units).
+std::vector<std::pair<gpu::GlyphBands, Vec2>> line_bands(const Font& font, const ShapedLine& line) {
+  std::vector<std::pair<gpu::GlyphBands, Vec2>> glyphs;
+  gpu::BandScratch scratch;
+  double pen = 0.0;
+  for (const ShapedGlyph& g : line.glyphs) {
+    gpu::GlyphBands bands;
+    gpu::build_bands(build_mesh(font.glyph_outline(g.glyph_id)), bands, scratch);
+    glyphs.push_back({std::move(bands), Vec2{pen + g.x_offset, g.y_offset}});
+    pen += g.x_advance;
+  }
+  return glyphs;
+}
+
 // full for a text block where the context instances (docs/design.md
 // section 9): one quad per glyph evaluating the exact area from the glyph's
 // curve bands, no offscreen pass. Every pixel matches the CPU reference of
@@ -558,6 +573,7 @@ TEST(Bands, ShaderMatchesCpuReferenceInOnePass) {
   Renderer renderer;
   ImageTarget target;
   const FontMetrics& fm = font.metrics();
+  const std::vector<std::pair<gpu::GlyphBands, Vec2>> glyphs = line_bands(font, line);
   for (double ppem : {9.0, 16.0, 33.3, 120.0}) {
     const DrawBatch batch = DrawBatch::from_text(cache, font, line, ppem);
     ASSERT_TRUE(DrawBatchAccess::impl(batch).banded) << ppem;
@@ -570,16 +586,6 @@ TEST(Bands, ShaderMatchesCpuReferenceInOnePass) {
     renderer.draw(batch, placement, DrawOptions(Color{0, 0, 0, 1}, AntiAliasing::Full));
     EXPECT_EQ(renderer.offscreen_passes(), passes) << ppem;
     const Image image = target.read_pixels();
-    // The CPU side: each glyph's bands built as the cache builds them.
-    std::vector<std::pair<gpu::GlyphBands, Vec2>> glyphs;
-    gpu::BandScratch scratch;
-    double pen = 0.0;
-    for (const ShapedGlyph& g : line.glyphs) {
-      gpu::GlyphBands bands;
-      gpu::build_bands(build_mesh(font.glyph_outline(g.glyph_id)), bands, scratch);
-      glyphs.push_back({std::move(bands), Vec2{pen + g.x_offset, g.y_offset}});
-      pen += g.x_advance;
-    }
     double worst = 0.0, ink = 0.0;
     for (int j = 0; j < height; ++j)
       for (int i = 0; i < width; ++i) {
@@ -612,15 +618,7 @@ TEST(Bands, RotatedAndSkewedShaderMatchesCpuReference) {
   Renderer renderer;
   ImageTarget target;
   const FontMetrics& fm = font.metrics();
-  std::vector<std::pair<gpu::GlyphBands, Vec2>> glyphs;
-  gpu::BandScratch scratch;
-  double pen = 0.0;
-  for (const ShapedGlyph& g : line.glyphs) {
-    gpu::GlyphBands bands;
-    gpu::build_bands(build_mesh(font.glyph_outline(g.glyph_id)), bands, scratch);
-    glyphs.push_back({std::move(bands), Vec2{pen + g.x_offset, g.y_offset}});
-    pen += g.x_advance;
-  }
+  const std::vector<std::pair<gpu::GlyphBands, Vec2>> glyphs = line_bands(font, line);
   const struct {
     const char* name;
     Transform map;
