@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "curvetext/font.hpp"
@@ -161,6 +162,40 @@ TEST(BandArea, ConicsTangentToSidesAndThroughCorners) {
   expect_exact(conic_region({0.2, 0.2}, {0.2 + 5e-8, 0.2 + 1e-7}, {0.2 + 1e-7, 0.2}, 0.5), "arc of 1e-7 px");
 }
 
+// Each of the first `glyphs` glyphs of `font` without cubics that has bands:
+// visit(id, outline, mesh, its boundary pieces, its bands).
+template <class Visit>
+void for_each_banded_glyph(const Font& font, std::uint32_t glyphs, Visit&& visit) {
+  gpu::BandScratch scratch;
+  gpu::GlyphBands bands;
+  Mesh mesh;
+  std::vector<BandPiece> pieces;
+  for (std::uint32_t id = 0; id < std::min(font.glyph_count(), glyphs); ++id) {
+    const Outline outline = font.glyph_outline(id);
+    if (outline.empty() || outline.has_cubics()) continue;
+    build_mesh(outline, {}, mesh);
+    gpu::boundary_pieces(mesh, pieces);
+    gpu::build_bands(mesh, bands, scratch);
+    if (!bands.empty()) visit(id, outline, mesh, pieces, bands);
+  }
+}
+
+// The worst figures over a font's glyphs: the pixels' sum against the
+// glyph's area (relative), a pixel against the union sweep's exact coverage
+// and against the general per-piece integral; printed, and held to their bounds.
+struct Worst {
+  double area = 0.0, pixel = 0.0, general = 0.0;
+  void expect(const std::string& what, bool per_pixel) const {
+    std::printf("%s: worst relative area %.3g, pixel vs union sweep %.4f, vs double %.3g\n", what.c_str(), area, pixel,
+                general);
+    EXPECT_LT(area, 2e-5) << what;
+    if (per_pixel) {
+      EXPECT_LT(pixel, 0.004) << what;   // the sweep's own bound is 0.003
+      EXPECT_LT(general, 1e-4) << what;  // float texels against double pieces
+    }
+  }
+};
+
 // A mesh's boundary pieces enclose its area, and every pixel of a grid over
 // each glyph of DejaVu Sans and Noto Sans (overlapping contours: Inter
 // variable) adds up to it through the packed bands; at 24 px each pixel of
@@ -169,52 +204,39 @@ TEST(BandArea, ConicsTangentToSidesAndThroughCorners) {
 void check_font(const char* path, double px_per_em, bool per_pixel, std::uint32_t glyphs = 1u << 30) {
   const Font font = Font::open(path);
   const double scale = px_per_em / font.metrics().units_per_em;
-  gpu::BandScratch scratch;
-  gpu::GlyphBands bands;
-  Mesh mesh;
-  std::vector<BandPiece> pieces;
-  double worst_area = 0.0, worst_pixel = 0.0, worst_general = 0.0;
-  for (std::uint32_t id = 0; id < std::min(font.glyph_count(), glyphs); ++id) {
-    const Outline outline = font.glyph_outline(id);
-    if (outline.empty() || outline.has_cubics()) continue;
-    build_mesh(outline, {}, mesh);
-    gpu::boundary_pieces(mesh, pieces);
-    double green = 0.0;
-    for (const BandPiece& p : pieces) green += gpu::arc_x_dy(p, 0.0, 1.0);
-    const double area = mesh_area(mesh);
-    EXPECT_NEAR(green, area, 1e-9 * std::max(std::abs(area), 1.0)) << path << " glyph " << id;
-    gpu::build_bands(mesh, bands, scratch);
-    if (bands.empty()) continue;
-    // Pixel (i, j) of a grid over the glyph's box, one pixel of margin.
-    const Vec2 half{0.5 / scale, 0.5 / scale};
-    const Box& b = bands.box;
-    const int w = static_cast<int>((b.max.x - b.min.x) * scale) + 3,
-              h = static_cast<int>((b.max.y - b.min.y) * scale) + 3;
-    Outline px = outline;
-    for (Contour& c : px.contours())
-      for (Segment& s : c.segments)
-        for (Vec2& p : s.p) p = Vec2{scale * (p.x - b.min.x) + 1.0, scale * (b.max.y - p.y) + 1.0};
-    const test::Coverage exact = per_pixel ? test::union_coverage(px, w, h) : test::Coverage{};
-    double sum = 0.0;
-    for (int j = 0; j < h; ++j)
-      for (int i = 0; i < w; ++i) {
-        const Vec2 centre{b.min.x + (i - 0.5) / scale, b.max.y - (j - 0.5) / scale};
-        const double c = gpu::band_box_coverage(bands, centre, half);
-        sum += c;
-        if (per_pixel) {
-          worst_pixel = std::max(worst_pixel, std::abs(c - exact.at(i, j)));
-          worst_general = std::max(worst_general, std::abs(c - gpu::box_coverage(pieces, centre, half)));
-        }
-      }
-    worst_area = std::max(worst_area, std::abs(sum / (scale * scale) - area) / std::max(area, 1.0));
-  }
-  std::printf("%s at %g px: worst relative area %.3g, pixel vs union sweep %.4f, vs double %.3g\n", path, px_per_em,
-              worst_area, worst_pixel, worst_general);
-  EXPECT_LT(worst_area, 2e-5) << path;
-  if (per_pixel) {
-    EXPECT_LT(worst_pixel, 0.004) << path;   // the sweep's own bound is 0.003
-    EXPECT_LT(worst_general, 1e-4) << path;  // float texels against double pieces
-  }
+  Worst worst;
+  for_each_banded_glyph(
+      font, glyphs,
+      [&](std::uint32_t id, const Outline& outline, const Mesh& mesh, const std::vector<BandPiece>& pieces,
+          const gpu::GlyphBands& bands) {
+        double green = 0.0;
+        for (const BandPiece& p : pieces) green += gpu::arc_x_dy(p, 0.0, 1.0);
+        const double area = mesh_area(mesh);
+        EXPECT_NEAR(green, area, 1e-9 * std::max(std::abs(area), 1.0)) << path << " glyph " << id;
+        // Pixel (i, j) of a grid over the glyph's box, one pixel of margin.
+        const Vec2 half{0.5 / scale, 0.5 / scale};
+        const Box& b = bands.box;
+        const int w = static_cast<int>((b.max.x - b.min.x) * scale) + 3,
+                  h = static_cast<int>((b.max.y - b.min.y) * scale) + 3;
+        Outline px = outline;
+        for (Contour& c : px.contours())
+          for (Segment& s : c.segments)
+            for (Vec2& p : s.p) p = Vec2{scale * (p.x - b.min.x) + 1.0, scale * (b.max.y - p.y) + 1.0};
+        const test::Coverage exact = per_pixel ? test::union_coverage(px, w, h) : test::Coverage{};
+        double sum = 0.0;
+        for (int j = 0; j < h; ++j)
+          for (int i = 0; i < w; ++i) {
+            const Vec2 centre{b.min.x + (i - 0.5) / scale, b.max.y - (j - 0.5) / scale};
+            const double c = gpu::band_box_coverage(bands, centre, half);
+            sum += c;
+            if (per_pixel) {
+              worst.pixel = std::max(worst.pixel, std::abs(c - exact.at(i, j)));
+              worst.general = std::max(worst.general, std::abs(c - gpu::box_coverage(pieces, centre, half)));
+            }
+          }
+        worst.area = std::max(worst.area, std::abs(sum / (scale * scale) - area) / std::max(area, 1.0));
+      });
+  worst.expect(std::string(path) + " at " + std::to_string(px_per_em) + " px", per_pixel);
 }
 
 TEST(BandArea, EveryGlyphOfDejaVuSans) { check_font(test::kDejaVuSans, 13.0, false); }
@@ -384,55 +406,42 @@ void check_footprint_font(const char* path, double px_per_em, double angle, doub
   const double m00 = s * ca, m01 = s * (ca * skew - sa), m10 = s * sa, m11 = s * (sa * skew + ca);
   const double det = m00 * m11 - m01 * m10;
   const gpu::Footprint f{{m11 / det, -m10 / det}, {-m01 / det, m00 / det}};  // the inverse's columns
-  gpu::BandScratch scratch;
-  gpu::GlyphBands bands;
-  Mesh mesh;
-  std::vector<BandPiece> pieces;
-  double worst_area = 0.0, worst_pixel = 0.0, worst_general = 0.0;
-  for (std::uint32_t id = 0; id < std::min(font.glyph_count(), glyphs); ++id) {
-    const Outline outline = font.glyph_outline(id);
-    if (outline.empty() || outline.has_cubics()) continue;
-    build_mesh(outline, {}, mesh);
-    gpu::boundary_pieces(mesh, pieces);
-    gpu::build_bands(mesh, bands, scratch);
-    if (bands.empty()) continue;
-    // The pixels (image y down) over the map of the glyph's box, a pixel of margin.
-    const Box& b = bands.box;
-    Box image;
-    for (Vec2 c : {b.min, b.max, Vec2{b.min.x, b.max.y}, Vec2{b.max.x, b.min.y}})
-      image.add({m00 * c.x + m01 * c.y, m10 * c.x + m11 * c.y});
-    const double x0 = std::floor(image.min.x) - 1.0, y1 = std::ceil(image.max.y) + 1.0;
-    const int w = static_cast<int>(std::ceil(image.max.x) + 1.0 - x0),
-              h = static_cast<int>(y1 - std::floor(image.min.y) + 1.0);
-    Outline px = outline;
-    for (Contour& c : px.contours())
-      for (Segment& seg : c.segments)
-        for (Vec2& p : seg.p) p = Vec2{m00 * p.x + m01 * p.y - x0, y1 - (m10 * p.x + m11 * p.y)};
-    const test::Coverage exact = per_pixel ? test::union_coverage(px, w, h) : test::Coverage{};
-    double sum = 0.0;
-    for (int j = 0; j < h; ++j)
-      for (int i = 0; i < w; ++i) {
-        const Vec2 q{x0 + i + 0.5, y1 - j - 0.5};  // the pixel's centre, y up
-        const Vec2 centre{(m11 * q.x - m01 * q.y) / det, (m00 * q.y - m10 * q.x) / det};
-        const double c = gpu::band_footprint_coverage(bands, centre, f);
-        sum += c;
-        if (per_pixel) {
-          worst_pixel = std::max(worst_pixel, std::abs(c - exact.at(i, j)));
-          worst_general = std::max(worst_general, std::abs(c - gpu::footprint_coverage(pieces, centre, f)));
-        }
-      }
-    const double area = mesh_area(mesh);
-    worst_area = std::max(worst_area, std::abs(sum / std::abs(det) - area) / std::max(area, 1.0));
-  }
-  std::printf(
-      "%s at %g px, rotated %g rad, skew %g: worst relative area %.3g, pixel vs union sweep %.4f, vs double "
-      "%.3g\n",
-      path, px_per_em, angle, skew, worst_area, worst_pixel, worst_general);
-  EXPECT_LT(worst_area, 2e-5) << path;
-  if (per_pixel) {
-    EXPECT_LT(worst_pixel, 0.004) << path;   // the sweep's own bound is 0.003
-    EXPECT_LT(worst_general, 1e-4) << path;  // float texels against double pieces
-  }
+  Worst worst;
+  for_each_banded_glyph(font, glyphs,
+                        [&](std::uint32_t, const Outline& outline, const Mesh& mesh,
+                            const std::vector<BandPiece>& pieces, const gpu::GlyphBands& bands) {
+                          // The pixels (image y down) over the map of the glyph's box, a pixel of margin.
+                          const Box& b = bands.box;
+                          Box image;
+                          for (Vec2 c : {b.min, b.max, Vec2{b.min.x, b.max.y}, Vec2{b.max.x, b.min.y}})
+                            image.add({m00 * c.x + m01 * c.y, m10 * c.x + m11 * c.y});
+                          const double x0 = std::floor(image.min.x) - 1.0, y1 = std::ceil(image.max.y) + 1.0;
+                          const int w = static_cast<int>(std::ceil(image.max.x) + 1.0 - x0),
+                                    h = static_cast<int>(y1 - std::floor(image.min.y) + 1.0);
+                          Outline px = outline;
+                          for (Contour& c : px.contours())
+                            for (Segment& seg : c.segments)
+                              for (Vec2& p : seg.p) p = Vec2{m00 * p.x + m01 * p.y - x0, y1 - (m10 * p.x + m11 * p.y)};
+                          const test::Coverage exact = per_pixel ? test::union_coverage(px, w, h) : test::Coverage{};
+                          double sum = 0.0;
+                          for (int j = 0; j < h; ++j)
+                            for (int i = 0; i < w; ++i) {
+                              const Vec2 q{x0 + i + 0.5, y1 - j - 0.5};  // the pixel's centre, y up
+                              const Vec2 centre{(m11 * q.x - m01 * q.y) / det, (m00 * q.y - m10 * q.x) / det};
+                              const double c = gpu::band_footprint_coverage(bands, centre, f);
+                              sum += c;
+                              if (per_pixel) {
+                                worst.pixel = std::max(worst.pixel, std::abs(c - exact.at(i, j)));
+                                worst.general =
+                                    std::max(worst.general, std::abs(c - gpu::footprint_coverage(pieces, centre, f)));
+                              }
+                            }
+                          const double area = mesh_area(mesh);
+                          worst.area = std::max(worst.area, std::abs(sum / std::abs(det) - area) / std::max(area, 1.0));
+                        });
+  worst.expect(std::string(path) + " at " + std::to_string(px_per_em) + " px, rotated " + std::to_string(angle) +
+                   " rad, skew " + std::to_string(skew),
+               per_pixel);
 }
 
 TEST(BandFootprint, RotatedGlyphsOfDejaVuSans) { check_footprint_font(test::kDejaVuSans, 13.0, 0.4, 0.0, 600, false); }
